@@ -1,0 +1,136 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <liftoff/linear_algebra.h>
+#include <liftoff/mindlin_plate.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /// How an edge of the plate is held.
+  enum class EdgeCondition
+  {
+    free,
+    hard_simply_supported, // w = 0 and the tangential rotation is zero
+    soft_simply_supported, // w = 0 only
+    clamped                // w = psi_x = psi_y = 0
+  };
+
+  /// Which part of the plate is meshed. The scene always describes the full
+  /// plate; symmetry planes are x = 0 (half and quarter) and y = 0 (quarter).
+  enum class Symmetry
+  {
+    full,
+    half,
+    quarter
+  };
+
+  /**
+   * The mesh, the finite element (w, psi_x, psi_y) in
+   * FESystem(FE_Q(p), 3), the DoFHandler and the kinematic constraints of the
+   * edges and symmetry planes, on a distributed triangulation so that the
+   * same code runs serially and under MPI (step-40).
+   */
+  class Discretization
+  {
+  public:
+    /// Boundary ids: the four plate edges, then the symmetry planes.
+    enum BoundaryId : types::boundary_id
+    {
+      left_edge        = 0,
+      right_edge       = 1,
+      bottom_edge      = 2,
+      top_edge         = 3,
+      x_symmetry_plane = 4, // x = 0
+      y_symmetry_plane = 5  // y = 0
+    };
+
+    static constexpr unsigned int           n_components = 3;
+    static const std::array<std::string, 4> edge_names;
+
+    explicit Discretization(const MPI_Comm comm);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Build mesh, dofs, constraints for a plate of the given aspect ratio.
+    void
+    setup(const MindlinPlate &plate);
+
+    unsigned int
+    degree() const;
+    Symmetry
+    symmetry() const;
+    /// How many copies of the modelled part make the plate (1, 2 or 4).
+    unsigned int
+    n_symmetry_copies() const;
+    /// Axes normal to the symmetry planes (0: plane x = 0, 1: plane y = 0).
+    std::vector<unsigned int>
+    symmetry_axes() const;
+    EdgeCondition
+    edge_condition(const unsigned int edge) const;
+    /// True when some edge restrains w, so the stiffness alone is regular
+    /// enough for a static solve without foundation contact.
+    bool
+    has_kinematic_support() const;
+
+    /// The full plate and the part of it that is meshed.
+    BoundingBox<2>
+    plate_box() const;
+    BoundingBox<2>
+    modelled_box() const;
+    /// Mirror a point of the full plate into the modelled part.
+    Point<2>
+    to_modelled_part(const Point<2> &p) const;
+    /// Share of a concentrated load at p (in the modelled part) that the
+    /// modelled part carries: 1/2 for each symmetry plane p lies on.
+    double
+    share_of_point_load(const Point<2> &p) const;
+
+    /// Sparse matrix and vectors laid out on this discretization.
+    void
+    reinit_matrix(LA::MPI::SparseMatrix &matrix) const;
+    void
+    reinit_vector(LA::MPI::Vector &vector) const;
+    void
+    reinit_ghosted_vector(LA::MPI::Vector &vector) const;
+
+    MPI_Comm                                mpi_communicator;
+    parallel::distributed::Triangulation<2> triangulation;
+    MappingQ1<2>                            mapping;
+    std::unique_ptr<FESystem<2>>            fe;
+    DoFHandler<2>                           dof_handler;
+    IndexSet                                locally_owned_dofs;
+    IndexSet                                locally_relevant_dofs;
+    AffineConstraints<double>               constraints;
+
+  private:
+    double                       aspect_ratio  = 1.0;
+    unsigned int                 fe_degree     = 1;
+    Symmetry                     modelled_part = Symmetry::full;
+    unsigned int                 n_cells_x     = 10;
+    unsigned int                 n_cells_y     = 10;
+    unsigned int                 n_refinements = 0;
+    std::array<EdgeCondition, 4> edges;
+    DynamicSparsityPattern       sparsity_pattern;
+
+    void
+    make_constraints();
+  };
+} // namespace liftoff

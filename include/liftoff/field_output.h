@@ -1,0 +1,48 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/discretization.h>
+#include <liftoff/tensionless_winkler_foundation.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * Fields for ParaView: w, psi_x, psi_y, the velocity of w, the foundation
+   * pressure and the contact status (fraction of each cell's Gauss points in
+   * contact), as VTU (plus PVTU under MPI) every k steps and a PVD record
+   * that is rewritten after every file so that it is always complete.
+   */
+  class FieldOutput
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether step `step` is written (the last step always is, unless the
+    /// interval is 0).
+    bool
+    is_due(const unsigned int step, const bool is_last_step) const;
+
+    void
+    write(const std::string                  &directory,
+          const Discretization               &discretization,
+          const TensionlessWinklerFoundation &foundation,
+          const LA::MPI::Vector              &ghosted_solution,
+          const LA::MPI::Vector              &ghosted_velocity,
+          const double                        time,
+          const unsigned int                  step);
+
+  private:
+    unsigned int                                interval = 10;
+    std::vector<std::pair<double, std::string>> records;
+  };
+} // namespace liftoff

@@ -1,0 +1,106 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+
+#include <liftoff/discretization.h>
+#include <liftoff/point_functional.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The loads of a scene: concentrated forces at arbitrary points, pressures
+   * on rectangles and line loads along edges, any number of each up to
+   * max_loads_per_kind, each scaled by its own time history h(tau).
+   * Positive loads press the plate into the foundation (w > 0).
+   *
+   * The scene describes the full plate. On a half or quarter model only the
+   * part of each load that falls on the meshed part is applied; a point on
+   * a symmetry plane carries its share.
+   *
+   * Whatever does not change in time is assembled once: the load vector at
+   * time tau is sum_k h_k(tau) b_k, and only pressures whose intensity
+   * names tau are integrated again at every step.
+   */
+  class LoadSet
+  {
+  public:
+    static constexpr unsigned int max_loads_per_kind = 8;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Loads inside the plate, and symmetric where the model relies on it.
+    void
+    check_against(const Discretization &discretization) const;
+
+    /// Precompute the time independent parts on this discretization.
+    void
+    setup(const Discretization &discretization);
+
+    /// The load vector F(tau) (owned entries, constraints applied).
+    void
+    assemble(const double tau, LA::MPI::Vector &load_vector) const;
+
+    unsigned int
+    n_loads() const;
+
+  private:
+    enum class Kind
+    {
+      point,
+      pressure,
+      line
+    };
+
+    struct Load
+    {
+      Kind         kind;
+      std::string  name; // e.g. "Loads/Point load 2", for messages
+      double       magnitude = 0;
+      std::string  history_expression;
+      std::string  intensity_expression;
+      Point<2>     position;                        // point loads
+      std::string  region;                          // pressures
+      unsigned int edge = 0;                        // line loads
+      std::unique_ptr<FunctionParser<1>> history;   // h(tau)
+      std::unique_ptr<FunctionParser<2>> intensity; // f(x, y, tau)
+      bool                               intensity_depends_on_time = false;
+      LA::MPI::Vector                    spatial_part; // b_k
+
+      double
+      intensity_at(const Point<2> &p, const double tau) const;
+    };
+
+    std::vector<Load>     loads;
+    const Discretization *discretization = nullptr;
+
+    /// Rectangle of a pressure, in full plate coordinates.
+    static BoundingBox<2>
+    region_of(const Load &load, const BoundingBox<2> &plate);
+
+    /// b_k(tau) = magnitude * int f(x, y, tau) phi_i (without h).
+    void
+    assemble_spatial_part(const Load      &load,
+                          const double     tau,
+                          LA::MPI::Vector &vector) const;
+
+    /// Whether `other` is the image of `load` in the symmetry plane normal
+    /// to `axis` (a load on the plane may be its own image).
+    static bool
+    is_mirror_image(const Load           &load,
+                    const Load           &other,
+                    const unsigned int    axis,
+                    const BoundingBox<2> &plate);
+  };
+} // namespace liftoff

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * Material and geometry of the Mindlin plate in the dimensionless form of
+   * the paper (section 4, as NOTES.md reads it). Lengths are scaled by L,
+   * the full side length along x, so the plate occupies
+   * [-1/2, 1/2] x [-mu/2, mu/2]; the bending stiffness D, the translational
+   * mass rho H and the load scale F0 are one.
+   */
+  class MindlinPlate
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Aspect ratio mu: width (along y) over length L (along x).
+    double aspect_ratio = 1.0;
+    /// Delta = H / L.
+    double thickness_ratio  = 0.05;
+    double poisson_ratio    = 0.1;
+    double shear_correction = 5.0 / 6.0;
+
+    /// chi G H L^2 / D = 6 chi (1 - nu) / Delta^2.
+    double
+    shear_stiffness() const;
+    /// Rotary inertia rho H^3 / 12 over rho H L^2, i.e. Delta^2 / 12.
+    double
+    rotary_inertia() const;
+    /// Twisting stiffness G H^3 / 12 over D, i.e. (1 - nu) / 2.
+    double
+    twisting_stiffness() const;
+  };
+} // namespace liftoff

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/discretization.h>
+#include <liftoff/linear_algebra.h>
+#include <liftoff/mindlin_plate.h>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The parts of eq. (2.6) that do not depend on contact: the plate
+   * stiffness K (bending, twisting, transverse shear) and the consistent
+   * mass M (translational and rotary inertia). Assembled once per mesh.
+   */
+  class PlateMatrices
+  {
+  public:
+    enum class ShearIntegration
+    {
+      full,   // (p+1)^2 Gauss points, as bending
+      reduced // p^2 Gauss points: unlocks thin plates, admits spurious modes
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    void
+    assemble(const Discretization &discretization, const MindlinPlate &plate);
+
+    ShearIntegration shear_integration = ShearIntegration::full;
+
+    LA::MPI::SparseMatrix stiffness;
+    LA::MPI::SparseMatrix mass;
+  };
+} // namespace liftoff

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/discretization.h>
+#include <liftoff/point_functional.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * Profiles of w along a straight line of the full plate at chosen times,
+   * in one long-format CSV (tau, s, x, y, w) that plots grouped by tau.
+   * Each requested time is written at the step nearest to it.
+   */
+  class ProfileOutput
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    void
+    check_against(const Discretization &discretization) const;
+
+    void
+    setup(const Discretization &discretization, const std::string &directory);
+
+    /// Write the profiles requested for times within dt/2 of tau; with
+    /// dt = 0 (a static analysis) write one profile unconditionally.
+    void
+    write_if_due(const double tau, const double dt, const LA::MPI::Vector &u);
+
+  private:
+    Point<2>                     start, end;
+    unsigned int                 n_points = 0;
+    std::vector<double>          times;
+    std::vector<bool>            is_written;
+    std::vector<PointFunctional> points;
+    const Discretization        *discretization = nullptr;
+    std::ofstream                file;
+
+    Point<2>
+    point(const unsigned int i) const;
+  };
+} // namespace liftoff

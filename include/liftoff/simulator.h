@@ -1,0 +1,129 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <liftoff/active_set_iteration.h>
+#include <liftoff/discretization.h>
+#include <liftoff/field_output.h>
+#include <liftoff/linear_solver.h>
+#include <liftoff/load_set.h>
+#include <liftoff/mindlin_plate.h>
+#include <liftoff/newmark_integrator.h>
+#include <liftoff/plate_matrices.h>
+#include <liftoff/profile_output.h>
+#include <liftoff/tensionless_winkler_foundation.h>
+#include <liftoff/time_history.h>
+
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * One scene from start to end: reads the parameters of every part, checks
+   * them against each other, builds the discretisation and runs the static
+   * analysis or the Newmark time loop with the active-set iteration in every
+   * step, writing what the scene asks for. Tests drive it the same way the
+   * executable does and read the results it keeps.
+   */
+  class Simulator
+  {
+  public:
+    /// One row of the time history, kept in memory for tests and summaries.
+    struct StepRecord
+    {
+      double              tau;
+      unsigned int        iterations;
+      double              contact_fraction;
+      std::vector<double> probe_w;
+      EnergyBalance       energies;
+    };
+
+    explicit Simulator(const MPI_Comm comm);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// Read and check everything; throws with a message naming the
+    /// offending parameter. Writes nothing.
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Run the scene. `prm` is only used to record the parameters used.
+    void
+    run(const ParameterHandler &prm);
+
+    /// Deflection at a point of the full plate (collective).
+    double
+    deflection_at(const Point<2> &p) const;
+
+    const std::vector<StepRecord> &
+    history() const;
+    const LA::MPI::Vector &
+    solution() const;
+    const Discretization &
+    get_discretization() const;
+    const TensionlessWinklerFoundation &
+    get_foundation() const;
+    const MindlinPlate &
+    get_plate() const;
+
+  private:
+    enum class Analysis
+    {
+      static_analysis,
+      dynamic_analysis
+    };
+
+    MPI_Comm           mpi_communicator;
+    ConditionalOStream pcout;
+    TimerOutput        timer;
+
+    MindlinPlate                 plate;
+    Discretization               discretization;
+    PlateMatrices                matrices;
+    TensionlessWinklerFoundation foundation;
+    LoadSet                      loads;
+    NewmarkIntegrator            newmark;
+    LinearSolver                 linear_solver;
+    LinearSolver                 mass_solver; // for the initial acceleration
+    ActiveSetIteration           active_set;
+    FieldOutput                  field_output;
+    TimeHistory                  time_history;
+    ProfileOutput                profile_output;
+
+    Analysis    analysis = Analysis::dynamic_analysis;
+    std::string output_directory;
+    std::string initial_displacement, initial_velocity;
+
+    LA::MPI::Vector         u, v, a;              // owned state
+    LA::MPI::Vector         ghosted_u, ghosted_v; // with ghosts, for evaluation
+    std::vector<StepRecord> records;
+
+    void
+    setup();
+    void
+    prepare_output_directory(const ParameterHandler &prm) const;
+    void
+    run_static();
+    void
+    run_dynamic();
+    void
+    set_initial_state();
+    EnergyBalance
+    energies(const double work) const;
+    void
+    record_step(const double         tau,
+                const unsigned int   iterations,
+                const EnergyBalance &energy,
+                const EnergyBalance &initial);
+    void
+    write_summary(const std::string &status) const;
+    bool
+    writes_files() const;
+  };
+} // namespace liftoff

@@ -1,0 +1,76 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/discretization.h>
+#include <liftoff/point_functional.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /// Energies of the full plate at one instant, and the work done on it.
+  struct EnergyBalance
+  {
+    double kinetic    = 0;
+    double strain     = 0;
+    double foundation = 0;
+    double work       = 0; // of the loads since tau = 0
+    /// Total energy minus the initial total minus the work: zero for an
+    /// exactly conservative discrete scheme.
+    double
+    error(const EnergyBalance &initial) const
+    {
+      return kinetic + strain + foundation
+             - (initial.kinetic + initial.strain + initial.foundation) - work;
+    }
+  };
+
+  /**
+   * The CSV time history a user plots: tau, w at the scene's probe points,
+   * contact area fraction, active-set iterations and, when asked for, the
+   * energies and their balance. Each row is flushed as it is written, so
+   * the file is readable at any moment of a run.
+   */
+  class TimeHistory
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Probes inside the plate (full plate coordinates).
+    void
+    check_against(const Discretization &discretization) const;
+
+    void
+    setup(const Discretization &discretization, const std::string &directory);
+
+    bool
+    wants_energies() const;
+
+    /// w at the probes (collective).
+    std::vector<double>
+    probe_values(const LA::MPI::Vector &ghosted_solution) const;
+
+    void
+    record(const double           tau,
+           const LA::MPI::Vector &ghosted_solution,
+           const double           contact_fraction,
+           const unsigned int     iterations,
+           const EnergyBalance   &energies,
+           const EnergyBalance   &initial_energies);
+
+  private:
+    std::vector<Point<2>>        probe_points;
+    bool                         write_energies = true;
+    std::vector<PointFunctional> probes;
+    const Discretization        *discretization = nullptr;
+    std::ofstream                file;
+  };
+} // namespace liftoff

@@ -1,0 +1,130 @@
+#include <liftoff/active_set_iteration.h>
+
+#include <cmath>
+
+namespace liftoff
+{
+  void
+  ActiveSetIteration::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Active set");
+    prm.declare_entry("Maximum iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Iterations of eq. (3.9) per step before the run stops "
+                      "with an error naming the step.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  ActiveSetIteration::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Active set");
+    max_iterations = prm.get_integer("Maximum iterations");
+    prm.leave_subsection();
+  }
+
+
+  ActiveSetIteration::ActiveSetIteration(
+    const Discretization         &discretization,
+    TensionlessWinklerFoundation &foundation,
+    LinearSolver                 &solver,
+    TimerOutput                  &timer)
+      : discretization(discretization)
+      , foundation(foundation)
+      , solver(solver)
+      , timer(timer)
+  {
+  }
+
+
+  void
+  ActiveSetIteration::set_base_matrix(const LA::MPI::SparseMatrix &B)
+  {
+    base_matrix = &B;
+    discretization.reinit_matrix(foundation_matrix);
+    discretization.reinit_matrix(matrix);
+    matrix_is_current = false;
+  }
+
+
+  void
+  ActiveSetIteration::contact_set_changed()
+  {
+    matrix_is_current = false;
+  }
+
+
+  const LA::MPI::SparseMatrix &
+  ActiveSetIteration::system_matrix() const
+  {
+    return matrix;
+  }
+
+
+  bool
+  ActiveSetIteration::is_solution_of_system(const LA::MPI::Vector &x,
+                                            const LA::MPI::Vector &b) const
+  {
+    // A singular matrix gives a direct solver no error, only a wrong or
+    // non-finite x: check the residual.
+    LA::MPI::Vector residual(b);
+    matrix.vmult(residual, x);
+    residual -= b;
+    const double r = residual.l2_norm();
+    return std::isfinite(r) && r <= 1e-8 * b.l2_norm();
+  }
+
+
+  ActiveSetIteration::Result
+  ActiveSetIteration::solve(const LA::MPI::Vector &rhs,
+                            LA::MPI::Vector       &solution,
+                            LA::MPI::Vector       &ghosted_solution)
+  {
+    Assert(base_matrix != nullptr, ExcMessage("set_base_matrix() first."));
+    Result result;
+    while (result.iterations < max_iterations)
+    {
+      ++result.iterations;
+      if (!matrix_is_current)
+      {
+        {
+          TimerOutput::Scope t(timer, "foundation assembly");
+          foundation.assemble_matrix(foundation_matrix);
+          matrix.copy_from(*base_matrix);
+          matrix.add(1.0, foundation_matrix);
+        }
+        TimerOutput::Scope t(timer, "factorisation");
+        solver.prepare(matrix, discretization);
+        matrix_is_current = true;
+      }
+      {
+        TimerOutput::Scope t(timer, "solve");
+        solver.solve(solution, rhs);
+        discretization.constraints.distribute(solution);
+        ghosted_solution = solution;
+      }
+      if (requires_contact && !is_solution_of_system(solution, rhs))
+      {
+        result.lost_contact = true;
+        return result;
+      }
+      TimerOutput::Scope  t(timer, "contact update");
+      const unsigned long n_changed =
+        foundation.update_contact_status(ghosted_solution);
+      if (n_changed == 0)
+      {
+        result.converged = true;
+        return result;
+      }
+      if (requires_contact && foundation.contact_area_fraction() == 0.0)
+      {
+        result.lost_contact = true;
+        return result;
+      }
+      matrix_is_current = false;
+    }
+    return result;
+  }
+} // namespace liftoff

@@ -1,0 +1,330 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <liftoff/discretization.h>
+
+namespace liftoff
+{
+  const std::array<std::string, 4> Discretization::edge_names = {
+    {"Left", "Right", "Bottom", "Top"}};
+
+  namespace
+  {
+    const char *edge_condition_names =
+      "free|hard simply supported|soft simply supported|clamped";
+
+    EdgeCondition
+    parse_edge_condition(const std::string &name)
+    {
+      if (name == "free")
+        return EdgeCondition::free;
+      if (name == "hard simply supported")
+        return EdgeCondition::hard_simply_supported;
+      if (name == "soft simply supported")
+        return EdgeCondition::soft_simply_supported;
+      return EdgeCondition::clamped;
+    }
+  } // namespace
+
+
+  Discretization::Discretization(const MPI_Comm comm)
+      : mpi_communicator(comm)
+      , triangulation(comm)
+      , dof_handler(triangulation)
+  {
+    edges.fill(EdgeCondition::free);
+  }
+
+
+  void
+  Discretization::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("Symmetry",
+                      "full",
+                      Patterns::Selection("full|half|quarter"),
+                      "Which part of the plate is meshed: full; half "
+                      "(x >= 0, symmetry plane x = 0); quarter (x >= 0, "
+                      "y >= 0). The scene always describes the full plate "
+                      "and its full loads.");
+    prm.declare_entry("Cells along x",
+                      "10",
+                      Patterns::Integer(1),
+                      "Number of cells along x on the meshed part.");
+    prm.declare_entry("Cells along y",
+                      "10",
+                      Patterns::Integer(1),
+                      "Number of cells along y on the meshed part.");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Uniform refinements of the initial cells.");
+    prm.declare_entry("Polynomial degree",
+                      "1",
+                      Patterns::Integer(1, 6),
+                      "Degree p of FE_Q(p) used for w, psi_x and psi_y.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    for (const auto &name : edge_names)
+      prm.declare_entry(name,
+                        "free",
+                        Patterns::Selection(edge_condition_names),
+                        "Condition on this edge of the full plate. Left: "
+                        "x = -1/2, Right: x = 1/2, Bottom: y = -mu/2, "
+                        "Top: y = mu/2. Hard simple support fixes w and the "
+                        "rotation along the edge, soft only w.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  Discretization::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    const std::string symmetry_name = prm.get("Symmetry");
+    modelled_part =
+      (symmetry_name == "full"
+         ? Symmetry::full
+         : (symmetry_name == "half" ? Symmetry::half : Symmetry::quarter));
+    n_cells_x     = prm.get_integer("Cells along x");
+    n_cells_y     = prm.get_integer("Cells along y");
+    n_refinements = prm.get_integer("Global refinements");
+    fe_degree     = prm.get_integer("Polynomial degree");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    for (unsigned int e = 0; e < 4; ++e)
+      edges[e] = parse_edge_condition(prm.get(edge_names[e]));
+    prm.leave_subsection();
+
+    // A symmetric model is only right for a symmetric plate.
+    if (modelled_part != Symmetry::full)
+      AssertThrow(edges[left_edge] == edges[right_edge],
+                  ExcMessage(
+                    "Discretization/Symmetry = " + symmetry_name
+                    + " needs Boundary conditions/Left and Right to be "
+                      "equal (the plate must be symmetric about x = 0)."));
+    if (modelled_part == Symmetry::quarter)
+      AssertThrow(edges[bottom_edge] == edges[top_edge],
+                  ExcMessage("Discretization/Symmetry = quarter needs Boundary "
+                             "conditions/Bottom and Top to be equal (the plate "
+                             "must be symmetric about y = 0)."));
+  }
+
+
+  void
+  Discretization::setup(const MindlinPlate &plate)
+  {
+    aspect_ratio = plate.aspect_ratio;
+
+    const BoundingBox<2> box = modelled_box();
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {n_cells_x, n_cells_y},
+                                              box.get_boundary_points().first,
+                                              box.get_boundary_points().second,
+                                              /*colorize*/ true);
+    // Faces on x = 0 or y = 0 of a symmetric model are symmetry planes, not
+    // plate edges.
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+        {
+          const Point<2> c = face->center();
+          if (modelled_part != Symmetry::full
+              && face->boundary_id() == left_edge && std::abs(c[0]) < 1e-12)
+            face->set_boundary_id(x_symmetry_plane);
+          if (modelled_part == Symmetry::quarter
+              && face->boundary_id() == bottom_edge && std::abs(c[1]) < 1e-12)
+            face->set_boundary_id(y_symmetry_plane);
+        }
+    triangulation.refine_global(n_refinements);
+
+    fe = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), n_components);
+    dof_handler.distribute_dofs(*fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    make_constraints();
+
+    sparsity_pattern.reinit(locally_relevant_dofs.size(),
+                            locally_relevant_dofs.size(),
+                            locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity_pattern,
+                                    constraints,
+                                    /*keep_constrained_dofs*/ false);
+    SparsityTools::distribute_sparsity_pattern(sparsity_pattern,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+  }
+
+
+  void
+  Discretization::make_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+
+    const Functions::ZeroFunction<2> zero(n_components);
+    const auto                       constrain =
+      [&](const types::boundary_id id, const std::array<bool, 3> &components)
+    {
+      const ComponentMask mask(
+        std::vector<bool>(components.begin(), components.end()));
+      VectorTools::interpolate_boundary_values(
+        mapping, dof_handler, id, zero, constraints, mask);
+    };
+
+    for (unsigned int e = 0; e < 4; ++e)
+    {
+      // Rotation along an edge: psi_y on the edges x = const, psi_x on
+      // the edges y = const.
+      const bool          along_y = (e == left_edge || e == right_edge);
+      std::array<bool, 3> mask    = {{false, false, false}};
+      switch (edges[e])
+      {
+      case EdgeCondition::free:
+        continue;
+      case EdgeCondition::soft_simply_supported:
+        mask[0] = true;
+        break;
+      case EdgeCondition::hard_simply_supported:
+        mask[0]               = true;
+        mask[along_y ? 2 : 1] = true;
+        break;
+      case EdgeCondition::clamped:
+        mask = {{true, true, true}};
+        break;
+      }
+      constrain(e, mask);
+    }
+
+    // On a symmetry plane the rotation normal to it vanishes.
+    constrain(x_symmetry_plane, {{false, true, false}});
+    constrain(y_symmetry_plane, {{false, false, true}});
+    constraints.close();
+  }
+
+
+  unsigned int
+  Discretization::degree() const
+  {
+    return fe_degree;
+  }
+
+
+  Symmetry
+  Discretization::symmetry() const
+  {
+    return modelled_part;
+  }
+
+
+  unsigned int
+  Discretization::n_symmetry_copies() const
+  {
+    return 1u << symmetry_axes().size();
+  }
+
+
+  std::vector<unsigned int>
+  Discretization::symmetry_axes() const
+  {
+    switch (modelled_part)
+    {
+    case Symmetry::full:
+      return {};
+    case Symmetry::half:
+      return {0};
+    default:
+      return {0, 1};
+    }
+  }
+
+
+  EdgeCondition
+  Discretization::edge_condition(const unsigned int edge) const
+  {
+    return edges[edge];
+  }
+
+
+  bool
+  Discretization::has_kinematic_support() const
+  {
+    for (const auto e : edges)
+      if (e != EdgeCondition::free)
+        return true;
+    return false;
+  }
+
+
+  BoundingBox<2>
+  Discretization::plate_box() const
+  {
+    return BoundingBox<2>(std::make_pair(Point<2>(-0.5, -0.5 * aspect_ratio),
+                                         Point<2>(0.5, 0.5 * aspect_ratio)));
+  }
+
+
+  BoundingBox<2>
+  Discretization::modelled_box() const
+  {
+    auto corners = plate_box().get_boundary_points();
+    for (const unsigned int axis : symmetry_axes())
+      corners.first[axis] = 0.0;
+    return BoundingBox<2>(corners);
+  }
+
+
+  Point<2>
+  Discretization::to_modelled_part(const Point<2> &p) const
+  {
+    Point<2> q = p;
+    for (const unsigned int axis : symmetry_axes())
+      q[axis] = std::abs(q[axis]);
+    return q;
+  }
+
+
+  double
+  Discretization::share_of_point_load(const Point<2> &p) const
+  {
+    double share = 1.0;
+    for (const unsigned int axis : symmetry_axes())
+      if (std::abs(p[axis]) < 1e-12)
+        share *= 0.5;
+    return share;
+  }
+
+
+  void
+  Discretization::reinit_matrix(LA::MPI::SparseMatrix &matrix) const
+  {
+    matrix.reinit(locally_owned_dofs,
+                  locally_owned_dofs,
+                  sparsity_pattern,
+                  mpi_communicator);
+  }
+
+
+  void
+  Discretization::reinit_vector(LA::MPI::Vector &vector) const
+  {
+    vector.reinit(locally_owned_dofs, mpi_communicator);
+  }
+
+
+  void
+  Discretization::reinit_ghosted_vector(LA::MPI::Vector &vector) const
+  {
+    vector.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+  }
+} // namespace liftoff

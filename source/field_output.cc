@@ -1,0 +1,122 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <liftoff/field_output.h>
+#include <liftoff/output_files.h>
+
+#include <fstream>
+
+namespace liftoff
+{
+  namespace
+  {
+    /// Pressure of the springs on the plate, Gamma w^+ (Gamma w when
+    /// bilateral): what the foundation carries, positive in compression.
+    class FoundationPressure : public DataPostprocessorScalar<2>
+    {
+    public:
+      explicit FoundationPressure(const TensionlessWinklerFoundation &f)
+          : DataPostprocessorScalar<2>("foundation_pressure", update_values)
+          , foundation(f)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &input,
+        std::vector<Vector<double>>              &computed) const override
+      {
+        using Model = TensionlessWinklerFoundation::Model;
+        for (unsigned int q = 0; q < input.solution_values.size(); ++q)
+        {
+          const double w = input.solution_values[q][0];
+          computed[q][0] =
+            (foundation.model == Model::none
+               ? 0.0
+               : foundation.stiffness
+                   * (foundation.model == Model::bilateral ? w
+                                                           : std::max(w, 0.0)));
+        }
+      }
+
+    private:
+      const TensionlessWinklerFoundation &foundation;
+    };
+  } // namespace
+
+
+  void
+  FieldOutput::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("VTU interval",
+                      "10",
+                      Patterns::Integer(0),
+                      "Write fields every this many steps (and at the last "
+                      "step); 0 writes none.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  FieldOutput::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    interval = prm.get_integer("VTU interval");
+    prm.leave_subsection();
+  }
+
+
+  bool
+  FieldOutput::is_due(const unsigned int step, const bool is_last_step) const
+  {
+    return interval > 0 && (step % interval == 0 || is_last_step);
+  }
+
+
+  void
+  FieldOutput::write(const std::string                  &directory,
+                     const Discretization               &disc,
+                     const TensionlessWinklerFoundation &foundation,
+                     const LA::MPI::Vector              &solution,
+                     const LA::MPI::Vector              &velocity,
+                     const double                        time,
+                     const unsigned int                  step)
+  {
+    DataOut<2> data_out;
+    data_out.attach_dof_handler(disc.dof_handler);
+    data_out.add_data_vector(solution,
+                             std::vector<std::string>{"w", "psi_x", "psi_y"});
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      scalar(3, DataComponentInterpretation::component_is_scalar);
+    data_out.add_data_vector(velocity,
+                             std::vector<std::string>{"w_dot",
+                                                      "psi_x_dot",
+                                                      "psi_y_dot"},
+                             DataOut<2>::type_dof_data,
+                             scalar);
+    const FoundationPressure pressure(foundation);
+    data_out.add_data_vector(solution, pressure);
+    const Vector<float> contact = foundation.contact_fraction_per_cell();
+    data_out.add_data_vector(contact, "contact_status");
+    Vector<float> subdomain(disc.triangulation.n_active_cells());
+    subdomain = disc.triangulation.locally_owned_subdomain();
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(disc.mapping, disc.degree());
+
+    DataOutBase::VtkFlags flags;
+    flags.time  = time;
+    flags.cycle = step;
+    data_out.set_flags(flags);
+
+    const std::string master = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "solution", step, disc.mpi_communicator, 5);
+
+    records.emplace_back(time, master);
+    if (Utilities::MPI::this_mpi_process(disc.mpi_communicator) == 0)
+      write_file_atomically(directory + "/solution.pvd",
+                            [&](std::ostream &out)
+                            { DataOutBase::write_pvd_record(out, records); });
+  }
+} // namespace liftoff

@@ -1,0 +1,464 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
+
+#include <liftoff/load_set.h>
+
+#include <cmath>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace liftoff
+{
+  namespace
+  {
+    const std::map<std::string, double> parser_constants = {{"pi", M_PI}};
+
+    std::string
+    subsection_name(const std::string &kind, const unsigned int i)
+    {
+      return kind + " " + std::to_string(i);
+    }
+
+    bool
+    names_tau(const std::string &expression)
+    {
+      static const std::regex tau("(^|[^A-Za-z0-9_])tau([^A-Za-z0-9_]|$)");
+      return std::regex_search(expression, tau);
+    }
+
+    // muParser in deal.II 9.4 parses lazily: evaluate once now so that a
+    // bad expression is reported with the parameter's name before any run.
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>>
+    make_parser(const std::string &variables,
+                const std::string &expression,
+                const bool         time_dependent,
+                const std::string &parameter)
+    {
+      auto parser = std::make_unique<FunctionParser<dim>>(1);
+      try
+      {
+        parser->initialize(variables,
+                           expression,
+                           parser_constants,
+                           time_dependent);
+        const double value = parser->value(Point<dim>());
+        (void)value;
+      }
+      catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(parameter + " = <" + expression
+                               + "> is not a valid expression in (" + variables
+                               + "): " + e.what()));
+      }
+      return parser;
+    }
+
+    Point<2>
+    mirrored(const Point<2> &p, const unsigned int axis)
+    {
+      Point<2> q = p;
+      q[axis]    = -q[axis];
+      return q;
+    }
+
+    bool
+    nearly_equal(const double a, const double b)
+    {
+      return std::abs(a - b)
+             <= 1e-10 * std::max(1.0, std::abs(a) + std::abs(b));
+    }
+
+    const std::vector<double> sample_times = {0.0, 0.0137, 0.1, 0.5, 1.3, 4.0};
+  } // namespace
+
+
+  double
+  LoadSet::Load::intensity_at(const Point<2> &p, const double tau) const
+  {
+    intensity->set_time(tau);
+    return intensity->value(p);
+  }
+
+
+  void
+  LoadSet::declare_parameters(ParameterHandler &prm)
+  {
+    const std::string history_doc =
+      "h(tau), a muParser expression in tau (dimensionless time); the load "
+      "is Magnitude * h(tau). Examples: 1 (suddenly applied), tau (linear "
+      "ramp), sin(2*pi*tau/2.5) (pulsating), if(tau<0.1,1,0) (pulse).";
+    prm.enter_subsection("Loads");
+    for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
+    {
+      prm.enter_subsection(subsection_name("Point load", i));
+      prm.declare_entry("Magnitude",
+                        "0",
+                        Patterns::Double(),
+                        "Force in units of F0; 0 switches the load off.");
+      prm.declare_entry("Position",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 2, ","),
+                        "x, y on the full plate (any point, not only "
+                        "nodes).");
+      prm.declare_entry("Time history", "1", Patterns::Anything(), history_doc);
+      prm.leave_subsection();
+
+      prm.enter_subsection(subsection_name("Pressure", i));
+      prm.declare_entry("Magnitude",
+                        "0",
+                        Patterns::Double(),
+                        "Pressure scale; 0 switches the load off.");
+      prm.declare_entry("Region",
+                        "whole plate",
+                        Patterns::Anything(),
+                        "'whole plate' or 'x_min, x_max, y_min, y_max' on "
+                        "the full plate. Rectangles that follow cell "
+                        "edges are integrated exactly.");
+      prm.declare_entry("Intensity",
+                        "1",
+                        Patterns::Anything(),
+                        "f(x, y, tau), muParser; the pressure is "
+                        "Magnitude * f * h(tau).");
+      prm.declare_entry("Time history", "1", Patterns::Anything(), history_doc);
+      prm.leave_subsection();
+
+      prm.enter_subsection(subsection_name("Line load", i));
+      prm.declare_entry("Magnitude",
+                        "0",
+                        Patterns::Double(),
+                        "Force per unit length; 0 switches the load off.");
+      prm.declare_entry("Edge",
+                        "Right",
+                        Patterns::Selection("Left|Right|Bottom|Top"),
+                        "Edge of the full plate that carries the load.");
+      prm.declare_entry("Intensity",
+                        "1",
+                        Patterns::Anything(),
+                        "f(x, y, tau) along the edge, muParser.");
+      prm.declare_entry("Time history", "1", Patterns::Anything(), history_doc);
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+
+
+  void
+  LoadSet::parse_parameters(ParameterHandler &prm)
+  {
+    loads.clear();
+    prm.enter_subsection("Loads");
+    const std::array<std::pair<Kind, std::string>, 3> kinds = {
+      {{Kind::point, "Point load"},
+       {Kind::pressure, "Pressure"},
+       {Kind::line, "Line load"}}};
+    for (const auto &[kind, kind_name] : kinds)
+      for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
+      {
+        const std::string section = subsection_name(kind_name, i);
+        prm.enter_subsection(section);
+        Load load;
+        load.kind      = kind;
+        load.name      = "Loads/" + section;
+        load.magnitude = prm.get_double("Magnitude");
+        if (load.magnitude != 0.0)
+        {
+          load.history_expression = prm.get("Time history");
+          load.history            = make_parser<1>("tau",
+                                        load.history_expression,
+                                        false,
+                                        load.name + "/Time history");
+          if (kind == Kind::point)
+          {
+            const auto xy = Utilities::string_to_double(
+              Utilities::split_string_list(prm.get("Position"), ','));
+            load.position = Point<2>(xy[0], xy[1]);
+          }
+          else
+          {
+            load.intensity_expression = prm.get("Intensity");
+            load.intensity            = make_parser<2>("x,y,tau",
+                                            load.intensity_expression,
+                                            true,
+                                            load.name + "/Intensity");
+            load.intensity_depends_on_time =
+              names_tau(load.intensity_expression);
+            if (kind == Kind::pressure)
+              load.region = prm.get("Region");
+            else
+            {
+              const std::string edge = prm.get("Edge");
+              for (unsigned int e = 0; e < 4; ++e)
+                if (Discretization::edge_names[e] == edge)
+                  load.edge = e;
+            }
+          }
+          loads.push_back(std::move(load));
+        }
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+  BoundingBox<2>
+  LoadSet::region_of(const Load &load, const BoundingBox<2> &plate)
+  {
+    if (load.region == "whole plate")
+      return plate;
+
+    const std::string message =
+      load.name + "/Region = <" + load.region
+      + "> must be 'whole plate' or 'x_min, x_max, y_min, y_max' with "
+        "x_min < x_max, y_min < y_max, inside the plate [-1/2, 1/2] x [-mu/2, "
+        "mu/2].";
+    const auto parts = Utilities::split_string_list(load.region, ',');
+    AssertThrow(parts.size() == 4, ExcMessage(message));
+    std::vector<double> v;
+    try
+    {
+      v = Utilities::string_to_double(parts);
+    }
+    catch (...)
+    {
+      AssertThrow(false, ExcMessage(message));
+    }
+    AssertThrow(v[0] < v[1] && v[2] < v[3], ExcMessage(message));
+    const BoundingBox<2> box(
+      std::make_pair(Point<2>(v[0], v[2]), Point<2>(v[1], v[3])));
+    AssertThrow(plate.point_inside(box.get_boundary_points().first, 1e-12)
+                  && plate.point_inside(box.get_boundary_points().second,
+                                        1e-12),
+                ExcMessage(message));
+    return box;
+  }
+
+
+  void
+  LoadSet::check_against(const Discretization &disc) const
+  {
+    const BoundingBox<2> plate = disc.plate_box();
+    for (const auto &load : loads)
+    {
+      if (load.kind == Kind::point)
+        AssertThrow(plate.point_inside(load.position, 1e-12),
+                    ExcMessage(load.name + "/Position = "
+                               + std::to_string(load.position[0]) + ", "
+                               + std::to_string(load.position[1])
+                               + " lies outside the plate [-1/2, 1/2] x "
+                                 "[-mu/2, mu/2]."));
+      if (load.kind == Kind::pressure)
+        region_of(load, plate);
+    }
+
+    const std::string symmetry =
+      (disc.symmetry() == Symmetry::half ? "half" : "quarter");
+    for (const unsigned int axis : disc.symmetry_axes())
+      for (const auto &load : loads)
+      {
+        bool has_image = false;
+        for (const auto &other : loads)
+          has_image = has_image || is_mirror_image(load, other, axis, plate);
+        AssertThrow(has_image,
+                    ExcMessage(
+                      "Discretization/Symmetry = " + symmetry
+                      + " needs symmetric loads, but " + load.name
+                      + " has no mirror image about the plane "
+                      + (axis == 0 ? "x = 0" : "y = 0")
+                      + ". Add the mirrored load or model the full plate."));
+      }
+  }
+
+
+  bool
+  LoadSet::is_mirror_image(const Load           &load,
+                           const Load           &other,
+                           const unsigned int    axis,
+                           const BoundingBox<2> &plate)
+  {
+    if (load.kind != other.kind
+        || !nearly_equal(load.magnitude, other.magnitude))
+      return false;
+    for (const double tau : sample_times)
+      if (!nearly_equal(load.history->value(Point<1>(tau)),
+                        other.history->value(Point<1>(tau))))
+        return false;
+
+    // Sample points on which the two intensities must agree.
+    std::vector<Point<2>> samples;
+    switch (load.kind)
+    {
+    case Kind::point:
+      return (mirrored(load.position, axis) - other.position).norm() < 1e-12;
+    case Kind::pressure:
+    {
+      const BoundingBox<2> a  = region_of(load, plate);
+      const BoundingBox<2> b  = region_of(other, plate);
+      const Point<2>       lo = a.get_boundary_points().first;
+      const Point<2>       hi = a.get_boundary_points().second;
+      // Mirroring swaps the roles of the corners along the axis.
+      Point<2> image_lo = lo, image_hi = hi;
+      image_lo[axis] = -hi[axis];
+      image_hi[axis] = -lo[axis];
+      if ((image_lo - b.get_boundary_points().first).norm() > 1e-12
+          || (image_hi - b.get_boundary_points().second).norm() > 1e-12)
+        return false;
+      for (unsigned int i = 0; i <= 4; ++i)
+        for (unsigned int j = 0; j <= 4; ++j)
+          samples.emplace_back(lo[0] + (hi[0] - lo[0]) * i / 4.0,
+                               lo[1] + (hi[1] - lo[1]) * j / 4.0);
+      break;
+    }
+    case Kind::line:
+    {
+      const bool         edge_normal_to_axis = ((load.edge / 2) == axis);
+      const unsigned int image_edge =
+        edge_normal_to_axis ? (load.edge ^ 1u) : load.edge;
+      if (other.edge != image_edge)
+        return false;
+      const Point<2>     lo    = plate.get_boundary_points().first;
+      const Point<2>     hi    = plate.get_boundary_points().second;
+      const unsigned int along = (load.edge < 2 ? 1 : 0);
+      Point<2>           p     = (load.edge % 2 == 0 ? lo : hi);
+      for (unsigned int i = 0; i <= 8; ++i)
+      {
+        p[along] = lo[along] + (hi[along] - lo[along]) * i / 8.0;
+        samples.push_back(p);
+      }
+      break;
+    }
+    }
+    for (const auto &p : samples)
+      for (const double tau : sample_times)
+        if (!nearly_equal(load.intensity_at(p, tau),
+                          other.intensity_at(mirrored(p, axis), tau)))
+          return false;
+    return true;
+  }
+
+
+  void
+  LoadSet::setup(const Discretization &disc)
+  {
+    discretization = &disc;
+    for (auto &load : loads)
+    {
+      disc.reinit_vector(load.spatial_part);
+      if (load.kind == Kind::pressure || load.kind == Kind::line)
+      {
+        if (!load.intensity_depends_on_time)
+          assemble_spatial_part(load, 0.0, load.spatial_part);
+        continue;
+      }
+      // Point loads outside the meshed part are represented by their
+      // images inside it.
+      if (!disc.modelled_box().point_inside(load.position, 1e-12))
+        continue;
+      const PointFunctional functional(disc, load.position);
+      functional.add_to(load.spatial_part,
+                        load.magnitude
+                          * disc.share_of_point_load(load.position),
+                        disc.constraints);
+      load.spatial_part.compress(VectorOperation::add);
+    }
+  }
+
+
+  void
+  LoadSet::assemble_spatial_part(const Load      &load,
+                                 const double     tau,
+                                 LA::MPI::Vector &vector) const
+  {
+    const Discretization                &disc   = *discretization;
+    const auto                          &fe     = *disc.fe;
+    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+    const QGauss<2>                      cell_quadrature(fe.degree + 1);
+    const QGauss<1>                      face_quadrature(fe.degree + 1);
+    FEValues<2>                          fe_values(disc.mapping,
+                          fe,
+                          cell_quadrature,
+                          update_values | update_quadrature_points
+                            | update_JxW_values);
+    FEFaceValues<2>                      fe_face_values(disc.mapping,
+                                   fe,
+                                   face_quadrature,
+                                   update_values | update_quadrature_points
+                                     | update_JxW_values);
+    const FEValuesExtractors::Scalar     w(0);
+    Vector<double>                       cell_rhs(n_dofs);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+    const BoundingBox<2>                 region =
+      (load.kind == Kind::pressure ? region_of(load, disc.plate_box())
+                                   : disc.plate_box());
+
+    vector               = 0;
+    const auto integrate = [&](const FEValuesBase<2> &values)
+    {
+      for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+      {
+        const Point<2> &x = values.quadrature_point(q);
+        if (!region.point_inside(x, 1e-12))
+          continue;
+        const double f =
+          load.magnitude * load.intensity_at(x, tau) * values.JxW(q);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          cell_rhs(i) += f * values[w].value(i, q);
+      }
+    };
+
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        cell_rhs = 0;
+        if (load.kind == Kind::pressure)
+        {
+          fe_values.reinit(cell);
+          integrate(fe_values);
+        }
+        else
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary()
+                && cell->face(f)->boundary_id() == load.edge)
+            {
+              fe_face_values.reinit(cell, f);
+              integrate(fe_face_values);
+            }
+        cell->get_dof_indices(dof_indices);
+        disc.constraints.distribute_local_to_global(cell_rhs,
+                                                    dof_indices,
+                                                    vector);
+      }
+    vector.compress(VectorOperation::add);
+  }
+
+
+  void
+  LoadSet::assemble(const double tau, LA::MPI::Vector &load_vector) const
+  {
+    load_vector = 0;
+    LA::MPI::Vector scratch;
+    for (const auto &load : loads)
+    {
+      const double h = load.history->value(Point<1>(tau));
+      if (load.intensity_depends_on_time)
+      {
+        if (scratch.size() == 0)
+          discretization->reinit_vector(scratch);
+        assemble_spatial_part(load, tau, scratch);
+        load_vector.add(h, scratch);
+      }
+      else
+        load_vector.add(h, load.spatial_part);
+    }
+  }
+
+
+  unsigned int
+  LoadSet::n_loads() const
+  {
+    return loads.size();
+  }
+} // namespace liftoff

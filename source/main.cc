@@ -1,0 +1,85 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/simulator.h>
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+namespace
+{
+  const char *usage = "usage: liftoff SCENE.prm   (or: liftoff - to read the "
+                      "scene from standard input)";
+
+  // Rank 0 reads the scene (from a file or stdin) and all ranks parse the
+  // same text, so every rank fails alike on bad input.
+  std::string
+  read_scene(const std::string &name, const MPI_Comm comm)
+  {
+    std::string text;
+    bool        ok = true;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      if (name == "-")
+        text.assign(std::istreambuf_iterator<char>(std::cin), {});
+      else
+      {
+        std::ifstream in(name);
+        ok = static_cast<bool>(in);
+        text.assign(std::istreambuf_iterator<char>(in), {});
+      }
+    }
+    ok   = dealii::Utilities::MPI::broadcast(comm, ok, 0);
+    text = dealii::Utilities::MPI::broadcast(comm, text, 0);
+    AssertThrow(ok, dealii::ExcMessage("Cannot read the scene file " + name));
+    return text;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+  if (argc != 2)
+  {
+    if (is_root)
+      std::cerr << usage << std::endl;
+    return 2;
+  }
+
+  try
+  {
+    dealii::ParameterHandler prm;
+    liftoff::Simulator::declare_parameters(prm);
+    prm.parse_input_from_string(read_scene(argv[1], comm), argv[1]);
+
+    liftoff::Simulator simulator(comm);
+    simulator.parse_parameters(prm);
+    simulator.run(prm);
+  }
+  catch (const dealii::ExceptionBase &e)
+  {
+    if (is_root)
+    {
+      std::cerr << "liftoff: error in " << argv[1] << ":\n";
+      e.print_info(std::cerr);
+      std::cerr << std::endl;
+    }
+    return 1;
+  }
+  catch (const std::exception &e)
+  {
+    if (is_root)
+      std::cerr << "liftoff: error in " << argv[1] << ":\n"
+                << e.what() << std::endl;
+    return 1;
+  }
+  return 0;
+}

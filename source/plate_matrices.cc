@@ -1,0 +1,136 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <liftoff/plate_matrices.h>
+
+namespace liftoff
+{
+  void
+  PlateMatrices::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("Shear integration",
+                      "full",
+                      Patterns::Selection("full|reduced"),
+                      "Gauss rule of the transverse shear term: full, "
+                      "(p+1)^2 points, locks for thin plates; reduced, p^2 "
+                      "points, gives free plates spurious zero-energy "
+                      "modes.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  PlateMatrices::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    shear_integration =
+      (prm.get("Shear integration") == "full" ? ShearIntegration::full
+                                              : ShearIntegration::reduced);
+    prm.leave_subsection();
+  }
+
+
+  void
+  PlateMatrices::assemble(const Discretization &disc, const MindlinPlate &plate)
+  {
+    disc.reinit_matrix(stiffness);
+    disc.reinit_matrix(mass);
+
+    const auto        &fe     = *disc.fe;
+    const unsigned int p      = fe.degree;
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    const QGauss<2>    full_rule(p + 1);
+    const QGauss<2>    shear_rule(
+      shear_integration == ShearIntegration::full ? p + 1 : p);
+    FEValues<2> fe_values(disc.mapping,
+                          fe,
+                          full_rule,
+                          update_values | update_gradients | update_JxW_values);
+    FEValues<2> shear_values(disc.mapping,
+                             fe,
+                             shear_rule,
+                             update_values | update_gradients
+                               | update_JxW_values);
+
+    const FEValuesExtractors::Scalar w(0), psi_x(1), psi_y(2);
+    const double                     nu       = plate.poisson_ratio;
+    const double                     twisting = plate.twisting_stiffness();
+    const double                     shear    = plate.shear_stiffness();
+    const double                     rotary   = plate.rotary_inertia();
+
+    FullMatrix<double>                   cell_stiffness(n_dofs, n_dofs);
+    FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        cell_stiffness = 0;
+        cell_mass      = 0;
+        fe_values.reinit(cell);
+        shear_values.reinit(cell);
+
+        for (unsigned int q = 0; q < full_rule.size(); ++q)
+        {
+          const double dx = fe_values.JxW(q);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const Tensor<1, 2> gx_i    = fe_values[psi_x].gradient(i, q);
+            const Tensor<1, 2> gy_i    = fe_values[psi_y].gradient(i, q);
+            const double       twist_i = gx_i[1] + gy_i[0];
+            for (unsigned int j = 0; j < n_dofs; ++j)
+            {
+              const Tensor<1, 2> gx_j    = fe_values[psi_x].gradient(j, q);
+              const Tensor<1, 2> gy_j    = fe_values[psi_y].gradient(j, q);
+              const double       twist_j = gx_j[1] + gy_j[0];
+              cell_stiffness(i, j) +=
+                (gx_i[0] * gx_j[0] + gy_i[1] * gy_j[1]
+                 + nu * (gx_i[0] * gy_j[1] + gy_i[1] * gx_j[0])
+                 + twisting * twist_i * twist_j)
+                * dx;
+              cell_mass(i, j) +=
+                (fe_values[w].value(i, q) * fe_values[w].value(j, q)
+                 + rotary
+                     * (fe_values[psi_x].value(i, q)
+                          * fe_values[psi_x].value(j, q)
+                        + fe_values[psi_y].value(i, q)
+                            * fe_values[psi_y].value(j, q)))
+                * dx;
+            }
+          }
+        }
+
+        for (unsigned int q = 0; q < shear_rule.size(); ++q)
+        {
+          const double dx = shear_values.JxW(q);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const Tensor<1, 2> gamma_i =
+              shear_values[w].gradient(i, q)
+              - Tensor<1, 2>({shear_values[psi_x].value(i, q),
+                              shear_values[psi_y].value(i, q)});
+            for (unsigned int j = 0; j < n_dofs; ++j)
+            {
+              const Tensor<1, 2> gamma_j =
+                shear_values[w].gradient(j, q)
+                - Tensor<1, 2>({shear_values[psi_x].value(j, q),
+                                shear_values[psi_y].value(j, q)});
+              cell_stiffness(i, j) += shear * gamma_i * gamma_j * dx;
+            }
+          }
+        }
+
+        cell->get_dof_indices(dof_indices);
+        disc.constraints.distribute_local_to_global(cell_stiffness,
+                                                    dof_indices,
+                                                    stiffness);
+        disc.constraints.distribute_local_to_global(cell_mass,
+                                                    dof_indices,
+                                                    mass);
+      }
+    stiffness.compress(VectorOperation::add);
+    mass.compress(VectorOperation::add);
+  }
+} // namespace liftoff

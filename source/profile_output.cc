@@ -1,0 +1,124 @@
+#include <deal.II/base/mpi.h>
+
+#include <liftoff/profile_output.h>
+
+#include <iomanip>
+
+namespace liftoff
+{
+  void
+  ProfileOutput::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Profile start",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 2, ","),
+                      "x, y where the profile line starts (full plate).");
+    prm.declare_entry("Profile end",
+                      "0.5, 0",
+                      Patterns::List(Patterns::Double(), 2, 2, ","),
+                      "x, y where the profile line ends (full plate).");
+    prm.declare_entry("Profile points",
+                      "0",
+                      Patterns::Integer(0, 100000),
+                      "Points along the line (including its ends); 0 "
+                      "writes no profiles.");
+    prm.declare_entry("Profile times",
+                      "",
+                      Patterns::List(Patterns::Double(0.0)),
+                      "Times tau at which profiles.csv gets a profile.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  ProfileOutput::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    const auto a = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Profile start")));
+    const auto b = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Profile end")));
+    start    = Point<2>(a[0], a[1]);
+    end      = Point<2>(b[0], b[1]);
+    n_points = prm.get_integer("Profile points");
+    times    = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Profile times")));
+    prm.leave_subsection();
+    AssertThrow(n_points != 1,
+                ExcMessage("Output/Profile points must be 0 (no profile) or "
+                           "at least 2."));
+  }
+
+
+  Point<2>
+  ProfileOutput::point(const unsigned int i) const
+  {
+    return start + (end - start) * (double(i) / (n_points - 1));
+  }
+
+
+  void
+  ProfileOutput::check_against(const Discretization &disc) const
+  {
+    if (n_points == 0)
+      return;
+    for (const auto &p : {start, end})
+      AssertThrow(disc.plate_box().point_inside(p, 1e-12),
+                  ExcMessage("Output/Profile start and Profile end must lie "
+                             "on the plate [-1/2, 1/2] x [-mu/2, mu/2]; "
+                             + std::to_string(p[0]) + ", "
+                             + std::to_string(p[1]) + " does not."));
+  }
+
+
+  void
+  ProfileOutput::setup(const Discretization &disc, const std::string &directory)
+  {
+    discretization = &disc;
+    is_written.assign(times.size(), false);
+    points.clear();
+    if (n_points == 0)
+      return;
+    for (unsigned int i = 0; i < n_points; ++i)
+      points.emplace_back(disc, disc.to_modelled_part(point(i)));
+
+    if (Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
+      return;
+    file.open(directory + "/profiles.csv");
+    AssertThrow(file,
+                ExcMessage("Cannot write " + directory + "/profiles.csv"));
+    file << "tau,s,x,y,w\n" << std::flush;
+  }
+
+
+  void
+  ProfileOutput::write_if_due(const double           tau,
+                              const double           dt,
+                              const LA::MPI::Vector &u)
+  {
+    if (n_points == 0)
+      return;
+    bool is_due = (dt == 0.0);
+    for (unsigned int k = 0; k < times.size(); ++k)
+      if (!is_written[k] && std::abs(tau - times[k]) <= 0.5 * dt * (1 + 1e-12))
+        is_written[k] = is_due = true;
+    if (!is_due)
+      return;
+
+    std::vector<double> w;
+    for (const auto &p : points)
+      w.push_back(p.local_value(u));
+    Utilities::MPI::sum(w, discretization->mpi_communicator, w);
+    if (!file.is_open())
+      return;
+    file << std::setprecision(12);
+    for (unsigned int i = 0; i < n_points; ++i)
+    {
+      const Point<2> p = point(i);
+      file << tau << ',' << p.distance(start) << ',' << p[0] << ',' << p[1]
+           << ',' << w[i] << '\n';
+    }
+    file << std::flush;
+  }
+} // namespace liftoff

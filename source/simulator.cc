@@ -1,0 +1,495 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <liftoff/output_files.h>
+#include <liftoff/simulator.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+
+namespace liftoff
+{
+  Simulator::Simulator(const MPI_Comm comm)
+      : mpi_communicator(comm)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+      , discretization(comm)
+      , active_set(discretization, foundation, linear_solver, timer)
+  {
+  }
+
+
+  void
+  Simulator::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analysis");
+    prm.declare_entry("Type",
+                      "dynamic",
+                      Patterns::Selection("dynamic|static"),
+                      "dynamic: Newmark time integration to the end time; "
+                      "static: equilibrium under the loads at tau = 0.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial conditions");
+    prm.declare_entry("Displacement",
+                      "0; 0; 0",
+                      Patterns::Anything(),
+                      "w; psi_x; psi_y at tau = 0 as muParser expressions "
+                      "in x, y.");
+    prm.declare_entry("Velocity",
+                      "0; 0; 0",
+                      Patterns::Anything(),
+                      "Velocities of w; psi_x; psi_y at tau = 0, in x, y.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Folder for all results (created if needed). Empty: "
+                      "write no files.");
+    prm.leave_subsection();
+
+    MindlinPlate::declare_parameters(prm);
+    Discretization::declare_parameters(prm);
+    PlateMatrices::declare_parameters(prm);
+    TensionlessWinklerFoundation::declare_parameters(prm);
+    LoadSet::declare_parameters(prm);
+    NewmarkIntegrator::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
+    ActiveSetIteration::declare_parameters(prm);
+    FieldOutput::declare_parameters(prm);
+    TimeHistory::declare_parameters(prm);
+    ProfileOutput::declare_parameters(prm);
+  }
+
+
+  void
+  Simulator::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analysis");
+    analysis = (prm.get("Type") == "static" ? Analysis::static_analysis
+                                            : Analysis::dynamic_analysis);
+    prm.leave_subsection();
+    prm.enter_subsection("Initial conditions");
+    initial_displacement = prm.get("Displacement");
+    initial_velocity     = prm.get("Velocity");
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
+    output_directory = prm.get("Directory");
+    prm.leave_subsection();
+
+    plate.parse_parameters(prm);
+    discretization.parse_parameters(prm);
+    matrices.parse_parameters(prm);
+    foundation.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    newmark.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+    mass_solver.parse_parameters(prm);
+    active_set.parse_parameters(prm);
+    field_output.parse_parameters(prm);
+    time_history.parse_parameters(prm);
+    profile_output.parse_parameters(prm);
+
+    // Initial conditions must parse before anything runs.
+    for (const auto &[name, text] :
+         {std::make_pair("Displacement", initial_displacement),
+          std::make_pair("Velocity", initial_velocity)})
+    {
+      try
+      {
+        FunctionParser<2> f(3);
+        f.initialize("x,y", text, {{"pi", M_PI}});
+        Vector<double> values(3);
+        f.vector_value(Point<2>(), values);
+      }
+      catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(std::string("Initial conditions/") + name
+                               + " = <" + text
+                               + "> must be three muParser expressions in "
+                                 "x, y separated by ';': "
+                               + e.what()));
+      }
+    }
+
+    if (analysis == Analysis::static_analysis)
+      AssertThrow(discretization.has_kinematic_support()
+                    || foundation.model
+                         != TensionlessWinklerFoundation::Model::none,
+                  ExcMessage("Analysis/Type = static: a plate with all edges "
+                             "free and Foundation/Model = none has no static "
+                             "equilibrium."));
+
+    // Geometry-dependent checks need the mesh; building it writes nothing.
+    discretization.setup(plate);
+    loads.check_against(discretization);
+    time_history.check_against(discretization);
+    profile_output.check_against(discretization);
+  }
+
+
+  bool
+  Simulator::writes_files() const
+  {
+    return !output_directory.empty();
+  }
+
+
+  void
+  Simulator::prepare_output_directory(const ParameterHandler &prm) const
+  {
+    if (!writes_files()
+        || Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    std::error_code error;
+    std::filesystem::create_directories(output_directory, error);
+    AssertThrow(!error,
+                ExcMessage("Output/Directory = " + output_directory
+                           + " cannot be created: " + error.message()));
+    write_file_atomically(output_directory + "/used_parameters.prm",
+                          [&](std::ostream &out) {
+                            prm.print_parameters(out,
+                                                 ParameterHandler::ShortPRM);
+                          });
+  }
+
+
+  void
+  Simulator::setup()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    {
+      TimerOutput::Scope t2(timer, "assembly");
+      matrices.assemble(discretization, plate);
+    }
+    foundation.setup(discretization);
+    loads.setup(discretization);
+    for (auto *vector : {&u, &v, &a})
+      discretization.reinit_vector(*vector);
+    discretization.reinit_ghosted_vector(ghosted_u);
+    discretization.reinit_ghosted_vector(ghosted_v);
+    if (writes_files())
+    {
+      time_history.setup(discretization, output_directory);
+      profile_output.setup(discretization, output_directory);
+    }
+    else
+    {
+      time_history.setup(discretization, "");
+      profile_output.setup(discretization, "");
+    }
+  }
+
+
+  void
+  Simulator::run(const ParameterHandler &prm)
+  {
+    prepare_output_directory(prm);
+    MPI_Barrier(mpi_communicator);
+    pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
+          << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
+          << discretization.degree() << "), "
+          << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
+          << std::endl;
+    setup();
+    try
+    {
+      if (analysis == Analysis::static_analysis)
+        run_static();
+      else
+        run_dynamic();
+    }
+    catch (...)
+    {
+      write_summary("failed");
+      throw;
+    }
+    write_summary("completed");
+  }
+
+
+  void
+  Simulator::set_initial_state()
+  {
+    for (auto &[text, vector] : {std::make_pair(initial_displacement, &u),
+                                 std::make_pair(initial_velocity, &v)})
+    {
+      FunctionParser<2> f(3);
+      f.initialize("x,y", text, {{"pi", M_PI}});
+      VectorTools::interpolate(discretization.mapping,
+                               discretization.dof_handler,
+                               f,
+                               *vector);
+      discretization.constraints.distribute(*vector);
+    }
+    ghosted_u = u;
+    ghosted_v = v;
+  }
+
+
+  EnergyBalance
+  Simulator::energies(const double work) const
+  {
+    EnergyBalance e;
+    const double  copies = discretization.n_symmetry_copies();
+    if (time_history.wants_energies())
+    {
+      LA::MPI::Vector product(u);
+      matrices.mass.vmult(product, v);
+      e.kinetic = 0.5 * copies * (v * product);
+      matrices.stiffness.vmult(product, u);
+      e.strain     = 0.5 * copies * (u * product);
+      e.foundation = copies * foundation.energy(ghosted_u);
+    }
+    e.work = work;
+    return e;
+  }
+
+
+  void
+  Simulator::record_step(const double         tau,
+                         const unsigned int   iterations,
+                         const EnergyBalance &energy,
+                         const EnergyBalance &initial)
+  {
+    TimerOutput::Scope t(timer, "output");
+    const double       contact = foundation.contact_area_fraction();
+    records.push_back(
+      {tau, iterations, contact, time_history.probe_values(ghosted_u), energy});
+    time_history.record(tau, ghosted_u, contact, iterations, energy, initial);
+  }
+
+
+  void
+  Simulator::run_static()
+  {
+    active_set.set_base_matrix(matrices.stiffness);
+    const bool needs_contact    = !discretization.has_kinematic_support();
+    active_set.requires_contact = needs_contact;
+    foundation.activate_all();
+    active_set.contact_set_changed();
+
+    LA::MPI::Vector load;
+    discretization.reinit_vector(load);
+    loads.assemble(0.0, load);
+
+    const auto result = active_set.solve(load, u, ghosted_u);
+    AssertThrow(!result.lost_contact,
+                ExcMessage("Static analysis: the plate lifts off the "
+                           "foundation everywhere (or keeps too little "
+                           "contact to be held) and has no support, so it "
+                           "has no static equilibrium under these loads. "
+                           "Use a dynamic analysis or support an edge."));
+    AssertThrow(result.converged,
+                ExcMessage("Static analysis: the active set did not settle in "
+                           + std::to_string(active_set.max_iterations)
+                           + " iterations (Active set/Maximum iterations)."));
+    const EnergyBalance none;
+    EnergyBalance       e = energies(0.0);
+    e.work                = discretization.n_symmetry_copies() * (load * u);
+    record_step(0.0, result.iterations, e, none);
+    profile_output.write_if_due(0.0, 0.0, ghosted_u);
+    if (writes_files() && field_output.is_due(0, true))
+      field_output.write(output_directory,
+                         discretization,
+                         foundation,
+                         ghosted_u,
+                         ghosted_v,
+                         0.0,
+                         0);
+    pcout << "static: " << result.iterations << " active-set iterations, "
+          << "contact fraction " << foundation.contact_area_fraction()
+          << std::endl;
+  }
+
+
+  void
+  Simulator::run_dynamic()
+  {
+    const double       dt      = newmark.time_step;
+    const unsigned int n_steps = newmark.n_steps();
+    const double       copies  = discretization.n_symmetry_copies();
+
+    LA::MPI::Vector load, next_load, rhs, history_term, u_new;
+    for (auto *vector : {&load, &next_load, &rhs, &history_term, &u_new})
+      discretization.reinit_vector(*vector);
+
+    // Initial acceleration from M a0 = F(0) - (K + K_f(u0)) u0, with the
+    // contact set of u0.
+    set_initial_state();
+    loads.assemble(0.0, load);
+    {
+      TimerOutput::Scope t(timer, "initial acceleration");
+      foundation.update_contact_status(ghosted_u);
+      LA::MPI::SparseMatrix foundation_matrix;
+      discretization.reinit_matrix(foundation_matrix);
+      foundation.assemble_matrix(foundation_matrix);
+      foundation_matrix.add(1.0, matrices.stiffness);
+      foundation_matrix.vmult(rhs, u);
+      rhs.sadd(-1.0, 1.0, load);
+      mass_solver.prepare(matrices.mass, discretization);
+      mass_solver.solve(a, rhs);
+      discretization.constraints.distribute(a);
+    }
+
+    // Effective matrix without the foundation: assembled once per dt.
+    LA::MPI::SparseMatrix base;
+    discretization.reinit_matrix(base);
+    base.copy_from(matrices.stiffness);
+    base.add(newmark.mass_factor(), matrices.mass);
+    active_set.set_base_matrix(base);
+    foundation.activate_all(); // the first iterate is the bilateral problem
+    active_set.contact_set_changed();
+
+    double              work    = 0;
+    const EnergyBalance initial = energies(0.0);
+    record_step(0.0, 0, initial, initial);
+    profile_output.write_if_due(0.0, dt, ghosted_u);
+    if (writes_files() && field_output.is_due(0, false))
+      field_output.write(output_directory,
+                         discretization,
+                         foundation,
+                         ghosted_u,
+                         ghosted_v,
+                         0.0,
+                         0);
+
+    for (unsigned int step = 1; step <= n_steps; ++step)
+    {
+      const double tau = step * dt;
+      {
+        TimerOutput::Scope t(timer, "right hand side");
+        loads.assemble(tau, next_load);
+        newmark.history_term(u, v, a, history_term);
+        matrices.mass.vmult(rhs, history_term);
+        rhs += next_load;
+      }
+      u_new             = u;
+      const auto result = active_set.solve(rhs, u_new, ghosted_u);
+      AssertThrow(result.converged,
+                  ExcMessage("The active set did not settle in "
+                             + std::to_string(active_set.max_iterations)
+                             + " iterations at step " + std::to_string(step)
+                             + " (tau = " + std::to_string(tau)
+                             + "); raise Active set/Maximum iterations or "
+                               "reduce Time integration/Time step."));
+
+      // Trapezoidal work of the loads, exact for Newmark's average
+      // acceleration rule on linear problems.
+      LA::MPI::Vector increment(u_new);
+      increment -= u;
+      load += next_load;
+      work += 0.5 * copies * (increment * load);
+      load = next_load;
+
+      newmark.advance(u_new, u, v, a);
+      ghosted_v = v;
+
+      record_step(tau, result.iterations, energies(work), initial);
+      profile_output.write_if_due(tau, dt, ghosted_u);
+      if (writes_files() && field_output.is_due(step, step == n_steps))
+      {
+        TimerOutput::Scope t(timer, "output");
+        field_output.write(output_directory,
+                           discretization,
+                           foundation,
+                           ghosted_u,
+                           ghosted_v,
+                           tau,
+                           step);
+      }
+    }
+  }
+
+
+  void
+  Simulator::write_summary(const std::string &status) const
+  {
+    unsigned int total = 0, largest = 0, n = 0;
+    for (const auto &r : records)
+      if (r.iterations > 0)
+      {
+        total += r.iterations;
+        largest = std::max(largest, r.iterations);
+        ++n;
+      }
+    std::ostringstream text;
+    text << "status: " << status << '\n'
+         << "analysis: "
+         << (analysis == Analysis::static_analysis ? "static" : "dynamic")
+         << '\n'
+         << "ranks: " << Utilities::MPI::n_mpi_processes(mpi_communicator)
+         << '\n'
+         << "cells: " << discretization.triangulation.n_global_active_cells()
+         << '\n'
+         << "degree: " << discretization.degree() << '\n'
+         << "dofs: " << discretization.dof_handler.n_dofs() << '\n'
+         << "steps: " << (records.empty() ? 0 : records.size() - 1) << '\n'
+         << "active-set iterations per step, mean: "
+         << (n > 0 ? double(total) / n : 0.0) << '\n'
+         << "active-set iterations per step, max: " << largest << '\n'
+         << "factorisations: " << linear_solver.n_preparations << '\n';
+
+    const auto timings =
+      timer.get_summary_data(TimerOutput::OutputData::total_wall_time);
+    text << "wall time by section [s]:\n";
+    for (const auto &[section, seconds] : timings)
+      text << "  " << section << ": " << seconds << '\n';
+
+    pcout << text.str();
+    if (writes_files()
+        && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      write_file_atomically(output_directory + "/summary.txt",
+                            [&](std::ostream &out) { out << text.str(); });
+  }
+
+
+  double
+  Simulator::deflection_at(const Point<2> &p) const
+  {
+    const PointFunctional probe(discretization,
+                                discretization.to_modelled_part(p));
+    return Utilities::MPI::sum(probe.local_value(ghosted_u), mpi_communicator);
+  }
+
+
+  const std::vector<Simulator::StepRecord> &
+  Simulator::history() const
+  {
+    return records;
+  }
+
+
+  const LA::MPI::Vector &
+  Simulator::solution() const
+  {
+    return ghosted_u;
+  }
+
+
+  const Discretization &
+  Simulator::get_discretization() const
+  {
+    return discretization;
+  }
+
+
+  const TensionlessWinklerFoundation &
+  Simulator::get_foundation() const
+  {
+    return foundation;
+  }
+
+
+  const MindlinPlate &
+  Simulator::get_plate() const
+  {
+    return plate;
+  }
+} // namespace liftoff
