@@ -35,8 +35,7 @@ namespace liftoff
       , foundation(foundation)
       , solver(solver)
       , timer(timer)
-  {
-  }
+  {}
 
 
   void
@@ -85,46 +84,46 @@ namespace liftoff
     Assert(base_matrix != nullptr, ExcMessage("set_base_matrix() first."));
     Result result;
     while (result.iterations < max_iterations)
-    {
-      ++result.iterations;
-      if (!matrix_is_current)
       {
+        ++result.iterations;
+        if (!matrix_is_current)
+          {
+            {
+              TimerOutput::Scope t(timer, "foundation assembly");
+              foundation.assemble_matrix(foundation_matrix);
+              matrix.copy_from(*base_matrix);
+              matrix.add(1.0, foundation_matrix);
+            }
+            TimerOutput::Scope t(timer, "factorisation");
+            solver.prepare(matrix, discretization);
+            matrix_is_current = true;
+          }
         {
-          TimerOutput::Scope t(timer, "foundation assembly");
-          foundation.assemble_matrix(foundation_matrix);
-          matrix.copy_from(*base_matrix);
-          matrix.add(1.0, foundation_matrix);
+          TimerOutput::Scope t(timer, "solve");
+          solver.solve(solution, rhs);
+          discretization.constraints.distribute(solution);
+          ghosted_solution = solution;
         }
-        TimerOutput::Scope t(timer, "factorisation");
-        solver.prepare(matrix, discretization);
-        matrix_is_current = true;
+        if (requires_contact && !is_solution_of_system(solution, rhs))
+          {
+            result.lost_contact = true;
+            return result;
+          }
+        TimerOutput::Scope  t(timer, "contact update");
+        const unsigned long n_changed =
+          foundation.update_contact_status(ghosted_solution);
+        if (n_changed == 0)
+          {
+            result.converged = true;
+            return result;
+          }
+        if (requires_contact && foundation.contact_area_fraction() == 0.0)
+          {
+            result.lost_contact = true;
+            return result;
+          }
+        matrix_is_current = false;
       }
-      {
-        TimerOutput::Scope t(timer, "solve");
-        solver.solve(solution, rhs);
-        discretization.constraints.distribute(solution);
-        ghosted_solution = solution;
-      }
-      if (requires_contact && !is_solution_of_system(solution, rhs))
-      {
-        result.lost_contact = true;
-        return result;
-      }
-      TimerOutput::Scope  t(timer, "contact update");
-      const unsigned long n_changed =
-        foundation.update_contact_status(ghosted_solution);
-      if (n_changed == 0)
-      {
-        result.converged = true;
-        return result;
-      }
-      if (requires_contact && foundation.contact_area_fraction() == 0.0)
-      {
-        result.lost_contact = true;
-        return result;
-      }
-      matrix_is_current = false;
-    }
     return result;
   }
 } // namespace liftoff

@@ -133,15 +133,15 @@ namespace liftoff
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
-        {
-          const Point<2> c = face->center();
-          if (modelled_part != Symmetry::full
-              && face->boundary_id() == left_edge && std::abs(c[0]) < 1e-12)
-            face->set_boundary_id(x_symmetry_plane);
-          if (modelled_part == Symmetry::quarter
-              && face->boundary_id() == bottom_edge && std::abs(c[1]) < 1e-12)
-            face->set_boundary_id(y_symmetry_plane);
-        }
+          {
+            const Point<2> c = face->center();
+            if (modelled_part != Symmetry::full
+                && face->boundary_id() == left_edge && std::abs(c[0]) < 1e-12)
+              face->set_boundary_id(x_symmetry_plane);
+            if (modelled_part == Symmetry::quarter
+                && face->boundary_id() == bottom_edge && std::abs(c[1]) < 1e-12)
+              face->set_boundary_id(y_symmetry_plane);
+          }
     triangulation.refine_global(n_refinements);
 
     fe = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), n_components);
@@ -173,9 +173,8 @@ namespace liftoff
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
 
     const Functions::ZeroFunction<2> zero(n_components);
-    const auto                       constrain =
-      [&](const types::boundary_id id, const std::array<bool, 3> &components)
-    {
+    const auto constrain = [&](const types::boundary_id   id,
+                               const std::array<bool, 3> &components) {
       const ComponentMask mask(
         std::vector<bool>(components.begin(), components.end()));
       VectorTools::interpolate_boundary_values(
@@ -183,28 +182,28 @@ namespace liftoff
     };
 
     for (unsigned int e = 0; e < 4; ++e)
-    {
-      // Rotation along an edge: psi_y on the edges x = const, psi_x on
-      // the edges y = const.
-      const bool          along_y = (e == left_edge || e == right_edge);
-      std::array<bool, 3> mask    = {{false, false, false}};
-      switch (edges[e])
       {
-      case EdgeCondition::free:
-        continue;
-      case EdgeCondition::soft_simply_supported:
-        mask[0] = true;
-        break;
-      case EdgeCondition::hard_simply_supported:
-        mask[0]               = true;
-        mask[along_y ? 2 : 1] = true;
-        break;
-      case EdgeCondition::clamped:
-        mask = {{true, true, true}};
-        break;
+        // Rotation along an edge: psi_y on the edges x = const, psi_x on
+        // the edges y = const.
+        const bool          along_y = (e == left_edge || e == right_edge);
+        std::array<bool, 3> mask    = {{false, false, false}};
+        switch (edges[e])
+          {
+          case EdgeCondition::free:
+            continue;
+          case EdgeCondition::soft_simply_supported:
+            mask[0] = true;
+            break;
+          case EdgeCondition::hard_simply_supported:
+            mask[0]               = true;
+            mask[along_y ? 2 : 1] = true;
+            break;
+          case EdgeCondition::clamped:
+            mask = {{true, true, true}};
+            break;
+          }
+        constrain(e, mask);
       }
-      constrain(e, mask);
-    }
 
     // On a symmetry plane the rotation normal to it vanishes.
     constrain(x_symmetry_plane, {{false, true, false}});
@@ -238,14 +237,14 @@ namespace liftoff
   Discretization::symmetry_axes() const
   {
     switch (modelled_part)
-    {
-    case Symmetry::full:
-      return {};
-    case Symmetry::half:
-      return {0};
-    default:
-      return {0, 1};
-    }
+      {
+      case Symmetry::full:
+        return {};
+      case Symmetry::half:
+        return {0};
+      default:
+        return {0, 1};
+      }
   }
 
 

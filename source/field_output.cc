@@ -19,8 +19,7 @@ namespace liftoff
       explicit FoundationPressure(const TensionlessWinklerFoundation &f)
           : DataPostprocessorScalar<2>("foundation_pressure", update_values)
           , foundation(f)
-      {
-      }
+      {}
 
       void
       evaluate_vector_field(
@@ -29,15 +28,15 @@ namespace liftoff
       {
         using Model = TensionlessWinklerFoundation::Model;
         for (unsigned int q = 0; q < input.solution_values.size(); ++q)
-        {
-          const double w = input.solution_values[q][0];
-          computed[q][0] =
-            (foundation.model == Model::none
-               ? 0.0
-               : foundation.stiffness
-                   * (foundation.model == Model::bilateral ? w
-                                                           : std::max(w, 0.0)));
-        }
+          {
+            const double w = input.solution_values[q][0];
+            computed[q][0] = (foundation.model == Model::none
+                                ? 0.0
+                                : foundation.stiffness
+                                    * (foundation.model == Model::bilateral
+                                         ? w
+                                         : std::max(w, 0.0)));
+          }
       }
 
     private:
@@ -116,7 +115,8 @@ namespace liftoff
     records.emplace_back(time, master);
     if (Utilities::MPI::this_mpi_process(disc.mpi_communicator) == 0)
       write_file_atomically(directory + "/solution.pvd",
-                            [&](std::ostream &out)
-                            { DataOutBase::write_pvd_record(out, records); });
+                            [&](std::ostream &out) {
+                              DataOutBase::write_pvd_record(out, records);
+                            });
   }
 } // namespace liftoff

@@ -54,26 +54,27 @@ namespace liftoff
     matrix = &A;
     ++n_preparations;
     if (type == Type::direct)
-    {
-      control.set_max_steps(1);
-      direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-        control,
-        TrilinosWrappers::SolverDirect::AdditionalData(false, direct_package));
-      direct->initialize(A);
-    }
+      {
+        control.set_max_steps(1);
+        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         direct_package));
+        direct->initialize(A);
+      }
     else
-    {
-      TrilinosWrappers::PreconditionAMG::AdditionalData data;
-      data.elliptic              = true;
-      data.higher_order_elements = (disc.degree() > 1);
-      data.smoother_sweeps       = 2;
-      data.aggregation_threshold = 0.02;
-      DoFTools::extract_constant_modes(disc.dof_handler,
-                                       ComponentMask(),
-                                       data.constant_modes);
-      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      amg->initialize(A, data);
-    }
+      {
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = (disc.degree() > 1);
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        DoFTools::extract_constant_modes(disc.dof_handler,
+                                         ComponentMask(),
+                                         data.constant_modes);
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(A, data);
+      }
   }
 
 
@@ -82,10 +83,10 @@ namespace liftoff
   {
     Assert(matrix != nullptr, ExcMessage("LinearSolver::prepare() first."));
     if (type == Type::direct)
-    {
-      direct->solve(x, b);
-      return;
-    }
+      {
+        direct->solve(x, b);
+        return;
+      }
     SolverControl             cg_control(max_iterations,
                              std::max(tolerance * b.l2_norm(), 1e-300));
     SolverCG<LA::MPI::Vector> cg(cg_control);

@@ -39,21 +39,21 @@ namespace liftoff
     {
       auto parser = std::make_unique<FunctionParser<dim>>(1);
       try
-      {
-        parser->initialize(variables,
-                           expression,
-                           parser_constants,
-                           time_dependent);
-        const double value = parser->value(Point<dim>());
-        (void)value;
-      }
+        {
+          parser->initialize(variables,
+                             expression,
+                             parser_constants,
+                             time_dependent);
+          const double value = parser->value(Point<dim>());
+          (void)value;
+        }
       catch (const std::exception &e)
-      {
-        AssertThrow(false,
-                    ExcMessage(parameter + " = <" + expression
-                               + "> is not a valid expression in (" + variables
-                               + "): " + e.what()));
-      }
+        {
+          AssertThrow(false,
+                      ExcMessage(parameter + " = <" + expression
+                                 + "> is not a valid expression in ("
+                                 + variables + "): " + e.what()));
+        }
       return parser;
     }
 
@@ -93,55 +93,64 @@ namespace liftoff
       "ramp), sin(2*pi*tau/2.5) (pulsating), if(tau<0.1,1,0) (pulse).";
     prm.enter_subsection("Loads");
     for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
-    {
-      prm.enter_subsection(subsection_name("Point load", i));
-      prm.declare_entry("Magnitude",
-                        "0",
-                        Patterns::Double(),
-                        "Force in units of F0; 0 switches the load off.");
-      prm.declare_entry("Position",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 2, ","),
-                        "x, y on the full plate (any point, not only "
-                        "nodes).");
-      prm.declare_entry("Time history", "1", Patterns::Anything(), history_doc);
-      prm.leave_subsection();
+      {
+        prm.enter_subsection(subsection_name("Point load", i));
+        prm.declare_entry("Magnitude",
+                          "0",
+                          Patterns::Double(),
+                          "Force in units of F0; 0 switches the load off.");
+        prm.declare_entry("Position",
+                          "0, 0",
+                          Patterns::List(Patterns::Double(), 2, 2, ","),
+                          "x, y on the full plate (any point, not only "
+                          "nodes).");
+        prm.declare_entry("Time history",
+                          "1",
+                          Patterns::Anything(),
+                          history_doc);
+        prm.leave_subsection();
 
-      prm.enter_subsection(subsection_name("Pressure", i));
-      prm.declare_entry("Magnitude",
-                        "0",
-                        Patterns::Double(),
-                        "Pressure scale; 0 switches the load off.");
-      prm.declare_entry("Region",
-                        "whole plate",
-                        Patterns::Anything(),
-                        "'whole plate' or 'x_min, x_max, y_min, y_max' on "
-                        "the full plate. Rectangles that follow cell "
-                        "edges are integrated exactly.");
-      prm.declare_entry("Intensity",
-                        "1",
-                        Patterns::Anything(),
-                        "f(x, y, tau), muParser; the pressure is "
-                        "Magnitude * f * h(tau).");
-      prm.declare_entry("Time history", "1", Patterns::Anything(), history_doc);
-      prm.leave_subsection();
+        prm.enter_subsection(subsection_name("Pressure", i));
+        prm.declare_entry("Magnitude",
+                          "0",
+                          Patterns::Double(),
+                          "Pressure scale; 0 switches the load off.");
+        prm.declare_entry("Region",
+                          "whole plate",
+                          Patterns::Anything(),
+                          "'whole plate' or 'x_min, x_max, y_min, y_max' on "
+                          "the full plate. Rectangles that follow cell "
+                          "edges are integrated exactly.");
+        prm.declare_entry("Intensity",
+                          "1",
+                          Patterns::Anything(),
+                          "f(x, y, tau), muParser; the pressure is "
+                          "Magnitude * f * h(tau).");
+        prm.declare_entry("Time history",
+                          "1",
+                          Patterns::Anything(),
+                          history_doc);
+        prm.leave_subsection();
 
-      prm.enter_subsection(subsection_name("Line load", i));
-      prm.declare_entry("Magnitude",
-                        "0",
-                        Patterns::Double(),
-                        "Force per unit length; 0 switches the load off.");
-      prm.declare_entry("Edge",
-                        "Right",
-                        Patterns::Selection("Left|Right|Bottom|Top"),
-                        "Edge of the full plate that carries the load.");
-      prm.declare_entry("Intensity",
-                        "1",
-                        Patterns::Anything(),
-                        "f(x, y, tau) along the edge, muParser.");
-      prm.declare_entry("Time history", "1", Patterns::Anything(), history_doc);
-      prm.leave_subsection();
-    }
+        prm.enter_subsection(subsection_name("Line load", i));
+        prm.declare_entry("Magnitude",
+                          "0",
+                          Patterns::Double(),
+                          "Force per unit length; 0 switches the load off.");
+        prm.declare_entry("Edge",
+                          "Right",
+                          Patterns::Selection("Left|Right|Bottom|Top"),
+                          "Edge of the full plate that carries the load.");
+        prm.declare_entry("Intensity",
+                          "1",
+                          Patterns::Anything(),
+                          "f(x, y, tau) along the edge, muParser.");
+        prm.declare_entry("Time history",
+                          "1",
+                          Patterns::Anything(),
+                          history_doc);
+        prm.leave_subsection();
+      }
     prm.leave_subsection();
   }
 
@@ -157,49 +166,49 @@ namespace liftoff
        {Kind::line, "Line load"}}};
     for (const auto &[kind, kind_name] : kinds)
       for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
-      {
-        const std::string section = subsection_name(kind_name, i);
-        prm.enter_subsection(section);
-        Load load;
-        load.kind      = kind;
-        load.name      = "Loads/" + section;
-        load.magnitude = prm.get_double("Magnitude");
-        if (load.magnitude != 0.0)
         {
-          load.history_expression = prm.get("Time history");
-          load.history            = make_parser<1>("tau",
-                                        load.history_expression,
-                                        false,
-                                        load.name + "/Time history");
-          if (kind == Kind::point)
-          {
-            const auto xy = Utilities::string_to_double(
-              Utilities::split_string_list(prm.get("Position"), ','));
-            load.position = Point<2>(xy[0], xy[1]);
-          }
-          else
-          {
-            load.intensity_expression = prm.get("Intensity");
-            load.intensity            = make_parser<2>("x,y,tau",
-                                            load.intensity_expression,
-                                            true,
-                                            load.name + "/Intensity");
-            load.intensity_depends_on_time =
-              names_tau(load.intensity_expression);
-            if (kind == Kind::pressure)
-              load.region = prm.get("Region");
-            else
+          const std::string section = subsection_name(kind_name, i);
+          prm.enter_subsection(section);
+          Load load;
+          load.kind      = kind;
+          load.name      = "Loads/" + section;
+          load.magnitude = prm.get_double("Magnitude");
+          if (load.magnitude != 0.0)
             {
-              const std::string edge = prm.get("Edge");
-              for (unsigned int e = 0; e < 4; ++e)
-                if (Discretization::edge_names[e] == edge)
-                  load.edge = e;
+              load.history_expression = prm.get("Time history");
+              load.history            = make_parser<1>("tau",
+                                            load.history_expression,
+                                            false,
+                                            load.name + "/Time history");
+              if (kind == Kind::point)
+                {
+                  const auto xy = Utilities::string_to_double(
+                    Utilities::split_string_list(prm.get("Position"), ','));
+                  load.position = Point<2>(xy[0], xy[1]);
+                }
+              else
+                {
+                  load.intensity_expression = prm.get("Intensity");
+                  load.intensity            = make_parser<2>("x,y,tau",
+                                                  load.intensity_expression,
+                                                  true,
+                                                  load.name + "/Intensity");
+                  load.intensity_depends_on_time =
+                    names_tau(load.intensity_expression);
+                  if (kind == Kind::pressure)
+                    load.region = prm.get("Region");
+                  else
+                    {
+                      const std::string edge = prm.get("Edge");
+                      for (unsigned int e = 0; e < 4; ++e)
+                        if (Discretization::edge_names[e] == edge)
+                          load.edge = e;
+                    }
+                }
+              loads.push_back(std::move(load));
             }
-          }
-          loads.push_back(std::move(load));
+          prm.leave_subsection();
         }
-        prm.leave_subsection();
-      }
     prm.leave_subsection();
   }
 
@@ -219,13 +228,13 @@ namespace liftoff
     AssertThrow(parts.size() == 4, ExcMessage(message));
     std::vector<double> v;
     try
-    {
-      v = Utilities::string_to_double(parts);
-    }
+      {
+        v = Utilities::string_to_double(parts);
+      }
     catch (...)
-    {
-      AssertThrow(false, ExcMessage(message));
-    }
+      {
+        AssertThrow(false, ExcMessage(message));
+      }
     AssertThrow(v[0] < v[1] && v[2] < v[3], ExcMessage(message));
     const BoundingBox<2> box(
       std::make_pair(Point<2>(v[0], v[2]), Point<2>(v[1], v[3])));
@@ -242,34 +251,34 @@ namespace liftoff
   {
     const BoundingBox<2> plate = disc.plate_box();
     for (const auto &load : loads)
-    {
-      if (load.kind == Kind::point)
-        AssertThrow(plate.point_inside(load.position, 1e-12),
-                    ExcMessage(load.name + "/Position = "
-                               + std::to_string(load.position[0]) + ", "
-                               + std::to_string(load.position[1])
-                               + " lies outside the plate [-1/2, 1/2] x "
-                                 "[-mu/2, mu/2]."));
-      if (load.kind == Kind::pressure)
-        region_of(load, plate);
-    }
+      {
+        if (load.kind == Kind::point)
+          AssertThrow(plate.point_inside(load.position, 1e-12),
+                      ExcMessage(load.name + "/Position = "
+                                 + std::to_string(load.position[0]) + ", "
+                                 + std::to_string(load.position[1])
+                                 + " lies outside the plate [-1/2, 1/2] x "
+                                   "[-mu/2, mu/2]."));
+        if (load.kind == Kind::pressure)
+          region_of(load, plate);
+      }
 
     const std::string symmetry =
       (disc.symmetry() == Symmetry::half ? "half" : "quarter");
     for (const unsigned int axis : disc.symmetry_axes())
       for (const auto &load : loads)
-      {
-        bool has_image = false;
-        for (const auto &other : loads)
-          has_image = has_image || is_mirror_image(load, other, axis, plate);
-        AssertThrow(has_image,
-                    ExcMessage(
-                      "Discretization/Symmetry = " + symmetry
-                      + " needs symmetric loads, but " + load.name
-                      + " has no mirror image about the plane "
-                      + (axis == 0 ? "x = 0" : "y = 0")
-                      + ". Add the mirrored load or model the full plate."));
-      }
+        {
+          bool has_image = false;
+          for (const auto &other : loads)
+            has_image = has_image || is_mirror_image(load, other, axis, plate);
+          AssertThrow(has_image,
+                      ExcMessage(
+                        "Discretization/Symmetry = " + symmetry
+                        + " needs symmetric loads, but " + load.name
+                        + " has no mirror image about the plane "
+                        + (axis == 0 ? "x = 0" : "y = 0")
+                        + ". Add the mirrored load or model the full plate."));
+        }
   }
 
 
@@ -290,47 +299,47 @@ namespace liftoff
     // Sample points on which the two intensities must agree.
     std::vector<Point<2>> samples;
     switch (load.kind)
-    {
-    case Kind::point:
-      return (mirrored(load.position, axis) - other.position).norm() < 1e-12;
-    case Kind::pressure:
-    {
-      const BoundingBox<2> a  = region_of(load, plate);
-      const BoundingBox<2> b  = region_of(other, plate);
-      const Point<2>       lo = a.get_boundary_points().first;
-      const Point<2>       hi = a.get_boundary_points().second;
-      // Mirroring swaps the roles of the corners along the axis.
-      Point<2> image_lo = lo, image_hi = hi;
-      image_lo[axis] = -hi[axis];
-      image_hi[axis] = -lo[axis];
-      if ((image_lo - b.get_boundary_points().first).norm() > 1e-12
-          || (image_hi - b.get_boundary_points().second).norm() > 1e-12)
-        return false;
-      for (unsigned int i = 0; i <= 4; ++i)
-        for (unsigned int j = 0; j <= 4; ++j)
-          samples.emplace_back(lo[0] + (hi[0] - lo[0]) * i / 4.0,
-                               lo[1] + (hi[1] - lo[1]) * j / 4.0);
-      break;
-    }
-    case Kind::line:
-    {
-      const bool         edge_normal_to_axis = ((load.edge / 2) == axis);
-      const unsigned int image_edge =
-        edge_normal_to_axis ? (load.edge ^ 1u) : load.edge;
-      if (other.edge != image_edge)
-        return false;
-      const Point<2>     lo    = plate.get_boundary_points().first;
-      const Point<2>     hi    = plate.get_boundary_points().second;
-      const unsigned int along = (load.edge < 2 ? 1 : 0);
-      Point<2>           p     = (load.edge % 2 == 0 ? lo : hi);
-      for (unsigned int i = 0; i <= 8; ++i)
       {
-        p[along] = lo[along] + (hi[along] - lo[along]) * i / 8.0;
-        samples.push_back(p);
+      case Kind::point:
+        return (mirrored(load.position, axis) - other.position).norm() < 1e-12;
+      case Kind::pressure:
+        {
+          const BoundingBox<2> a  = region_of(load, plate);
+          const BoundingBox<2> b  = region_of(other, plate);
+          const Point<2>       lo = a.get_boundary_points().first;
+          const Point<2>       hi = a.get_boundary_points().second;
+          // Mirroring swaps the roles of the corners along the axis.
+          Point<2> image_lo = lo, image_hi = hi;
+          image_lo[axis] = -hi[axis];
+          image_hi[axis] = -lo[axis];
+          if ((image_lo - b.get_boundary_points().first).norm() > 1e-12
+              || (image_hi - b.get_boundary_points().second).norm() > 1e-12)
+            return false;
+          for (unsigned int i = 0; i <= 4; ++i)
+            for (unsigned int j = 0; j <= 4; ++j)
+              samples.emplace_back(lo[0] + (hi[0] - lo[0]) * i / 4.0,
+                                   lo[1] + (hi[1] - lo[1]) * j / 4.0);
+          break;
+        }
+      case Kind::line:
+        {
+          const bool         edge_normal_to_axis = ((load.edge / 2) == axis);
+          const unsigned int image_edge =
+            edge_normal_to_axis ? (load.edge ^ 1u) : load.edge;
+          if (other.edge != image_edge)
+            return false;
+          const Point<2>     lo    = plate.get_boundary_points().first;
+          const Point<2>     hi    = plate.get_boundary_points().second;
+          const unsigned int along = (load.edge < 2 ? 1 : 0);
+          Point<2>           p     = (load.edge % 2 == 0 ? lo : hi);
+          for (unsigned int i = 0; i <= 8; ++i)
+            {
+              p[along] = lo[along] + (hi[along] - lo[along]) * i / 8.0;
+              samples.push_back(p);
+            }
+          break;
+        }
       }
-      break;
-    }
-    }
     for (const auto &p : samples)
       for (const double tau : sample_times)
         if (!nearly_equal(load.intensity_at(p, tau),
@@ -345,25 +354,25 @@ namespace liftoff
   {
     discretization = &disc;
     for (auto &load : loads)
-    {
-      disc.reinit_vector(load.spatial_part);
-      if (load.kind == Kind::pressure || load.kind == Kind::line)
       {
-        if (!load.intensity_depends_on_time)
-          assemble_spatial_part(load, 0.0, load.spatial_part);
-        continue;
+        disc.reinit_vector(load.spatial_part);
+        if (load.kind == Kind::pressure || load.kind == Kind::line)
+          {
+            if (!load.intensity_depends_on_time)
+              assemble_spatial_part(load, 0.0, load.spatial_part);
+            continue;
+          }
+        // Point loads outside the meshed part are represented by their
+        // images inside it.
+        if (!disc.modelled_box().point_inside(load.position, 1e-12))
+          continue;
+        const PointFunctional functional(disc, load.position);
+        functional.add_to(load.spatial_part,
+                          load.magnitude
+                            * disc.share_of_point_load(load.position),
+                          disc.constraints);
+        load.spatial_part.compress(VectorOperation::add);
       }
-      // Point loads outside the meshed part are represented by their
-      // images inside it.
-      if (!disc.modelled_box().point_inside(load.position, 1e-12))
-        continue;
-      const PointFunctional functional(disc, load.position);
-      functional.add_to(load.spatial_part,
-                        load.magnitude
-                          * disc.share_of_point_load(load.position),
-                        disc.constraints);
-      load.spatial_part.compress(VectorOperation::add);
-    }
   }
 
 
@@ -395,42 +404,41 @@ namespace liftoff
                                    : disc.plate_box());
 
     vector               = 0;
-    const auto integrate = [&](const FEValuesBase<2> &values)
-    {
+    const auto integrate = [&](const FEValuesBase<2> &values) {
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
-      {
-        const Point<2> &x = values.quadrature_point(q);
-        if (!region.point_inside(x, 1e-12))
-          continue;
-        const double f =
-          load.magnitude * load.intensity_at(x, tau) * values.JxW(q);
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          cell_rhs(i) += f * values[w].value(i, q);
-      }
+        {
+          const Point<2> &x = values.quadrature_point(q);
+          if (!region.point_inside(x, 1e-12))
+            continue;
+          const double f =
+            load.magnitude * load.intensity_at(x, tau) * values.JxW(q);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            cell_rhs(i) += f * values[w].value(i, q);
+        }
     };
 
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-      {
-        cell_rhs = 0;
-        if (load.kind == Kind::pressure)
         {
-          fe_values.reinit(cell);
-          integrate(fe_values);
-        }
-        else
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary()
-                && cell->face(f)->boundary_id() == load.edge)
+          cell_rhs = 0;
+          if (load.kind == Kind::pressure)
             {
-              fe_face_values.reinit(cell, f);
-              integrate(fe_face_values);
+              fe_values.reinit(cell);
+              integrate(fe_values);
             }
-        cell->get_dof_indices(dof_indices);
-        disc.constraints.distribute_local_to_global(cell_rhs,
-                                                    dof_indices,
-                                                    vector);
-      }
+          else
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary()
+                  && cell->face(f)->boundary_id() == load.edge)
+                {
+                  fe_face_values.reinit(cell, f);
+                  integrate(fe_face_values);
+                }
+          cell->get_dof_indices(dof_indices);
+          disc.constraints.distribute_local_to_global(cell_rhs,
+                                                      dof_indices,
+                                                      vector);
+        }
     vector.compress(VectorOperation::add);
   }
 
@@ -441,18 +449,69 @@ namespace liftoff
     load_vector = 0;
     LA::MPI::Vector scratch;
     for (const auto &load : loads)
-    {
-      const double h = load.history->value(Point<1>(tau));
-      if (load.intensity_depends_on_time)
       {
-        if (scratch.size() == 0)
-          discretization->reinit_vector(scratch);
-        assemble_spatial_part(load, tau, scratch);
-        load_vector.add(h, scratch);
+        const double h = load.history->value(Point<1>(tau));
+        if (load.intensity_depends_on_time)
+          {
+            if (scratch.size() == 0)
+              discretization->reinit_vector(scratch);
+            assemble_spatial_part(load, tau, scratch);
+            load_vector.add(h, scratch);
+          }
+        else
+          load_vector.add(h, load.spatial_part);
       }
-      else
-        load_vector.add(h, load.spatial_part);
-    }
+    if (body_force != nullptr)
+      add_body_force(tau, load_vector);
+  }
+
+
+  void
+  LoadSet::set_body_force(Function<2> *force)
+  {
+    Assert(force == nullptr || force->n_components == 3,
+           ExcDimensionMismatch(force->n_components, 3));
+    body_force = force;
+  }
+
+
+  void
+  LoadSet::add_body_force(const double tau, LA::MPI::Vector &load_vector) const
+  {
+    const Discretization                &disc   = *discretization;
+    const auto                          &fe     = *disc.fe;
+    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+    const QGauss<2>                      quadrature(fe.degree + 2);
+    FEValues<2>                          fe_values(disc.mapping,
+                          fe,
+                          quadrature,
+                          update_values | update_quadrature_points
+                            | update_JxW_values);
+    Vector<double>                       cell_rhs(n_dofs);
+    Vector<double>                       f(3);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+    body_force->set_time(tau);
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_rhs = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              body_force->vector_value(fe_values.quadrature_point(q), f);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  cell_rhs(i) +=
+                    f[c] * fe_values.shape_value(i, q) * fe_values.JxW(q);
+                }
+            }
+          cell->get_dof_indices(dof_indices);
+          disc.constraints.distribute_local_to_global(cell_rhs,
+                                                      dof_indices,
+                                                      load_vector);
+        }
+    load_vector.compress(VectorOperation::add);
   }
 
 

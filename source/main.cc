@@ -11,8 +11,11 @@
 
 namespace
 {
-  const char *usage = "usage: liftoff SCENE.prm   (or: liftoff - to read the "
-                      "scene from standard input)";
+  const char *usage =
+    "usage: liftoff SCENE.prm     run a scene\n"
+    "       liftoff -             read the scene from standard input\n"
+    "       liftoff --parameters  print every parameter with its default "
+    "and documentation";
 
   // Rank 0 reads the scene (from a file or stdin) and all ranks parse the
   // same text, so every rank fails alike on bad input.
@@ -22,16 +25,16 @@ namespace
     std::string text;
     bool        ok = true;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-    {
-      if (name == "-")
-        text.assign(std::istreambuf_iterator<char>(std::cin), {});
-      else
       {
-        std::ifstream in(name);
-        ok = static_cast<bool>(in);
-        text.assign(std::istreambuf_iterator<char>(in), {});
+        if (name == "-")
+          text.assign(std::istreambuf_iterator<char>(std::cin), {});
+        else
+          {
+            std::ifstream in(name);
+            ok = static_cast<bool>(in);
+            text.assign(std::istreambuf_iterator<char>(in), {});
+          }
       }
-    }
     ok   = dealii::Utilities::MPI::broadcast(comm, ok, 0);
     text = dealii::Utilities::MPI::broadcast(comm, text, 0);
     AssertThrow(ok, dealii::ExcMessage("Cannot read the scene file " + name));
@@ -47,39 +50,61 @@ main(int argc, char **argv)
   const MPI_Comm                           comm = MPI_COMM_WORLD;
   const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
+  if (argc == 2 && std::string(argv[1]) == "--parameters")
+    {
+      dealii::ParameterHandler prm;
+      liftoff::Simulator::declare_parameters(prm);
+      if (is_root)
+        prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+      return 0;
+    }
   if (argc != 2)
-  {
-    if (is_root)
-      std::cerr << usage << std::endl;
-    return 2;
-  }
+    {
+      if (is_root)
+        std::cerr << usage << std::endl;
+      return 2;
+    }
 
-  try
+  // Keep the simulator alive until its exception has been caught: its
+  // destructors must not run during stack unwinding under MPI.
+  std::exception_ptr failure;
   {
     dealii::ParameterHandler prm;
-    liftoff::Simulator::declare_parameters(prm);
-    prm.parse_input_from_string(read_scene(argv[1], comm), argv[1]);
+    liftoff::Simulator       simulator(comm);
+    try
+      {
+        liftoff::Simulator::declare_parameters(prm);
+        std::istringstream scene(read_scene(argv[1], comm));
+        prm.parse_input(scene, argv[1]);
+        simulator.parse_parameters(prm);
+        simulator.run(prm);
+      }
+    catch (...)
+      {
+        failure = std::current_exception();
+      }
+  }
+  if (!failure)
+    return 0;
 
-    liftoff::Simulator simulator(comm);
-    simulator.parse_parameters(prm);
-    simulator.run(prm);
-  }
-  catch (const dealii::ExceptionBase &e)
-  {
-    if (is_root)
+  try
     {
-      std::cerr << "liftoff: error in " << argv[1] << ":\n";
-      e.print_info(std::cerr);
-      std::cerr << std::endl;
+      std::rethrow_exception(failure);
     }
-    return 1;
-  }
+  catch (const dealii::ExceptionBase &e)
+    {
+      if (is_root)
+        {
+          std::cerr << "liftoff: error in " << argv[1] << ":\n";
+          e.print_info(std::cerr);
+          std::cerr << std::endl;
+        }
+    }
   catch (const std::exception &e)
-  {
-    if (is_root)
-      std::cerr << "liftoff: error in " << argv[1] << ":\n"
-                << e.what() << std::endl;
-    return 1;
-  }
-  return 0;
+    {
+      if (is_root)
+        std::cerr << "liftoff: error in " << argv[1] << ":\n"
+                  << e.what() << std::endl;
+    }
+  return 1;
 }

@@ -66,70 +66,70 @@ namespace liftoff
 
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-      {
-        cell_stiffness = 0;
-        cell_mass      = 0;
-        fe_values.reinit(cell);
-        shear_values.reinit(cell);
-
-        for (unsigned int q = 0; q < full_rule.size(); ++q)
         {
-          const double dx = fe_values.JxW(q);
-          for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            const Tensor<1, 2> gx_i    = fe_values[psi_x].gradient(i, q);
-            const Tensor<1, 2> gy_i    = fe_values[psi_y].gradient(i, q);
-            const double       twist_i = gx_i[1] + gy_i[0];
-            for (unsigned int j = 0; j < n_dofs; ++j)
-            {
-              const Tensor<1, 2> gx_j    = fe_values[psi_x].gradient(j, q);
-              const Tensor<1, 2> gy_j    = fe_values[psi_y].gradient(j, q);
-              const double       twist_j = gx_j[1] + gy_j[0];
-              cell_stiffness(i, j) +=
-                (gx_i[0] * gx_j[0] + gy_i[1] * gy_j[1]
-                 + nu * (gx_i[0] * gy_j[1] + gy_i[1] * gx_j[0])
-                 + twisting * twist_i * twist_j)
-                * dx;
-              cell_mass(i, j) +=
-                (fe_values[w].value(i, q) * fe_values[w].value(j, q)
-                 + rotary
-                     * (fe_values[psi_x].value(i, q)
-                          * fe_values[psi_x].value(j, q)
-                        + fe_values[psi_y].value(i, q)
-                            * fe_values[psi_y].value(j, q)))
-                * dx;
-            }
-          }
-        }
+          cell_stiffness = 0;
+          cell_mass      = 0;
+          fe_values.reinit(cell);
+          shear_values.reinit(cell);
 
-        for (unsigned int q = 0; q < shear_rule.size(); ++q)
-        {
-          const double dx = shear_values.JxW(q);
-          for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            const Tensor<1, 2> gamma_i =
-              shear_values[w].gradient(i, q)
-              - Tensor<1, 2>({shear_values[psi_x].value(i, q),
-                              shear_values[psi_y].value(i, q)});
-            for (unsigned int j = 0; j < n_dofs; ++j)
+          for (unsigned int q = 0; q < full_rule.size(); ++q)
             {
-              const Tensor<1, 2> gamma_j =
-                shear_values[w].gradient(j, q)
-                - Tensor<1, 2>({shear_values[psi_x].value(j, q),
-                                shear_values[psi_y].value(j, q)});
-              cell_stiffness(i, j) += shear * gamma_i * gamma_j * dx;
+              const double dx = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const Tensor<1, 2> gx_i    = fe_values[psi_x].gradient(i, q);
+                  const Tensor<1, 2> gy_i    = fe_values[psi_y].gradient(i, q);
+                  const double       twist_i = gx_i[1] + gy_i[0];
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    {
+                      const Tensor<1, 2> gx_j = fe_values[psi_x].gradient(j, q);
+                      const Tensor<1, 2> gy_j = fe_values[psi_y].gradient(j, q);
+                      const double       twist_j = gx_j[1] + gy_j[0];
+                      cell_stiffness(i, j) +=
+                        (gx_i[0] * gx_j[0] + gy_i[1] * gy_j[1]
+                         + nu * (gx_i[0] * gy_j[1] + gy_i[1] * gx_j[0])
+                         + twisting * twist_i * twist_j)
+                        * dx;
+                      cell_mass(i, j) +=
+                        (fe_values[w].value(i, q) * fe_values[w].value(j, q)
+                         + rotary
+                             * (fe_values[psi_x].value(i, q)
+                                  * fe_values[psi_x].value(j, q)
+                                + fe_values[psi_y].value(i, q)
+                                    * fe_values[psi_y].value(j, q)))
+                        * dx;
+                    }
+                }
             }
-          }
-        }
 
-        cell->get_dof_indices(dof_indices);
-        disc.constraints.distribute_local_to_global(cell_stiffness,
-                                                    dof_indices,
-                                                    stiffness);
-        disc.constraints.distribute_local_to_global(cell_mass,
-                                                    dof_indices,
-                                                    mass);
-      }
+          for (unsigned int q = 0; q < shear_rule.size(); ++q)
+            {
+              const double dx = shear_values.JxW(q);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const Tensor<1, 2> gamma_i =
+                    shear_values[w].gradient(i, q)
+                    - Tensor<1, 2>({shear_values[psi_x].value(i, q),
+                                    shear_values[psi_y].value(i, q)});
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    {
+                      const Tensor<1, 2> gamma_j =
+                        shear_values[w].gradient(j, q)
+                        - Tensor<1, 2>({shear_values[psi_x].value(j, q),
+                                        shear_values[psi_y].value(j, q)});
+                      cell_stiffness(i, j) += shear * gamma_i * gamma_j * dx;
+                    }
+                }
+            }
+
+          cell->get_dof_indices(dof_indices);
+          disc.constraints.distribute_local_to_global(cell_stiffness,
+                                                      dof_indices,
+                                                      stiffness);
+          disc.constraints.distribute_local_to_global(cell_mass,
+                                                      dof_indices,
+                                                      mass);
+        }
     stiffness.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);
   }

@@ -20,19 +20,19 @@ namespace liftoff
     bool                                         is_found = false;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-      {
-        if (!cell->bounding_box().point_inside(point, 1e-10))
-          continue;
-        const Point<2> candidate =
-          discretization.mapping.transform_real_to_unit_cell(cell, point);
-        if (GeometryInfo<2>::is_inside_unit_cell(candidate, 1e-10))
         {
-          found      = cell;
-          unit_point = GeometryInfo<2>::project_to_unit_cell(candidate);
-          is_found   = true;
-          break;
+          if (!cell->bounding_box().point_inside(point, 1e-10))
+            continue;
+          const Point<2> candidate =
+            discretization.mapping.transform_real_to_unit_cell(cell, point);
+          if (GeometryInfo<2>::is_inside_unit_cell(candidate, 1e-10))
+            {
+              found      = cell;
+              unit_point = GeometryInfo<2>::project_to_unit_cell(candidate);
+              is_found   = true;
+              break;
+            }
         }
-      }
 
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);

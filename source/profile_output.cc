@@ -114,11 +114,11 @@ namespace liftoff
       return;
     file << std::setprecision(12);
     for (unsigned int i = 0; i < n_points; ++i)
-    {
-      const Point<2> p = point(i);
-      file << tau << ',' << p.distance(start) << ',' << p[0] << ',' << p[1]
-           << ',' << w[i] << '\n';
-    }
+      {
+        const Point<2> p = point(i);
+        file << tau << ',' << p.distance(start) << ',' << p[0] << ',' << p[1]
+             << ',' << w[i] << '\n';
+      }
     file << std::flush;
   }
 } // namespace liftoff

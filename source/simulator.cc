@@ -8,18 +8,30 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
 
 namespace liftoff
 {
-  Simulator::Simulator(const MPI_Comm comm)
+  namespace
+  {
+    std::string
+    format_time(const double tau)
+    {
+      std::ostringstream text;
+      text << std::setprecision(8) << tau;
+      return text.str();
+    }
+  } // namespace
+
+  Simulator::Simulator(const MPI_Comm comm, const bool verbose)
       : mpi_communicator(comm)
-      , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+      , pcout(std::cout, verbose && Utilities::MPI::this_mpi_process(comm) == 0)
       , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , discretization(comm)
       , active_set(discretization, foundation, linear_solver, timer)
-  {
-  }
+  {}
 
 
   void
@@ -99,24 +111,24 @@ namespace liftoff
     for (const auto &[name, text] :
          {std::make_pair("Displacement", initial_displacement),
           std::make_pair("Velocity", initial_velocity)})
-    {
-      try
       {
-        FunctionParser<2> f(3);
-        f.initialize("x,y", text, {{"pi", M_PI}});
-        Vector<double> values(3);
-        f.vector_value(Point<2>(), values);
+        try
+          {
+            FunctionParser<2> f(3);
+            f.initialize("x,y", text, {{"pi", M_PI}});
+            Vector<double> values(3);
+            f.vector_value(Point<2>(), values);
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(std::string("Initial conditions/") + name
+                                   + " = <" + text
+                                   + "> must be three muParser expressions in "
+                                     "x, y separated by ';': "
+                                   + e.what()));
+          }
       }
-      catch (const std::exception &e)
-      {
-        AssertThrow(false,
-                    ExcMessage(std::string("Initial conditions/") + name
-                               + " = <" + text
-                               + "> must be three muParser expressions in "
-                                 "x, y separated by ';': "
-                               + e.what()));
-      }
-    }
 
     if (analysis == Analysis::static_analysis)
       AssertThrow(discretization.has_kinematic_support()
@@ -175,15 +187,15 @@ namespace liftoff
     discretization.reinit_ghosted_vector(ghosted_u);
     discretization.reinit_ghosted_vector(ghosted_v);
     if (writes_files())
-    {
-      time_history.setup(discretization, output_directory);
-      profile_output.setup(discretization, output_directory);
-    }
+      {
+        time_history.setup(discretization, output_directory);
+        profile_output.setup(discretization, output_directory);
+      }
     else
-    {
-      time_history.setup(discretization, "");
-      profile_output.setup(discretization, "");
-    }
+      {
+        time_history.setup(discretization, "");
+        profile_output.setup(discretization, "");
+      }
   }
 
 
@@ -199,17 +211,17 @@ namespace liftoff
           << std::endl;
     setup();
     try
-    {
-      if (analysis == Analysis::static_analysis)
-        run_static();
-      else
-        run_dynamic();
-    }
+      {
+        if (analysis == Analysis::static_analysis)
+          run_static();
+        else
+          run_dynamic();
+      }
     catch (...)
-    {
-      write_summary("failed");
-      throw;
-    }
+      {
+        write_summary("failed");
+        throw;
+      }
     write_summary("completed");
   }
 
@@ -219,15 +231,15 @@ namespace liftoff
   {
     for (auto &[text, vector] : {std::make_pair(initial_displacement, &u),
                                  std::make_pair(initial_velocity, &v)})
-    {
-      FunctionParser<2> f(3);
-      f.initialize("x,y", text, {{"pi", M_PI}});
-      VectorTools::interpolate(discretization.mapping,
-                               discretization.dof_handler,
-                               f,
-                               *vector);
-      discretization.constraints.distribute(*vector);
-    }
+      {
+        FunctionParser<2> f(3);
+        f.initialize("x,y", text, {{"pi", M_PI}});
+        VectorTools::interpolate(discretization.mapping,
+                                 discretization.dof_handler,
+                                 f,
+                                 *vector);
+        discretization.constraints.distribute(*vector);
+      }
     ghosted_u = u;
     ghosted_v = v;
   }
@@ -239,14 +251,14 @@ namespace liftoff
     EnergyBalance e;
     const double  copies = discretization.n_symmetry_copies();
     if (time_history.wants_energies())
-    {
-      LA::MPI::Vector product(u);
-      matrices.mass.vmult(product, v);
-      e.kinetic = 0.5 * copies * (v * product);
-      matrices.stiffness.vmult(product, u);
-      e.strain     = 0.5 * copies * (u * product);
-      e.foundation = copies * foundation.energy(ghosted_u);
-    }
+      {
+        LA::MPI::Vector product(u);
+        matrices.mass.vmult(product, v);
+        e.kinetic = 0.5 * copies * (v * product);
+        matrices.stiffness.vmult(product, u);
+        e.strain     = 0.5 * copies * (u * product);
+        e.foundation = copies * foundation.energy(ghosted_u);
+      }
     e.work = work;
     return e;
   }
@@ -292,7 +304,10 @@ namespace liftoff
                            + " iterations (Active set/Maximum iterations)."));
     const EnergyBalance none;
     EnergyBalance       e = energies(0.0);
-    e.work                = discretization.n_symmetry_copies() * (load * u);
+    // Loads applied proportionally: the response is positively homogeneous
+    // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
+    // lift-off, and the balance column checks it.
+    e.work = 0.5 * discretization.n_symmetry_copies() * (load * u);
     record_step(0.0, result.iterations, e, none);
     profile_output.write_if_due(0.0, 0.0, ghosted_u);
     if (writes_files() && field_output.is_due(0, true))
@@ -361,50 +376,50 @@ namespace liftoff
                          0);
 
     for (unsigned int step = 1; step <= n_steps; ++step)
-    {
-      const double tau = step * dt;
       {
-        TimerOutput::Scope t(timer, "right hand side");
-        loads.assemble(tau, next_load);
-        newmark.history_term(u, v, a, history_term);
-        matrices.mass.vmult(rhs, history_term);
-        rhs += next_load;
+        const double tau = step * dt;
+        {
+          TimerOutput::Scope t(timer, "right hand side");
+          loads.assemble(tau, next_load);
+          newmark.history_term(u, v, a, history_term);
+          matrices.mass.vmult(rhs, history_term);
+          rhs += next_load;
+        }
+        u_new             = u;
+        const auto result = active_set.solve(rhs, u_new, ghosted_u);
+        AssertThrow(result.converged,
+                    ExcMessage("The active set did not settle in "
+                               + std::to_string(active_set.max_iterations)
+                               + " iterations at step " + std::to_string(step)
+                               + " (tau = " + format_time(tau)
+                               + "); raise Active set/Maximum iterations or "
+                                 "reduce Time integration/Time step."));
+
+        // Trapezoidal work of the loads, exact for Newmark's average
+        // acceleration rule on linear problems.
+        LA::MPI::Vector increment(u_new);
+        increment -= u;
+        load += next_load;
+        work += 0.5 * copies * (increment * load);
+        load = next_load;
+
+        newmark.advance(u_new, u, v, a);
+        ghosted_v = v;
+
+        record_step(tau, result.iterations, energies(work), initial);
+        profile_output.write_if_due(tau, dt, ghosted_u);
+        if (writes_files() && field_output.is_due(step, step == n_steps))
+          {
+            TimerOutput::Scope t(timer, "output");
+            field_output.write(output_directory,
+                               discretization,
+                               foundation,
+                               ghosted_u,
+                               ghosted_v,
+                               tau,
+                               step);
+          }
       }
-      u_new             = u;
-      const auto result = active_set.solve(rhs, u_new, ghosted_u);
-      AssertThrow(result.converged,
-                  ExcMessage("The active set did not settle in "
-                             + std::to_string(active_set.max_iterations)
-                             + " iterations at step " + std::to_string(step)
-                             + " (tau = " + std::to_string(tau)
-                             + "); raise Active set/Maximum iterations or "
-                               "reduce Time integration/Time step."));
-
-      // Trapezoidal work of the loads, exact for Newmark's average
-      // acceleration rule on linear problems.
-      LA::MPI::Vector increment(u_new);
-      increment -= u;
-      load += next_load;
-      work += 0.5 * copies * (increment * load);
-      load = next_load;
-
-      newmark.advance(u_new, u, v, a);
-      ghosted_v = v;
-
-      record_step(tau, result.iterations, energies(work), initial);
-      profile_output.write_if_due(tau, dt, ghosted_u);
-      if (writes_files() && field_output.is_due(step, step == n_steps))
-      {
-        TimerOutput::Scope t(timer, "output");
-        field_output.write(output_directory,
-                           discretization,
-                           foundation,
-                           ghosted_u,
-                           ghosted_v,
-                           tau,
-                           step);
-      }
-    }
   }
 
 
@@ -414,11 +429,11 @@ namespace liftoff
     unsigned int total = 0, largest = 0, n = 0;
     for (const auto &r : records)
       if (r.iterations > 0)
-      {
-        total += r.iterations;
-        largest = std::max(largest, r.iterations);
-        ++n;
-      }
+        {
+          total += r.iterations;
+          largest = std::max(largest, r.iterations);
+          ++n;
+        }
     std::ostringstream text;
     text << "status: " << status << '\n'
          << "analysis: "
@@ -447,6 +462,13 @@ namespace liftoff
         && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       write_file_atomically(output_directory + "/summary.txt",
                             [&](std::ostream &out) { out << text.str(); });
+  }
+
+
+  void
+  Simulator::set_body_force(Function<2> *force)
+  {
+    loads.set_body_force(force);
   }
 
 

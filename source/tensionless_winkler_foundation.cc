@@ -67,15 +67,15 @@ namespace liftoff
     jxw.clear();
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-      {
-        fe_values.reinit(cell);
-        cell->get_dof_indices(dofs);
-        for (const unsigned int i : w_dofs)
-          cell_w_dof_indices.push_back(dofs[i]);
-        for (unsigned int q = 0; q < n_q_points; ++q)
-          jxw.push_back(fe_values.JxW(q));
-        cell_index.push_back(cell->active_cell_index());
-      }
+        {
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          for (const unsigned int i : w_dofs)
+            cell_w_dof_indices.push_back(dofs[i]);
+          for (unsigned int q = 0; q < n_q_points; ++q)
+            jxw.push_back(fe_values.JxW(q));
+          cell_index.push_back(cell->active_cell_index());
+        }
     in_contact.assign(jxw.size(), model == Model::none ? 0 : 1);
   }
 
@@ -98,11 +98,11 @@ namespace liftoff
     const unsigned int n_w = w_dofs.size();
     w.assign(n_q_points, 0.0);
     for (unsigned int k = 0; k < n_w; ++k)
-    {
-      const double u_k = u(cell_w_dof_indices[c * n_w + k]);
-      for (unsigned int q = 0; q < n_q_points; ++q)
-        w[q] += shape_values(q, k) * u_k;
-    }
+      {
+        const double u_k = u(cell_w_dof_indices[c * n_w + k]);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          w[q] += shape_values(q, k) * u_k;
+      }
   }
 
 
@@ -111,20 +111,20 @@ namespace liftoff
   {
     unsigned long n_changed = 0;
     if (model == Model::tensionless)
-    {
-      std::vector<double> w;
-      for (unsigned int c = 0; c < cell_index.size(); ++c)
       {
-        deflection_at_gauss_points(u, c, w);
-        for (unsigned int q = 0; q < n_q_points; ++q)
-        {
-          const unsigned char now    = (w[q] > 0.0 ? 1 : 0);
-          unsigned char      &status = in_contact[c * n_q_points + q];
-          n_changed += (now != status);
-          status = now;
-        }
+        std::vector<double> w;
+        for (unsigned int c = 0; c < cell_index.size(); ++c)
+          {
+            deflection_at_gauss_points(u, c, w);
+            for (unsigned int q = 0; q < n_q_points; ++q)
+              {
+                const unsigned char now    = (w[q] > 0.0 ? 1 : 0);
+                unsigned char      &status = in_contact[c * n_q_points + q];
+                n_changed += (now != status);
+                status = now;
+              }
+          }
       }
-    }
     return Utilities::MPI::sum(n_changed, discretization->mpi_communicator);
   }
 
@@ -139,28 +139,28 @@ namespace liftoff
     std::vector<types::global_dof_index> dofs(n_w);
     if (model != Model::none)
       for (unsigned int c = 0; c < cell_index.size(); ++c)
-      {
-        cell_matrix = 0;
-        bool any    = false;
-        for (unsigned int q = 0; q < n_q_points; ++q)
-          if (in_contact[c * n_q_points + q])
-          {
-            any            = true;
-            const double k = stiffness * jxw[c * n_q_points + q];
-            for (unsigned int i = 0; i < n_w; ++i)
-              for (unsigned int j = 0; j < n_w; ++j)
-                cell_matrix(i, j) +=
-                  k * shape_values(q, i) * shape_values(q, j);
-          }
-        if (!any)
-          continue;
-        std::copy(cell_w_dof_indices.begin() + c * n_w,
-                  cell_w_dof_indices.begin() + (c + 1) * n_w,
-                  dofs.begin());
-        discretization->constraints.distribute_local_to_global(cell_matrix,
-                                                               dofs,
-                                                               matrix);
-      }
+        {
+          cell_matrix = 0;
+          bool any    = false;
+          for (unsigned int q = 0; q < n_q_points; ++q)
+            if (in_contact[c * n_q_points + q])
+              {
+                any            = true;
+                const double k = stiffness * jxw[c * n_q_points + q];
+                for (unsigned int i = 0; i < n_w; ++i)
+                  for (unsigned int j = 0; j < n_w; ++j)
+                    cell_matrix(i, j) +=
+                      k * shape_values(q, i) * shape_values(q, j);
+              }
+          if (!any)
+            continue;
+          std::copy(cell_w_dof_indices.begin() + c * n_w,
+                    cell_w_dof_indices.begin() + (c + 1) * n_w,
+                    dofs.begin());
+          discretization->constraints.distribute_local_to_global(cell_matrix,
+                                                                 dofs,
+                                                                 matrix);
+        }
     matrix.compress(VectorOperation::add);
   }
 
@@ -172,16 +172,16 @@ namespace liftoff
     std::vector<double> w;
     if (model != Model::none)
       for (unsigned int c = 0; c < cell_index.size(); ++c)
-      {
-        deflection_at_gauss_points(u, c, w);
-        for (unsigned int q = 0; q < n_q_points; ++q)
         {
-          const double compression =
-            (model == Model::bilateral ? w[q] : std::max(w[q], 0.0));
-          local += 0.5 * stiffness * compression * compression
-                   * jxw[c * n_q_points + q];
+          deflection_at_gauss_points(u, c, w);
+          for (unsigned int q = 0; q < n_q_points; ++q)
+            {
+              const double compression =
+                (model == Model::bilateral ? w[q] : std::max(w[q], 0.0));
+              local += 0.5 * stiffness * compression * compression
+                       * jxw[c * n_q_points + q];
+            }
         }
-      }
     return Utilities::MPI::sum(local, discretization->mpi_communicator);
   }
 
@@ -191,10 +191,10 @@ namespace liftoff
   {
     double in_contact_area = 0, area = 0;
     for (unsigned int i = 0; i < jxw.size(); ++i)
-    {
-      area += jxw[i];
-      in_contact_area += in_contact[i] * jxw[i];
-    }
+      {
+        area += jxw[i];
+        in_contact_area += in_contact[i] * jxw[i];
+      }
     const MPI_Comm comm = discretization->mpi_communicator;
     return Utilities::MPI::sum(in_contact_area, comm)
            / Utilities::MPI::sum(area, comm);
@@ -206,15 +206,15 @@ namespace liftoff
   {
     Vector<float> fraction(discretization->triangulation.n_active_cells());
     for (unsigned int c = 0; c < cell_index.size(); ++c)
-    {
-      double sum = 0, area = 0;
-      for (unsigned int q = 0; q < n_q_points; ++q)
       {
-        area += jxw[c * n_q_points + q];
-        sum += in_contact[c * n_q_points + q] * jxw[c * n_q_points + q];
+        double sum = 0, area = 0;
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            area += jxw[c * n_q_points + q];
+            sum += in_contact[c * n_q_points + q] * jxw[c * n_q_points + q];
+          }
+        fraction[cell_index[c]] = sum / area;
       }
-      fraction[cell_index[c]] = sum / area;
-    }
     return fraction;
   }
 } // namespace liftoff

@@ -13,11 +13,11 @@ namespace liftoff
     {
       std::vector<Point<2>> points;
       for (const auto &entry : Utilities::split_string_list(text, ';'))
-      {
-        const auto xy =
-          Utilities::string_to_double(Utilities::split_string_list(entry, ','));
-        points.emplace_back(xy[0], xy[1]);
-      }
+        {
+          const auto xy = Utilities::string_to_double(
+            Utilities::split_string_list(entry, ','));
+          points.emplace_back(xy[0], xy[1]);
+        }
       return points;
     }
   } // namespace

@@ -55,6 +55,13 @@ namespace liftoff
     unsigned int
     n_loads() const;
 
+    /// A distributed force on all three equations (force on w, moments on
+    /// psi_x and psi_y), f(x, y) with time set by set_time(tau); it is
+    /// integrated at every step. Not part of a scene: manufactured-solution
+    /// tests use it. Pass nullptr to remove it.
+    void
+    set_body_force(Function<2> *force);
+
   private:
     enum class Kind
     {
@@ -84,6 +91,10 @@ namespace liftoff
 
     std::vector<Load>     loads;
     const Discretization *discretization = nullptr;
+    Function<2>          *body_force     = nullptr;
+
+    void
+    add_body_force(const double tau, LA::MPI::Vector &load_vector) const;
 
     /// Rectangle of a pressure, in full plate coordinates.
     static BoundingBox<2>

@@ -44,7 +44,8 @@ namespace liftoff
       EnergyBalance       energies;
     };
 
-    explicit Simulator(const MPI_Comm comm);
+    /// With verbose = false nothing is printed (tests).
+    explicit Simulator(const MPI_Comm comm, const bool verbose = true);
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -56,6 +57,10 @@ namespace liftoff
     /// Run the scene. `prm` is only used to record the parameters used.
     void
     run(const ParameterHandler &prm);
+
+    /// See LoadSet::set_body_force(); for manufactured solutions.
+    void
+    set_body_force(Function<2> *force);
 
     /// Deflection at a point of the full plate (collective).
     double

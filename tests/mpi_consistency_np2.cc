@@ -1,0 +1,64 @@
+// The same scene on two ranks (MPI_COMM_WORLD) and on one (MPI_COMM_SELF of
+// rank 0) must give the same history to 1e-10: the distributed mesh, the
+// ownership of point loads and probes on partition boundaries, the contact
+// status and the energies may not depend on the partition.
+
+#include <deal.II/base/mpi.h>
+
+#include "symmetric_scene.h"
+#include "test_tools.h"
+
+#include <cmath>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  liftoff_tests::Checks                    checks;
+  const unsigned int                       rank =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
+              dealii::ExcMessage("Run this test on two ranks."));
+
+  const std::string scene    = liftoff_tests::symmetric_scene("full", 10, 8);
+  const auto        parallel = liftoff_tests::run_scene(scene);
+  if (rank == 0)
+    {
+      const auto serial =
+        liftoff_tests::run_scene(scene, nullptr, MPI_COMM_SELF);
+      double       difference = 0, scale = 0, energy_difference = 0;
+      unsigned int iteration_mismatches = 0;
+      for (unsigned int n = 0; n < serial->history().size(); ++n)
+        {
+          const auto &a = serial->history()[n], &b = parallel->history()[n];
+          for (unsigned int k = 0; k < a.probe_w.size(); ++k)
+            {
+              difference =
+                std::max(difference, std::abs(a.probe_w[k] - b.probe_w[k]));
+              scale = std::max(scale, std::abs(a.probe_w[k]));
+            }
+          difference =
+            std::max(difference,
+                     std::abs(a.contact_fraction - b.contact_fraction));
+          energy_difference =
+            std::max({energy_difference,
+                      std::abs(a.energies.kinetic - b.energies.kinetic),
+                      std::abs(a.energies.strain - b.energies.strain),
+                      std::abs(a.energies.foundation - b.energies.foundation),
+                      std::abs(a.energies.work - b.energies.work)});
+          iteration_mismatches += (a.iterations != b.iterations);
+        }
+      checks.less("1 vs 2 ranks: probes and contact fraction (relative)",
+                  difference / scale,
+                  1e-10);
+      checks.less("1 vs 2 ranks: energies and work (relative to final work)",
+                  energy_difference
+                    / std::abs(serial->history().back().energies.work),
+                  1e-10);
+      checks.less("1 vs 2 ranks: steps with a different iteration count",
+                  iteration_mismatches,
+                  0.5);
+    }
+  const int code = checks.exit_code();
+  return dealii::Utilities::MPI::max(code, MPI_COMM_WORLD);
+}

@@ -1,0 +1,110 @@
+// A free plate on a bilateral foundation under a suddenly applied uniform
+// pressure q moves as a rigid body: M w'' + Gamma w = q with unit mass, so
+// w(tau) = (q / Gamma) (1 - cos(sqrt(Gamma) tau)). The rigid translation lies
+// in every finite element space, so the only error is Newmark's: the average
+// acceleration rule keeps the amplitude and turns the frequency omega into
+// omega_h = (2 / dt) atan(omega dt / 2). Checks:
+//  - the computed deflection equals the discrete closed form to round-off,
+//    everywhere on the plate, for p = 1 and 2;
+//  - against the exact oscillator the error falls with order 2 in dt.
+
+#include "test_tools.h"
+
+#include <cmath>
+
+namespace
+{
+  constexpr double gamma_f = 10.0, q = 1.0;
+
+  std::string
+  scene(const unsigned int p, const double dt)
+  {
+    return R"(
+subsection Plate
+  set Aspect ratio = 0.8
+  set Thickness ratio = 0.1
+end
+subsection Foundation
+  set Model = bilateral
+  set Stiffness = )"
+           + std::to_string(gamma_f) + R"(
+end
+subsection Discretization
+  set Cells along x = 4
+  set Cells along y = 3
+  set Polynomial degree = )"
+           + std::to_string(p) + R"(
+end
+subsection Loads
+  subsection Pressure 1
+    set Magnitude = )"
+           + std::to_string(q) + R"(
+  end
+end
+subsection Time integration
+  set Time step = )"
+           + std::to_string(dt) + R"(
+  set End time = 3
+end
+subsection Output
+  set Probe points = 0, 0; 0.5, 0.4; -0.31, 0.17
+end
+)";
+  }
+
+  /// Largest deviation of the probe histories from w(tau) over all steps.
+  template <typename Reference>
+  double
+  max_error(const liftoff::Simulator &simulator, const Reference &w)
+  {
+    double error = 0;
+    for (const auto &row : simulator.history())
+      for (const double value : row.probe_w)
+        error = std::max(error, std::abs(value - w(row.tau)));
+    return error / (q / gamma_f);
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  liftoff_tests::Checks                    checks;
+  const double                             omega = std::sqrt(gamma_f);
+  const auto                               exact = [&](const double tau) {
+    return q / gamma_f * (1 - std::cos(omega * tau));
+  };
+
+  for (const unsigned int p : {1u, 2u})
+    {
+      const double dt        = 0.02;
+      const auto   simulator = liftoff_tests::run_scene(scene(p, dt));
+      const double omega_h   = 2.0 / dt * std::atan(omega * dt / 2.0);
+      checks.less("p = " + std::to_string(p)
+                    + ": max |w - discrete Newmark solution| / (q/Gamma)",
+                  max_error(*simulator,
+                            [&](const double tau) {
+                              return q / gamma_f
+                                     * (1 - std::cos(omega_h * tau));
+                            }),
+                  1e-9);
+    }
+
+  double previous = 0;
+  for (const double dt : {0.02, 0.01, 0.005})
+    {
+      const double error =
+        max_error(*liftoff_tests::run_scene(scene(1, dt)), exact);
+      std::cout << "dt = " << dt
+                << ": max |w - exact oscillator| / (q/Gamma) = " << error
+                << std::endl;
+      if (previous > 0)
+        checks.within("observed order in dt",
+                      liftoff_tests::observed_order(previous, error),
+                      1.9,
+                      2.1);
+      previous = error;
+    }
+  return checks.exit_code();
+}

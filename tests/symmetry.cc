@@ -1,0 +1,101 @@
+// Quarter, half and full models of a scene that is symmetric about x = 0 and
+// y = 0 must give the same histories (to solver tolerance) at the same
+// element size; in the full model, mirrored probes must agree with each
+// other. This checks the symmetry planes (normal rotation zero), the shares
+// of loads on the planes, the mapping of probes into the meshed part and the
+// factors on the energies.
+
+#include "symmetric_scene.h"
+#include "test_tools.h"
+
+#include <cmath>
+
+namespace
+{
+  /// max over steps and probes of |a - b|, over the largest |w| of a.
+  double
+  history_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
+  {
+    double      difference = 0, scale = 0;
+    const auto &ha = a.history(), &hb = b.history();
+    AssertThrow(ha.size() == hb.size(), dealii::ExcInternalError());
+    for (unsigned int n = 0; n < ha.size(); ++n)
+      for (unsigned int k = 0; k < ha[n].probe_w.size(); ++k)
+        {
+          difference =
+            std::max(difference, std::abs(ha[n].probe_w[k] - hb[n].probe_w[k]));
+          scale = std::max(scale, std::abs(ha[n].probe_w[k]));
+        }
+    return difference / scale;
+  }
+
+  double
+  energy_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
+  {
+    double difference = 0, scale = 0;
+    for (unsigned int n = 0; n < a.history().size(); ++n)
+      {
+        const auto &ea = a.history()[n].energies, &eb = b.history()[n].energies;
+        difference = std::max({difference,
+                               std::abs(ea.kinetic - eb.kinetic),
+                               std::abs(ea.strain - eb.strain),
+                               std::abs(ea.foundation - eb.foundation),
+                               std::abs(ea.work - eb.work)});
+        scale      = std::max(scale, std::abs(ea.work));
+      }
+    return difference / scale;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  liftoff_tests::Checks                    checks;
+  using liftoff_tests::run_scene;
+  using liftoff_tests::symmetric_scene;
+
+  const auto full    = run_scene(symmetric_scene("full", 10, 8));
+  const auto half    = run_scene(symmetric_scene("half", 5, 8));
+  const auto quarter = run_scene(symmetric_scene("quarter", 5, 4));
+
+  double min_contact = 1;
+  for (const auto &row : full->history())
+    min_contact = std::min(min_contact, row.contact_fraction);
+  checks.less("the scene lifts off (smallest contact fraction)",
+              min_contact,
+              0.95);
+
+  checks.less("half vs full: probe histories",
+              history_difference(*half, *full),
+              1e-9);
+  checks.less("quarter vs full: probe histories",
+              history_difference(*quarter, *full),
+              1e-9);
+  checks.less("quarter vs full: energies and work",
+              energy_difference(*quarter, *full),
+              1e-9);
+
+  double contact_difference = 0;
+  for (unsigned int n = 0; n < full->history().size(); ++n)
+    contact_difference =
+      std::max(contact_difference,
+               std::abs(full->history()[n].contact_fraction
+                        - quarter->history()[n].contact_fraction));
+  checks.less("quarter vs full: contact fraction", contact_difference, 1e-12);
+
+  // Probes 1-4 are (+-0.3, +-0.2): mirror images of each other.
+  double mirror_difference = 0, scale = 0;
+  for (const auto &row : full->history())
+    for (unsigned int k = 2; k <= 4; ++k)
+      {
+        mirror_difference = std::max(mirror_difference,
+                                     std::abs(row.probe_w[k] - row.probe_w[1]));
+        scale             = std::max(scale, std::abs(row.probe_w[1]));
+      }
+  checks.less("full model: mirrored probes agree",
+              mirror_difference / scale,
+              1e-9);
+  return checks.exit_code();
+}

@@ -1,0 +1,111 @@
+#pragma once
+
+// Helpers shared by the test programs: run a scene given as prm text through
+// the same Simulator the executable uses, and report checks as lines
+// "PASS/FAIL <what>: <value> (limit <limit>)" with a non-zero exit on failure.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/simulator.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace liftoff_tests
+{
+  using namespace dealii;
+
+  /// Parse the scene (parameters it does not set keep their defaults; no
+  /// output files unless it sets Output/Directory) and run it.
+  inline std::unique_ptr<liftoff::Simulator>
+  run_scene(const std::string &scene,
+            Function<2>       *body_force = nullptr,
+            const MPI_Comm     comm       = MPI_COMM_WORLD)
+  {
+    ParameterHandler prm;
+    liftoff::Simulator::declare_parameters(prm);
+    std::istringstream text("subsection Output\n  set Directory =\n"
+                            "  set VTU interval = 0\nend\n"
+                            + scene);
+    prm.parse_input(text, "test scene");
+    auto simulator =
+      std::make_unique<liftoff::Simulator>(comm, /*verbose*/ false);
+    simulator->parse_parameters(prm);
+    simulator->set_body_force(body_force);
+    simulator->run(prm);
+    return simulator;
+  }
+
+  class Checks
+  {
+  public:
+    /// Pass if value < limit (NaN fails).
+    void
+    less(const std::string &what, const double value, const double limit)
+    {
+      const bool ok = (value < limit);
+      report(ok, what, value, "<", limit);
+    }
+
+    /// Pass if lower <= value <= upper.
+    void
+    within(const std::string &what,
+           const double       value,
+           const double       lower,
+           const double       upper)
+    {
+      const bool ok = (value >= lower && value <= upper);
+      if (is_root())
+        std::cout << (ok ? "PASS " : "FAIL ") << what << ": "
+                  << std::setprecision(4) << value << " (in [" << lower << ", "
+                  << upper << "])" << std::endl;
+      failures += !ok;
+    }
+
+    int
+    exit_code() const
+    {
+      if (is_root())
+        std::cout << (failures == 0
+                        ? "all checks passed"
+                        : std::to_string(failures) + " check(s) failed")
+                  << std::endl;
+      return failures == 0 ? 0 : 1;
+    }
+
+  private:
+    int failures = 0;
+
+    static bool
+    is_root()
+    {
+      return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    }
+
+    void
+    report(const bool         ok,
+           const std::string &what,
+           const double       value,
+           const char        *relation,
+           const double       limit)
+    {
+      if (is_root())
+        std::cout << (ok ? "PASS " : "FAIL ") << what << ": "
+                  << std::setprecision(4) << value << " (" << relation << ' '
+                  << limit << ")" << std::endl;
+      failures += !ok;
+    }
+  };
+
+  /// Observed order of convergence between two errors at ratio h1/h2 = 2.
+  inline double
+  observed_order(const double coarse_error, const double fine_error)
+  {
+    return std::log2(coarse_error / fine_error);
+  }
+} // namespace liftoff_tests
