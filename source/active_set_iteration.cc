@@ -14,6 +14,7 @@ namespace liftoff
                       "Iterations of eq. (3.9) per step before the run stops "
                       "with an error naming the step.");
     prm.leave_subsection();
+    LinearSolver::declare_parameters(prm);
   }
 
 
@@ -23,17 +24,23 @@ namespace liftoff
     prm.enter_subsection("Active set");
     max_iterations = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
+    solver.parse_parameters(prm);
+  }
+
+
+  unsigned int
+  ActiveSetIteration::n_factorisations() const
+  {
+    return solver.n_preparations;
   }
 
 
   ActiveSetIteration::ActiveSetIteration(
     const Discretization         &discretization,
     TensionlessWinklerFoundation &foundation,
-    LinearSolver                 &solver,
     TimerOutput                  &timer)
       : discretization(discretization)
       , foundation(foundation)
-      , solver(solver)
       , timer(timer)
   {}
 

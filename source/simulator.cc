@@ -30,7 +30,7 @@ namespace liftoff
       , pcout(std::cout, verbose && Utilities::MPI::this_mpi_process(comm) == 0)
       , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , discretization(comm)
-      , active_set(discretization, foundation, linear_solver, timer)
+      , active_set(discretization, foundation, timer)
   {}
 
 
@@ -71,7 +71,6 @@ namespace liftoff
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
     NewmarkIntegrator::declare_parameters(prm);
-    LinearSolver::declare_parameters(prm);
     ActiveSetIteration::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
     TimeHistory::declare_parameters(prm);
@@ -100,7 +99,6 @@ namespace liftoff
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
-    linear_solver.parse_parameters(prm);
     mass_solver.parse_parameters(prm);
     active_set.parse_parameters(prm);
     field_output.parse_parameters(prm);
@@ -449,7 +447,7 @@ namespace liftoff
          << "active-set iterations per step, mean: "
          << (n > 0 ? double(total) / n : 0.0) << '\n'
          << "active-set iterations per step, max: " << largest << '\n'
-         << "factorisations: " << linear_solver.n_preparations << '\n';
+         << "factorisations: " << active_set.n_factorisations() << '\n';
 
     const auto timings =
       timer.get_summary_data(TimerOutput::OutputData::total_wall_time);

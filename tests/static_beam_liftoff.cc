@@ -24,8 +24,9 @@
 //   ./test_static_beam_liftoff bilateral
 // repeats the scenes with Foundation/Model = bilateral (springs that pull).
 // The bilateral strip first crosses w = 0 at x = 0.327 instead of a = 0.221
-// and its w(0) is 6 % smaller, so the checks on a, w(0), the profile and the
-// contact fraction FAIL (the program exits with 1).
+// and its w(0) is 6 % smaller, so the checks on a, w(0), the profile, the
+// contact fraction and the active-set iterations FAIL (the program exits
+// with 1).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
@@ -37,6 +38,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -339,6 +341,8 @@ main(int argc, char **argv)
         break;
       }
   checks.within("closed form: contact half-length a", a, 0.01, 0.49);
+  if (a < 0)
+    return checks.exit_code(); // no lift-off: nothing to compare with
   beam.solve(a, F);
   verify_closed_form(beam, S, Gamma, a, F, checks);
   checks.less("closed form: |w(a)| / w(0)",
@@ -349,9 +353,12 @@ main(int argc, char **argv)
   double w_min = beam.w(0);
   for (unsigned int i = 0; i < 1000; ++i)
     w_min = std::min(w_min, beam.w(a * i / 1000.0));
-  checks.less("closed form: -min w on [0, a) / w(0)", -w_min / beam.w(0), 0);
+  checks.within("closed form: min w on [0, a) / w(0)",
+                w_min / beam.w(0),
+                1e-6,
+                1);
   const double slope = beam.psi(a); // of the straight lifted part
-  checks.less("closed form: slope of the lifted part / (w(0) / a)",
+  checks.less("closed form: slope of the lifted part / (w(0) / a), < 0",
               slope / (beam.w(0) / a),
               0);
 
@@ -408,11 +415,19 @@ main(int argc, char **argv)
 
           const std::string name =
             "Q" + std::to_string(p) + ", " + std::to_string(n) + " cells";
+          // Loose bounds on every mesh, to show all errors in the output.
           checks.less(name + ": relative error of w(0)", w0_errors.back(), 0.1);
           checks.less(name + ": relative error of a", a_errors.back(), 0.1);
           checks.less(name + ": relative discrete L2 error of w",
                       l2_errors.back(),
                       0.1);
+          // The first iterate is the bilateral problem, whose solution pulls
+          // beyond x = 0.33, so the active set must have changed at least
+          // once; and it must settle well before the limit.
+          checks.within(name + ": active-set iterations",
+                        simulator->history().back().iterations,
+                        2,
+                        20);
           // The library's contact bookkeeping: the Gauss points in contact
           // cover [0, a] up to the one cell that holds the contact edge.
           const double contact_length =
@@ -421,27 +436,67 @@ main(int argc, char **argv)
                       std::abs(contact_length - a) / (half_length / n),
                       1.0);
         }
+      // Pairwise orders, for information: with Q2 they jump around (see
+      // below), so only their mean over 8 -> 64 cells is checked.
+      const std::string q = "Q" + std::to_string(p);
       for (unsigned int i = 1; i < meshes.size(); ++i)
+        std::cout << q << ": order " << meshes[i - 1] << " -> " << meshes[i]
+                  << " cells: w(0) "
+                  << liftoff_tests::observed_order(w0_errors[i - 1],
+                                                   w0_errors[i])
+                  << ", a "
+                  << liftoff_tests::observed_order(a_errors[i - 1], a_errors[i])
+                  << ", L2 "
+                  << liftoff_tests::observed_order(l2_errors[i - 1],
+                                                   l2_errors[i])
+                  << std::endl;
+
+      // The Gauss-point contact status integrates the kinked max(w, 0) in
+      // the cell that holds the contact edge only to O(h^2), whatever p, so
+      // a and the profile converge like h^2 at best, irregularly with the
+      // position of a among the Gauss points (Q2: a stalls from 16 to 32
+      // cells). Require that rate on average over three halvings.
+      const double n_halvings = std::log2(double(meshes.back()) / meshes[0]);
+      const auto   mean_order = [&](const std::vector<double> &e) {
+        return std::log2(e.front() / e.back()) / n_halvings;
+      };
+      checks.within(q + ": mean order of w(0), 8 -> 64 cells",
+                    mean_order(w0_errors),
+                    1.5,
+                    10);
+      checks.within(q + ": mean order of a, 8 -> 64 cells",
+                    mean_order(a_errors),
+                    1.5,
+                    10);
+      checks.within(q + ": mean order of the L2 error, 8 -> 64 cells",
+                    mean_order(l2_errors),
+                    1.5,
+                    10);
+      if (p == 1)
         {
-          const std::string pair = "Q" + std::to_string(p) + ": order "
-                                   + std::to_string(meshes[i - 1]) + " -> "
-                                   + std::to_string(meshes[i]) + " cells";
-          checks.within(pair + " of w(0)",
-                        liftoff_tests::observed_order(w0_errors[i - 1],
-                                                      w0_errors[i]),
-                        -100,
-                        100);
-          checks.within(pair + " of a",
-                        liftoff_tests::observed_order(a_errors[i - 1],
-                                                      a_errors[i]),
-                        -100,
-                        100);
-          checks.within(pair + " of the L2 error",
-                        liftoff_tests::observed_order(l2_errors[i - 1],
-                                                      l2_errors[i]),
-                        -100,
-                        100);
+          // Q1 is in its asymptotic range: the last pair is close to 2.
+          checks.within("Q1: order of w(0), 32 -> 64 cells",
+                        liftoff_tests::observed_order(w0_errors[2],
+                                                      w0_errors[3]),
+                        1.7,
+                        2.5);
+          checks.within("Q1: order of a, 32 -> 64 cells",
+                        liftoff_tests::observed_order(a_errors[2], a_errors[3]),
+                        1.5,
+                        2.5);
         }
+
+      // Finest mesh (observed: Q1 4.9e-4, 4.3e-4, 8.8e-4; Q2 9.3e-8,
+      // 1.6e-5, 3.8e-5 for w(0), a and L2).
+      checks.less(q + ", 64 cells: relative error of w(0) (finest)",
+                  w0_errors.back(),
+                  p == 1 ? 1e-3 : 1e-6);
+      checks.less(q + ", 64 cells: relative error of a (finest)",
+                  a_errors.back(),
+                  p == 1 ? 1e-3 : 1e-4);
+      checks.less(q + ", 64 cells: relative L2 error of w (finest)",
+                  l2_errors.back(),
+                  p == 1 ? 2e-3 : 1e-4);
     }
 
   return checks.exit_code();

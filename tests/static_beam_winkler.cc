@@ -31,7 +31,6 @@
 #include <array>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -361,6 +360,7 @@ main(int argc, char **argv)
           else
             checks.within(name, order, 0.0, p + 2.0);
         }
+      // Observed on 64 cells: Q1 4.7e-4, Q2 7.1e-7.
       checks.less("Q" + std::to_string(p) + ": finest relative error",
                   errors.back(),
                   p == 1 ? 1e-3 : 2e-6);

@@ -19,6 +19,7 @@ namespace liftoff
    * time integrator's mass term) is fixed; only K_f is rebuilt, and the
    * system is refactorised only when S has changed since the last
    * factorisation, so a step whose set does not move costs one solve.
+   * Its parameters include those of the LinearSolver it owns.
    */
   class ActiveSetIteration
   {
@@ -39,7 +40,6 @@ namespace liftoff
 
     ActiveSetIteration(const Discretization         &discretization,
                        TensionlessWinklerFoundation &foundation,
-                       LinearSolver                 &solver,
                        TimerOutput                  &timer);
 
     /// Use B from now on (a new mesh or time step).
@@ -57,6 +57,10 @@ namespace liftoff
           LA::MPI::Vector       &solution,
           LA::MPI::Vector       &ghosted_solution);
 
+    /// Factorisations (or preconditioner set-ups) so far.
+    unsigned int
+    n_factorisations() const;
+
     /// The current effective matrix B + K_f(S).
     const LA::MPI::SparseMatrix &
     system_matrix() const;
@@ -69,12 +73,13 @@ namespace liftoff
   private:
     const Discretization         &discretization;
     TensionlessWinklerFoundation &foundation;
-    LinearSolver                 &solver;
     TimerOutput                  &timer;
     const LA::MPI::SparseMatrix  *base_matrix = nullptr;
     LA::MPI::SparseMatrix         foundation_matrix;
     LA::MPI::SparseMatrix         matrix;
     bool                          matrix_is_current = false;
+    /// Declared after `matrix`: a factorisation must die before its matrix.
+    LinearSolver solver;
 
     bool
     is_solution_of_system(const LA::MPI::Vector &x,

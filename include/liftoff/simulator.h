@@ -94,7 +94,6 @@ namespace liftoff
     TensionlessWinklerFoundation foundation;
     LoadSet                      loads;
     NewmarkIntegrator            newmark;
-    LinearSolver                 linear_solver;
     LinearSolver                 mass_solver; // for the initial acceleration
     ActiveSetIteration           active_set;
     FieldOutput                  field_output;
