@@ -83,7 +83,8 @@ namespace liftoff
     for (unsigned int i = 0; i < n_points; ++i)
       points.emplace_back(disc, disc.to_modelled_part(point(i)));
 
-    if (Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
+    if (directory.empty()
+        || Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
       return;
     file.open(directory + "/profiles.csv");
     AssertThrow(file,

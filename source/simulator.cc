@@ -184,16 +184,8 @@ namespace liftoff
       discretization.reinit_vector(*vector);
     discretization.reinit_ghosted_vector(ghosted_u);
     discretization.reinit_ghosted_vector(ghosted_v);
-    if (writes_files())
-      {
-        time_history.setup(discretization, output_directory);
-        profile_output.setup(discretization, output_directory);
-      }
-    else
-      {
-        time_history.setup(discretization, "");
-        profile_output.setup(discretization, "");
-      }
+    time_history.setup(discretization, output_directory);
+    profile_output.setup(discretization, output_directory);
   }
 
 
@@ -263,7 +255,9 @@ namespace liftoff
 
 
   void
-  Simulator::record_step(const double         tau,
+  Simulator::record_step(const unsigned int   step,
+                         const double         tau,
+                         const bool           is_last_step,
                          const unsigned int   iterations,
                          const EnergyBalance &energy,
                          const EnergyBalance &initial)
@@ -273,6 +267,20 @@ namespace liftoff
     records.push_back(
       {tau, iterations, contact, time_history.probe_values(ghosted_u), energy});
     time_history.record(tau, ghosted_u, contact, iterations, energy, initial);
+    // A static analysis (no time step) writes its one profile.
+    profile_output.write_if_due(tau,
+                                analysis == Analysis::static_analysis
+                                  ? 0.0
+                                  : newmark.time_step,
+                                ghosted_u);
+    if (writes_files() && field_output.is_due(step, is_last_step))
+      field_output.write(output_directory,
+                         discretization,
+                         foundation,
+                         ghosted_u,
+                         ghosted_v,
+                         tau,
+                         step);
   }
 
 
@@ -306,16 +314,7 @@ namespace liftoff
     // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
     // lift-off, and the balance column checks it.
     e.work = 0.5 * discretization.n_symmetry_copies() * (load * u);
-    record_step(0.0, result.iterations, e, none);
-    profile_output.write_if_due(0.0, 0.0, ghosted_u);
-    if (writes_files() && field_output.is_due(0, true))
-      field_output.write(output_directory,
-                         discretization,
-                         foundation,
-                         ghosted_u,
-                         ghosted_v,
-                         0.0,
-                         0);
+    record_step(0, 0.0, true, result.iterations, e, none);
     pcout << "static: " << result.iterations << " active-set iterations, "
           << "contact fraction " << foundation.contact_area_fraction()
           << std::endl;
@@ -362,16 +361,7 @@ namespace liftoff
 
     double              work    = 0;
     const EnergyBalance initial = energies(0.0);
-    record_step(0.0, 0, initial, initial);
-    profile_output.write_if_due(0.0, dt, ghosted_u);
-    if (writes_files() && field_output.is_due(0, false))
-      field_output.write(output_directory,
-                         discretization,
-                         foundation,
-                         ghosted_u,
-                         ghosted_v,
-                         0.0,
-                         0);
+    record_step(0, 0.0, n_steps == 0, 0, initial, initial);
 
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
@@ -404,19 +394,12 @@ namespace liftoff
         newmark.advance(u_new, u, v, a);
         ghosted_v = v;
 
-        record_step(tau, result.iterations, energies(work), initial);
-        profile_output.write_if_due(tau, dt, ghosted_u);
-        if (writes_files() && field_output.is_due(step, step == n_steps))
-          {
-            TimerOutput::Scope t(timer, "output");
-            field_output.write(output_directory,
-                               discretization,
-                               foundation,
-                               ghosted_u,
-                               ghosted_v,
-                               tau,
-                               step);
-          }
+        record_step(step,
+                    tau,
+                    step == n_steps,
+                    result.iterations,
+                    energies(work),
+                    initial);
       }
   }
 

@@ -77,7 +77,9 @@ namespace liftoff
     for (const auto &p : probe_points)
       probes.emplace_back(disc, disc.to_modelled_part(p));
 
-    if (Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
+    // No directory: keep the values in memory only (tests).
+    if (directory.empty()
+        || Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
       return;
     file.open(directory + "/history.csv");
     AssertThrow(file, ExcMessage("Cannot write " + directory + "/history.csv"));

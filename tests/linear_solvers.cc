@@ -8,24 +8,6 @@
 
 #include <cmath>
 
-namespace
-{
-  double
-  history_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
-  {
-    double difference = 0, scale = 0;
-    for (unsigned int n = 0; n < a.history().size(); ++n)
-      for (unsigned int k = 0; k < a.history()[n].probe_w.size(); ++k)
-        {
-          difference = std::max(difference,
-                                std::abs(a.history()[n].probe_w[k]
-                                         - b.history()[n].probe_w[k]));
-          scale      = std::max(scale, std::abs(a.history()[n].probe_w[k]));
-        }
-    return difference / scale;
-  }
-} // namespace
-
 
 int
 main(int argc, char **argv)
@@ -44,10 +26,10 @@ main(int argc, char **argv)
                                "Tolerance = 1e-12\nend\n");
 
   checks.less("MUMPS vs KLU: probe histories",
-              history_difference(*mumps, *klu),
+              liftoff_tests::history_difference(*mumps, *klu),
               1e-10);
   checks.less("CG + AMG vs KLU: probe histories",
-              history_difference(*cg, *klu),
+              liftoff_tests::history_difference(*cg, *klu),
               1e-8);
   return checks.exit_code();
 }

@@ -12,22 +12,6 @@
 
 namespace
 {
-  /// max over steps and probes of |a - b|, over the largest |w| of a.
-  double
-  history_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
-  {
-    double      difference = 0, scale = 0;
-    const auto &ha = a.history(), &hb = b.history();
-    AssertThrow(ha.size() == hb.size(), dealii::ExcInternalError());
-    for (unsigned int n = 0; n < ha.size(); ++n)
-      for (unsigned int k = 0; k < ha[n].probe_w.size(); ++k)
-        {
-          difference =
-            std::max(difference, std::abs(ha[n].probe_w[k] - hb[n].probe_w[k]));
-          scale = std::max(scale, std::abs(ha[n].probe_w[k]));
-        }
-    return difference / scale;
-  }
 
   double
   energy_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
@@ -68,10 +52,10 @@ main(int argc, char **argv)
               0.95);
 
   checks.less("half vs full: probe histories",
-              history_difference(*half, *full),
+              liftoff_tests::history_difference(*half, *full),
               1e-9);
   checks.less("quarter vs full: probe histories",
-              history_difference(*quarter, *full),
+              liftoff_tests::history_difference(*quarter, *full),
               1e-9);
   checks.less("quarter vs full: energies and work",
               energy_difference(*quarter, *full),

@@ -102,6 +102,25 @@ namespace liftoff_tests
     }
   };
 
+  /// Largest difference of two runs' probe histories over all steps and
+  /// probes, relative to the largest |w| of the first.
+  inline double
+  history_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
+  {
+    const auto &ha = a.history(), &hb = b.history();
+    AssertThrow(ha.size() == hb.size(),
+                ExcMessage("The runs have different numbers of steps."));
+    double difference = 0, scale = 0;
+    for (unsigned int n = 0; n < ha.size(); ++n)
+      for (unsigned int k = 0; k < ha[n].probe_w.size(); ++k)
+        {
+          difference =
+            std::max(difference, std::abs(ha[n].probe_w[k] - hb[n].probe_w[k]));
+          scale = std::max(scale, std::abs(ha[n].probe_w[k]));
+        }
+    return difference / scale;
+  }
+
   /// Observed order of convergence between two errors at ratio h1/h2 = 2.
   inline double
   observed_order(const double coarse_error, const double fine_error)

@@ -120,8 +120,11 @@ namespace liftoff
     set_initial_state();
     EnergyBalance
     energies(const double work) const;
+    /// Everything written after a step: history row, profiles, fields.
     void
-    record_step(const double         tau,
+    record_step(const unsigned int   step,
+                const double         tau,
+                const bool           is_last_step,
                 const unsigned int   iterations,
                 const EnergyBalance &energy,
                 const EnergyBalance &initial);
