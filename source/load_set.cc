@@ -5,6 +5,7 @@
 #include <liftoff/load_set.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -381,39 +382,51 @@ namespace liftoff
                                  const double     tau,
                                  LA::MPI::Vector &vector) const
   {
-    const Discretization                &disc   = *discretization;
-    const auto                          &fe     = *disc.fe;
-    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
-    const QGauss<2>                      cell_quadrature(fe.degree + 1);
-    const QGauss<1>                      face_quadrature(fe.degree + 1);
-    FEValues<2>                          fe_values(disc.mapping,
-                          fe,
-                          cell_quadrature,
-                          update_values | update_quadrature_points
-                            | update_JxW_values);
+    const BoundingBox<2> region =
+      (load.kind == Kind::pressure
+         ? region_of(load, discretization->plate_box())
+         : discretization->plate_box());
+    vector = 0;
+    integrate_density(
+      [&](const Point<2> &x) {
+        return std::array<double, 3>{
+          {region.point_inside(x, 1e-12)
+             ? load.magnitude * load.intensity_at(x, tau)
+             : 0.0,
+           0.0,
+           0.0}};
+      },
+      load.kind == Kind::line ? load.edge : numbers::invalid_unsigned_int,
+      vector);
+  }
+
+
+  void
+  LoadSet::integrate_density(
+    const std::function<std::array<double, 3>(const Point<2> &)> &density,
+    const unsigned int                                            edge,
+    LA::MPI::Vector                                              &vector) const
+  {
+    const Discretization &disc   = *discretization;
+    const auto           &fe     = *disc.fe;
+    const unsigned int    n_dofs = fe.n_dofs_per_cell();
+    const UpdateFlags     flags =
+      update_values | update_quadrature_points | update_JxW_values;
+    FEValues<2> fe_values(disc.mapping, fe, QGauss<2>(fe.degree + 2), flags);
     FEFaceValues<2>                      fe_face_values(disc.mapping,
                                    fe,
-                                   face_quadrature,
-                                   update_values | update_quadrature_points
-                                     | update_JxW_values);
-    const FEValuesExtractors::Scalar     w(0);
+                                   QGauss<1>(fe.degree + 2),
+                                   flags);
     Vector<double>                       cell_rhs(n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
-    const BoundingBox<2>                 region =
-      (load.kind == Kind::pressure ? region_of(load, disc.plate_box())
-                                   : disc.plate_box());
 
-    vector               = 0;
     const auto integrate = [&](const FEValuesBase<2> &values) {
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         {
-          const Point<2> &x = values.quadrature_point(q);
-          if (!region.point_inside(x, 1e-12))
-            continue;
-          const double f =
-            load.magnitude * load.intensity_at(x, tau) * values.JxW(q);
+          const std::array<double, 3> f = density(values.quadrature_point(q));
           for (unsigned int i = 0; i < n_dofs; ++i)
-            cell_rhs(i) += f * values[w].value(i, q);
+            cell_rhs(i) += f[fe.system_to_component_index(i).first]
+                           * values.shape_value(i, q) * values.JxW(q);
         }
     };
 
@@ -421,7 +434,7 @@ namespace liftoff
       if (cell->is_locally_owned())
         {
           cell_rhs = 0;
-          if (load.kind == Kind::pressure)
+          if (edge == numbers::invalid_unsigned_int)
             {
               fe_values.reinit(cell);
               integrate(fe_values);
@@ -429,7 +442,7 @@ namespace liftoff
           else
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary()
-                  && cell->face(f)->boundary_id() == load.edge)
+                  && cell->face(f)->boundary_id() == edge)
                 {
                   fe_face_values.reinit(cell, f);
                   integrate(fe_face_values);
@@ -478,40 +491,16 @@ namespace liftoff
   void
   LoadSet::add_body_force(const double tau, LA::MPI::Vector &load_vector) const
   {
-    const Discretization                &disc   = *discretization;
-    const auto                          &fe     = *disc.fe;
-    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
-    const QGauss<2>                      quadrature(fe.degree + 2);
-    FEValues<2>                          fe_values(disc.mapping,
-                          fe,
-                          quadrature,
-                          update_values | update_quadrature_points
-                            | update_JxW_values);
-    Vector<double>                       cell_rhs(n_dofs);
-    Vector<double>                       f(3);
-    std::vector<types::global_dof_index> dof_indices(n_dofs);
     body_force->set_time(tau);
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          cell_rhs = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              body_force->vector_value(fe_values.quadrature_point(q), f);
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  cell_rhs(i) +=
-                    f[c] * fe_values.shape_value(i, q) * fe_values.JxW(q);
-                }
-            }
-          cell->get_dof_indices(dof_indices);
-          disc.constraints.distribute_local_to_global(cell_rhs,
-                                                      dof_indices,
-                                                      load_vector);
-        }
-    load_vector.compress(VectorOperation::add);
+    // Functions may implement only vector_value(); ask for all components.
+    Vector<double> values(3);
+    integrate_density(
+      [&](const Point<2> &x) {
+        body_force->vector_value(x, values);
+        return std::array<double, 3>{{values[0], values[1], values[2]}};
+      },
+      numbers::invalid_unsigned_int,
+      load_vector);
   }
 
 

@@ -352,27 +352,6 @@ namespace
     double seconds; // wall time of the run
   };
 
-  // The simulator reports on std::cout; keep the test output readable and
-  // show the captured text only if the run fails.
-  template <typename F>
-  auto
-  quietly(F &&f)
-  {
-    std::ostringstream sink;
-    std::streambuf    *old = std::cout.rdbuf(sink.rdbuf());
-    try
-      {
-        auto result = f();
-        std::cout.rdbuf(old);
-        return result;
-      }
-    catch (...)
-      {
-        std::cout.rdbuf(old);
-        std::cout << sink.str();
-        throw;
-      }
-  }
 
   Errors
   run_manufactured(const unsigned int degree,
@@ -421,7 +400,7 @@ namespace
 
     const auto start = std::chrono::steady_clock::now();
     Forcing    force(fields);
-    return quietly([&]() {
+    {
       const auto    sim  = liftoff_tests::run_scene(scene.str(), &force);
       const auto   &disc = sim->get_discretization();
       ExactSolution exact(fields);
@@ -449,7 +428,7 @@ namespace
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
       return Errors{w_error, psi_error, seconds};
-    });
+    }
   }
 
   void

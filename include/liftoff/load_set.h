@@ -8,6 +8,8 @@
 #include <liftoff/discretization.h>
 #include <liftoff/point_functional.h>
 
+#include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -105,6 +107,14 @@ namespace liftoff
     assemble_spatial_part(const Load      &load,
                           const double     tau,
                           LA::MPI::Vector &vector) const;
+
+    /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) over the meshed
+    /// part (edge = numbers::invalid_unsigned_int) or along one plate edge.
+    void
+    integrate_density(
+      const std::function<std::array<double, 3>(const Point<2> &)> &density,
+      const unsigned int                                            edge,
+      LA::MPI::Vector &vector) const;
 
     /// Whether `other` is the image of `load` in the symmetry plane normal
     /// to `axis` (a load on the plane may be its own image).
