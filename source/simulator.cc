@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -192,6 +193,7 @@ namespace liftoff
   void
   Simulator::run(const ParameterHandler &prm)
   {
+    wall_clock.restart();
     prepare_output_directory(prm);
     MPI_Barrier(mpi_communicator);
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
@@ -434,7 +436,8 @@ namespace liftoff
 
     const auto timings =
       timer.get_summary_data(TimerOutput::OutputData::total_wall_time);
-    text << "wall time by section [s]:\n";
+    text << "wall time [s]: " << wall_clock.wall_time() << '\n'
+         << "wall time by section [s]:\n";
     for (const auto &[section, seconds] : timings)
       text << "  " << section << ": " << seconds << '\n';
 

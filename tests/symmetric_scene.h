@@ -15,7 +15,8 @@ namespace liftoff_tests
   symmetric_scene(const std::string &symmetry,
                   const unsigned int cells_x,
                   const unsigned int cells_y,
-                  const unsigned int degree = 2)
+                  const unsigned int degree      = 2,
+                  const unsigned int refinements = 0)
   {
     return R"(
 subsection Plate
@@ -36,6 +37,8 @@ subsection Discretization
            + std::to_string(cells_y) + R"(
   set Polynomial degree = )"
            + std::to_string(degree) + R"(
+  set Global refinements = )"
+           + std::to_string(refinements) + R"(
 end
 subsection Boundary conditions
   set Left = soft simply supported

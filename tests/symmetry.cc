@@ -69,6 +69,14 @@ main(int argc, char **argv)
                         - quarter->history()[n].contact_fraction));
   checks.less("quarter vs full: contact fraction", contact_difference, 1e-12);
 
+  // Global refinement of a coarser mesh gives the same mesh, hence the same
+  // history.
+  checks.less("quarter, 10 x 8 cells vs 5 x 4 cells refined once",
+              liftoff_tests::history_difference(
+                *run_scene(symmetric_scene("quarter", 10, 8)),
+                *run_scene(symmetric_scene("quarter", 5, 4, 2, 1))),
+              1e-12);
+
   // Probes 1-4 are (+-0.3, +-0.2): mirror images of each other.
   double mirror_difference = 0, scale = 0;
   for (const auto &row : full->history())

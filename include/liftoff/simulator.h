@@ -87,6 +87,7 @@ namespace liftoff
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
     TimerOutput        timer;
+    Timer              wall_clock;
 
     MindlinPlate                 plate;
     Discretization               discretization;
