@@ -364,21 +364,15 @@ namespace
     scene << std::setprecision(17) << "subsection Analysis\n"
           << "  set Type = dynamic\n"
           << "end\n"
-          << "subsection Plate\n"
-          << "  set Aspect ratio = 1\n"
-          << "  set Thickness ratio = " << thickness_ratio << "\n"
-          << "  set Poisson ratio = " << poisson_ratio << "\n"
-          << "  set Shear correction factor = " << shear_correction << "\n"
-          << "end\n"
+          << liftoff_tests::square_plate(thickness_ratio,
+                                         poisson_ratio,
+                                         shear_correction)
           << "subsection Foundation\n"
           << "  set Model = bilateral\n"
           << "  set Stiffness = " << gamma_foundation << "\n"
           << "end\n"
-          << "subsection Boundary conditions\n";
-    for (const char *edge : {"Left", "Right", "Bottom", "Top"})
-      scene << "  set " << edge << " = clamped\n";
-    scene << "end\n"
-          << "subsection Discretization\n"
+          << liftoff_tests::all_edges("clamped");
+    scene << "subsection Discretization\n"
           << "  set Symmetry = full\n"
           << "  set Cells along x = " << cells << "\n"
           << "  set Cells along y = " << cells << "\n"

@@ -136,21 +136,15 @@ namespace
     scene << std::setprecision(17) << "subsection Analysis\n"
           << "  set Type = static\n"
           << "end\n"
-          << "subsection Plate\n"
-          << "  set Aspect ratio = 1\n"
-          << "  set Thickness ratio = " << thickness_ratio << "\n"
-          << "  set Poisson ratio = " << poisson_ratio << "\n"
-          << "  set Shear correction factor = " << shear_correction << "\n"
-          << "end\n"
+          << liftoff_tests::square_plate(thickness_ratio,
+                                         poisson_ratio,
+                                         shear_correction)
           << "subsection Foundation\n"
           << "  set Model = none\n"
           << "end\n"
-          << "subsection Boundary conditions\n";
-    for (const char *edge : {"Left", "Right", "Bottom", "Top"})
-      scene << "  set " << edge << " = hard simply supported\n";
+          << liftoff_tests::all_edges("hard simply supported");
     const unsigned int cells = quarter ? cells_full / 2 : cells_full;
-    scene << "end\n"
-          << "subsection Discretization\n"
+    scene << "subsection Discretization\n"
           << "  set Symmetry = " << (quarter ? "quarter" : "full") << "\n"
           << "  set Cells along x = " << cells << "\n"
           << "  set Cells along y = " << cells << "\n"

@@ -41,6 +41,32 @@ namespace liftoff_tests
     return simulator;
   }
 
+  /// prm text: a square plate of the given section.
+  inline std::string
+  square_plate(const double thickness_ratio,
+               const double poisson_ratio,
+               const double shear_correction)
+  {
+    std::ostringstream text;
+    text << std::setprecision(17) << "subsection Plate\n"
+         << "  set Aspect ratio = 1\n"
+         << "  set Thickness ratio = " << thickness_ratio << "\n"
+         << "  set Poisson ratio = " << poisson_ratio << "\n"
+         << "  set Shear correction factor = " << shear_correction << "\n"
+         << "end\n";
+    return text.str();
+  }
+
+  /// prm text: the same condition on all four edges.
+  inline std::string
+  all_edges(const std::string &condition)
+  {
+    std::string text = "subsection Boundary conditions\n";
+    for (const char *edge : {"Left", "Right", "Bottom", "Top"})
+      text += std::string("  set ") + edge + " = " + condition + "\n";
+    return text + "end\n";
+  }
+
   class Checks
   {
   public:
