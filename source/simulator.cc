@@ -107,16 +107,17 @@ namespace liftoff
     profile_output.parse_parameters(prm);
 
     // Initial conditions must parse before anything runs.
+    initial_fields.clear();
     for (const auto &[name, text] :
          {std::make_pair("Displacement", initial_displacement),
           std::make_pair("Velocity", initial_velocity)})
       {
+        auto f = std::make_unique<FunctionParser<2>>(3);
         try
           {
-            FunctionParser<2> f(3);
-            f.initialize("x,y", text, {{"pi", M_PI}});
+            f->initialize("x,y", text, {{"pi", M_PI}});
             Vector<double> values(3);
-            f.vector_value(Point<2>(), values);
+            f->vector_value(Point<2>(), values);
           }
         catch (const std::exception &e)
           {
@@ -127,6 +128,7 @@ namespace liftoff
                                      "x, y separated by ';': "
                                    + e.what()));
           }
+        initial_fields.push_back(std::move(f));
       }
 
     if (analysis == Analysis::static_analysis)
@@ -155,30 +157,39 @@ namespace liftoff
   void
   Simulator::prepare_output_directory(const ParameterHandler &prm) const
   {
-    if (!writes_files()
-        || Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+    if (!writes_files())
       return;
-    std::error_code error;
-    std::filesystem::create_directories(output_directory, error);
-    AssertThrow(!error,
+    // Rank 0 creates the folder; every rank learns whether it could, so all
+    // stop together.
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      try
+        {
+          std::filesystem::create_directories(output_directory);
+          write_file_atomically(
+            output_directory + "/used_parameters.prm", [&](std::ostream &out) {
+              prm.print_parameters(out, ParameterHandler::ShortPRM);
+            });
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+    error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
+    AssertThrow(error.empty(),
                 ExcMessage("Output/Directory = " + output_directory
-                           + " cannot be created: " + error.message()));
-    write_file_atomically(output_directory + "/used_parameters.prm",
-                          [&](std::ostream &out) {
-                            prm.print_parameters(out,
-                                                 ParameterHandler::ShortPRM);
-                          });
+                           + " cannot be written: " + error));
   }
 
 
   void
   Simulator::setup()
   {
-    TimerOutput::Scope t(timer, "setup");
     {
-      TimerOutput::Scope t2(timer, "assembly");
+      TimerOutput::Scope t(timer, "assembly");
       matrices.assemble(discretization, plate);
     }
+    TimerOutput::Scope t(timer, "setup");
     foundation.setup(discretization);
     loads.setup(discretization);
     for (auto *vector : {&u, &v, &a})
@@ -195,7 +206,6 @@ namespace liftoff
   {
     wall_clock.restart();
     prepare_output_directory(prm);
-    MPI_Barrier(mpi_communicator);
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
           << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
           << discretization.degree() << "), "
@@ -221,16 +231,14 @@ namespace liftoff
   void
   Simulator::set_initial_state()
   {
-    for (auto &[text, vector] : {std::make_pair(initial_displacement, &u),
-                                 std::make_pair(initial_velocity, &v)})
+    LA::MPI::Vector *state[2] = {&u, &v};
+    for (unsigned int k = 0; k < 2; ++k)
       {
-        FunctionParser<2> f(3);
-        f.initialize("x,y", text, {{"pi", M_PI}});
         VectorTools::interpolate(discretization.mapping,
                                  discretization.dof_handler,
-                                 f,
-                                 *vector);
-        discretization.constraints.distribute(*vector);
+                                 *initial_fields[k],
+                                 *state[k]);
+        discretization.constraints.distribute(*state[k]);
       }
     ghosted_u = u;
     ghosted_v = v;

@@ -17,6 +17,7 @@
 #include <liftoff/tensionless_winkler_foundation.h>
 #include <liftoff/time_history.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,8 @@ namespace liftoff
     Analysis    analysis = Analysis::dynamic_analysis;
     std::string output_directory;
     std::string initial_displacement, initial_velocity;
+    /// Parsed initial displacement and velocity.
+    std::vector<std::unique_ptr<FunctionParser<2>>> initial_fields;
 
     LA::MPI::Vector         u, v, a;              // owned state
     LA::MPI::Vector         ghosted_u, ghosted_v; // with ghosts, for evaluation
