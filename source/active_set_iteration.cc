@@ -62,13 +62,6 @@ namespace liftoff
   }
 
 
-  const LA::MPI::SparseMatrix &
-  ActiveSetIteration::system_matrix() const
-  {
-    return matrix;
-  }
-
-
   bool
   ActiveSetIteration::is_solution_of_system(const LA::MPI::Vector &x,
                                             const LA::MPI::Vector &b) const

@@ -503,10 +503,4 @@ namespace liftoff
       load_vector);
   }
 
-
-  unsigned int
-  LoadSet::n_loads() const
-  {
-    return loads.size();
-  }
 } // namespace liftoff

@@ -9,7 +9,6 @@ namespace liftoff
   PointFunctional::PointFunctional(const Discretization &discretization,
                                    const Point<2>       &point,
                                    const unsigned int    component)
-      : location(point)
   {
     const auto    &dof_handler = discretization.dof_handler;
     const auto    &fe          = *discretization.fe;
@@ -79,12 +78,5 @@ namespace liftoff
     Vector<double> scaled(weights);
     scaled *= factor;
     constraints.distribute_local_to_global(scaled, dof_indices, rhs);
-  }
-
-
-  const Point<2> &
-  PointFunctional::point() const
-  {
-    return location;
   }
 } // namespace liftoff

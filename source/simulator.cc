@@ -492,18 +492,4 @@ namespace liftoff
   {
     return discretization;
   }
-
-
-  const TensionlessWinklerFoundation &
-  Simulator::get_foundation() const
-  {
-    return foundation;
-  }
-
-
-  const MindlinPlate &
-  Simulator::get_plate() const
-  {
-    return plate;
-  }
 } // namespace liftoff

@@ -61,10 +61,6 @@ namespace liftoff
     unsigned int
     n_factorisations() const;
 
-    /// The current effective matrix B + K_f(S).
-    const LA::MPI::SparseMatrix &
-    system_matrix() const;
-
     unsigned int max_iterations = 50;
     /// Nothing but the foundation holds the plate (a static free plate):
     /// stop when the contact set empties or the solve is singular.

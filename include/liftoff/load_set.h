@@ -54,9 +54,6 @@ namespace liftoff
     void
     assemble(const double tau, LA::MPI::Vector &load_vector) const;
 
-    unsigned int
-    n_loads() const;
-
     /// A distributed force on all three equations (force on w, moments on
     /// psi_x and psi_y), f(x, y) with time set by set_time(tau); it is
     /// integrated at every step. Not part of a scene: manufactured-solution

@@ -39,11 +39,7 @@ namespace liftoff
            const double                     factor,
            const AffineConstraints<double> &constraints) const;
 
-    const Point<2> &
-    point() const;
-
   private:
-    Point<2>                             location;
     std::vector<types::global_dof_index> dof_indices;
     Vector<double>                       weights;
   };

@@ -73,10 +73,6 @@ namespace liftoff
     solution() const;
     const Discretization &
     get_discretization() const;
-    const TensionlessWinklerFoundation &
-    get_foundation() const;
-    const MindlinPlate &
-    get_plate() const;
 
   private:
     enum class Analysis
