@@ -10,27 +10,6 @@
 
 #include <cmath>
 
-namespace
-{
-
-  double
-  energy_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
-  {
-    double difference = 0, scale = 0;
-    for (unsigned int n = 0; n < a.history().size(); ++n)
-      {
-        const auto &ea = a.history()[n].energies, &eb = b.history()[n].energies;
-        difference = std::max({difference,
-                               std::abs(ea.kinetic - eb.kinetic),
-                               std::abs(ea.strain - eb.strain),
-                               std::abs(ea.foundation - eb.foundation),
-                               std::abs(ea.work - eb.work)});
-        scale      = std::max(scale, std::abs(ea.work));
-      }
-    return difference / scale;
-  }
-} // namespace
-
 
 int
 main(int argc, char **argv)
@@ -58,7 +37,7 @@ main(int argc, char **argv)
               liftoff_tests::history_difference(*quarter, *full),
               1e-9);
   checks.less("quarter vs full: energies and work",
-              energy_difference(*quarter, *full),
+              liftoff_tests::energy_difference(*quarter, *full),
               1e-9);
 
   double contact_difference = 0;

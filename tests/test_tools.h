@@ -147,6 +147,25 @@ namespace liftoff_tests
     return difference / scale;
   }
 
+  /// Largest difference of two runs' energies and work over all steps,
+  /// relative to the largest work of the first.
+  inline double
+  energy_difference(const liftoff::Simulator &a, const liftoff::Simulator &b)
+  {
+    double difference = 0, scale = 0;
+    for (unsigned int n = 0; n < a.history().size(); ++n)
+      {
+        const auto &ea = a.history()[n].energies, &eb = b.history()[n].energies;
+        difference = std::max({difference,
+                               std::abs(ea.kinetic - eb.kinetic),
+                               std::abs(ea.strain - eb.strain),
+                               std::abs(ea.foundation - eb.foundation),
+                               std::abs(ea.work - eb.work)});
+        scale      = std::max(scale, std::abs(ea.work));
+      }
+    return difference / scale;
+  }
+
   /// Observed order of convergence between two errors at ratio h1/h2 = 2.
   inline double
   observed_order(const double coarse_error, const double fine_error)
