@@ -205,53 +205,43 @@ namespace
                - S * (d.u_y[0] - d.u[2])}};
   }
 
-  /// The exact (w, psi_x, psi_y) at time get_time().
-  class ExactSolution : public Function<2>
+  /// A quantity of the manufactured solution at time get_time(): the exact
+  /// (w, psi_x, psi_y), or the forcing (f_w, m_x, m_y) that produces it.
+  class ManufacturedField : public Function<2>
   {
   public:
-    explicit ExactSolution(const Fields &fields)
+    using Quantity = std::array<double, 3> (*)(const Derivatives &);
+
+    ManufacturedField(const Fields &fields, const Quantity quantity)
         : Function<2>(3)
         , fields(fields)
+        , quantity(quantity)
     {}
 
     void
     vector_value(const Point<2> &p, Vector<double> &values) const override
     {
-      const Derivatives d = derivatives(fields, p, this->get_time());
+      const auto q = quantity(derivatives(fields, p, this->get_time()));
       for (unsigned int c = 0; c < 3; ++c)
-        values[c] = d.u[c];
+        values[c] = q[c];
     }
 
     double
     value(const Point<2> &p, const unsigned int component) const override
     {
-      return derivatives(fields, p, this->get_time()).u[component];
+      return quantity(derivatives(fields, p, this->get_time()))[component];
     }
 
   private:
-    const Fields fields;
+    const Fields   fields;
+    const Quantity quantity;
   };
 
-  /// The forcing (f_w, m_x, m_y) at time get_time(), for the simulator.
-  class Forcing : public Function<2>
+  std::array<double, 3>
+  exact_values(const Derivatives &d)
   {
-  public:
-    explicit Forcing(const Fields &fields)
-        : Function<2>(3)
-        , fields(fields)
-    {}
-
-    void
-    vector_value(const Point<2> &p, Vector<double> &values) const override
-    {
-      const auto f = strong_form(derivatives(fields, p, this->get_time()));
-      for (unsigned int c = 0; c < 3; ++c)
-        values[c] = f[c];
-    }
-
-  private:
-    const Fields fields;
-  };
+    return d.u;
+  }
 
   /// The strong form with every derivative taken by central differences
   /// of the field values, against the same with the analytic derivatives:
@@ -392,12 +382,12 @@ namespace
           << "  set Write energies = false\n"
           << "end\n";
 
-    const auto start = std::chrono::steady_clock::now();
-    Forcing    force(fields);
+    const auto        start = std::chrono::steady_clock::now();
+    ManufacturedField force(fields, strong_form);
     {
-      const auto    sim  = liftoff_tests::run_scene(scene.str(), &force);
-      const auto   &disc = sim->get_discretization();
-      ExactSolution exact(fields);
+      const auto        sim  = liftoff_tests::run_scene(scene.str(), &force);
+      const auto       &disc = sim->get_discretization();
+      ManufacturedField exact(fields, exact_values);
       exact.set_time(end_time);
 
       // solution() is the ghosted vector, as integrate_difference needs.
