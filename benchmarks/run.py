@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Run liftoff's benchmark scenes, each in its own process, and tabulate.
+
+Builds liftoff (Release) in build-bench/, runs the chosen scenes from
+benchmarks/scenes/, prints one row per run and appends the rows to
+benchmarks/results.csv (with the commit, the label and the date), then
+rewrites benchmarks/results.md from the whole CSV.
+
+    benchmarks/run.py --label after S-gamma1 S-gamma1000
+    benchmarks/run.py --label mpi --ranks 2 M-gamma1
+    benchmarks/run.py --label probe --set "Time integration/End time=0.005" M-gamma1
+
+Wall times come from liftoff's summary.txt (TimerOutput sections); the peak
+memory is the largest VmHWM of any rank as liftoff reports it, or, for
+programs that do not report it, GNU time's maximum resident set size.
+"""
+
+import argparse
+import csv
+import datetime
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+BUILD = os.path.join(ROOT, "build-bench")
+RESULTS_CSV = os.path.join(HERE, "results.csv")
+RESULTS_MD = os.path.join(HERE, "results.md")
+EXECUTABLE = os.path.join(BUILD, "liftoff")
+COMMIT = None
+
+# Table columns: (key, heading). Times are in seconds.
+COLUMNS = [
+    ("date", "date"),
+    ("commit", "commit"),
+    ("label", "label"),
+    ("scene", "scene"),
+    ("overrides", "overrides"),
+    ("ranks", "ranks"),
+    ("dofs", "dofs"),
+    ("steps", "steps"),
+    ("iter_mean", "it/step"),
+    ("iter_max", "it max"),
+    ("factorisations", "factor."),
+    ("wall", "wall"),
+    ("setup", "setup+asm"),
+    ("foundation", "K_f update"),
+    ("factorisation", "factor./prec."),
+    ("solve", "solve"),
+    ("contact", "contact"),
+    ("output", "output"),
+    ("rest", "rest"),
+    ("per_step", "per step"),
+    ("per_iteration", "per it."),
+    ("substitution", "subst."),
+    ("ratio", "it./subst."),
+    ("memory_mb", "peak MB/rank"),
+]
+
+
+def sh(command, **kwargs):
+    print("+ " + " ".join(command), flush=True)
+    subprocess.run(command, check=True, **kwargs)
+
+
+def build():
+    sh(["cmake", "-S", ROOT, "-B", BUILD, "-DCMAKE_BUILD_TYPE=Release"],
+       stdout=subprocess.DEVNULL)
+    sh(["cmake", "--build", BUILD, "-j2", "--target", "liftoff"],
+       stdout=subprocess.DEVNULL)
+
+
+def commit():
+    if COMMIT:
+        return COMMIT
+    try:
+        out = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short",
+                              "HEAD"], capture_output=True, text=True,
+                             check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain",
+                                "--untracked-files=no"],
+                               capture_output=True, text=True).stdout.strip()
+        return out + ("+" if dirty else "")
+    except (subprocess.CalledProcessError, FileNotFoundError):
+        return "unknown"
+
+
+def scene_text(scene, overrides, directory):
+    """The scene file plus the overrides (ParameterHandler keeps the last
+    value set for an entry)."""
+    with open(os.path.join(HERE, "scenes", scene + ".prm")) as f:
+        text = f.read()
+    for override in overrides + ["Output/Directory=" + directory]:
+        path, value = override.split("=", 1)
+        *sections, entry = path.split("/")
+        text += "\n"
+        for s in sections:
+            text += "subsection %s\n" % s
+        text += "  set %s = %s\n" % (entry, value)
+        text += "end\n" * len(sections)
+    return text
+
+
+def parse_summary(path):
+    values, sections = {}, {}
+    in_sections = False
+    with open(path) as f:
+        for line in f:
+            if line.startswith("wall time by section"):
+                in_sections = True
+                continue
+            key, _, value = line.strip().rpartition(": ")
+            if in_sections and line.startswith("  "):
+                sections[key] = float(value)
+            else:
+                in_sections = False
+                values[key] = value
+    return values, sections
+
+
+def run_one(scene, overrides, ranks, label):
+    stamp = datetime.datetime.now().strftime("%Y%m%d-%H%M%S")
+    directory = os.path.join(HERE, "runs", "%s-%s-np%d-%s" %
+                             (label, scene, ranks, stamp))
+    os.makedirs(directory)
+    prm = os.path.join(directory, "scene.prm")
+    with open(prm, "w") as f:
+        f.write(scene_text(scene, overrides, directory))
+    command = [EXECUTABLE, prm]
+    if ranks > 1:
+        command = ["mpirun", "--allow-run-as-root", "--oversubscribe",
+                   "-np", str(ranks)] + command
+    time_file = os.path.join(directory, "time.txt")
+    with open(os.path.join(directory, "log.txt"), "w") as log:
+        sh(["/usr/bin/time", "-f", "%e %M", "-o", time_file] + command,
+           stdout=log, stderr=subprocess.STDOUT)
+    with open(time_file) as f:
+        rss_kb = float(f.read().split()[-1])
+    values, sections = parse_summary(os.path.join(directory, "summary.txt"))
+
+    def section(*names):
+        return sum(sections.get(n, 0.0) for n in names)
+
+    steps = int(values["steps"])
+    iter_mean = float(values["active-set iterations per step, mean"])
+    wall = float(values["wall time [s]"])
+    setup = section("setup", "assembly", "initial acceleration")
+    foundation = section("foundation assembly", "foundation update")
+    factorisation = section("factorisation", "preconditioner")
+    solve = section("solve")
+    contact = section("contact update")
+    output = section("output")
+    loop = foundation + factorisation + solve + contact
+    iterations = iter_mean * steps
+    substitution = float(values.get("time per substitution [s]", "nan"))
+    memory_mb = float(values.get("peak memory per rank, max [MB]",
+                                 rss_kb / 1024.0))
+    row = {
+        "date": datetime.date.today().isoformat(),
+        "commit": commit(),
+        "label": label,
+        "scene": scene,
+        "overrides": "; ".join(overrides),
+        "ranks": ranks,
+        "dofs": int(values["dofs"]),
+        "steps": steps,
+        "iter_mean": "%.2f" % iter_mean,
+        "iter_max": values["active-set iterations per step, max"],
+        "factorisations": values["factorisations"],
+        "wall": "%.2f" % wall,
+        "setup": "%.2f" % setup,
+        "foundation": "%.2f" % foundation,
+        "factorisation": "%.2f" % factorisation,
+        "solve": "%.2f" % solve,
+        "contact": "%.3f" % contact,
+        "output": "%.3f" % output,
+        "rest": "%.2f" % (wall - setup - loop - output),
+        "per_step": "%.4f" % ((wall - setup) / max(steps, 1)),
+        "per_iteration": "%.4f" % (loop / max(iterations, 1)),
+        "substitution": ("%.4f" % substitution
+                         if substitution == substitution else ""),
+        "ratio": ("%.2f" % (loop / max(iterations, 1) / substitution)
+                  if substitution == substitution else ""),
+        "memory_mb": "%.0f" % memory_mb,
+    }
+    return row
+
+
+def write_tables(new_rows):
+    exists = os.path.exists(RESULTS_CSV)
+    with open(RESULTS_CSV, "a", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=[k for k, _ in COLUMNS])
+        if not exists:
+            writer.writeheader()
+        writer.writerows(new_rows)
+    with open(RESULTS_CSV) as f:
+        rows = list(csv.DictReader(f))
+    lines = ["# Benchmark results",
+             "",
+             "Written by `benchmarks/run.py` from `results.csv`; times in "
+             "seconds. `per step` excludes set-up; `per it.` is the time in "
+             "the active-set loop (K_f update, factorisation, solve, contact "
+             "update) per iteration; `subst.` is one forward and back "
+             "substitution with the stored factor, measured in the same run.",
+             "",
+             "| " + " | ".join(h for _, h in COLUMNS) + " |",
+             "|" + "---|" * len(COLUMNS)]
+    for r in rows:
+        lines.append("| " + " | ".join(str(r.get(k, "")) for k, _ in COLUMNS)
+                     + " |")
+    with open(RESULTS_MD, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawTextHelpFormatter)
+    parser.add_argument("scenes", nargs="+",
+                        help="names of files in benchmarks/scenes/ without "
+                        ".prm (S-gamma1, S-gamma1000, M-gamma1, ...)")
+    parser.add_argument("--label", required=True,
+                        help="what this run measures, e.g. baseline")
+    parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--set", action="append", default=[],
+                        metavar="Section/Entry=value",
+                        help="override a parameter (repeatable)")
+    parser.add_argument("--no-build", action="store_true")
+    parser.add_argument("--executable",
+                        help="run this liftoff instead of building one "
+                        "(e.g. an older commit's, for a baseline)")
+    parser.add_argument("--commit", help="commit to record with "
+                        "--executable")
+    args = parser.parse_args()
+    global EXECUTABLE, COMMIT
+    if args.executable:
+        EXECUTABLE = os.path.abspath(args.executable)
+        COMMIT = args.commit or "unknown"
+        args.no_build = True
+    for override in args.set:
+        if not re.match(r"^[^=/]+(/[^=/]+)+=.*$", override):
+            parser.error("--set wants Section/Entry=value, got " + override)
+    for scene in args.scenes:
+        if not os.path.exists(os.path.join(HERE, "scenes", scene + ".prm")):
+            parser.error("no scene benchmarks/scenes/%s.prm" % scene)
+    if not args.no_build:
+        build()
+    rows = []
+    for scene in args.scenes:
+        row = run_one(scene, args.set, args.ranks, args.label)
+        rows.append(row)
+        print("  ".join("%s=%s" % (h, row[k]) for k, h in COLUMNS[3:]),
+              flush=True)
+    write_tables(rows)
+    print("appended %d row(s) to %s; table in %s" %
+          (len(rows), RESULTS_CSV, RESULTS_MD))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
