@@ -28,10 +28,10 @@ namespace liftoff
   }
 
 
-  unsigned int
-  ActiveSetIteration::n_factorisations() const
+  const LinearSolver &
+  ActiveSetIteration::linear_solver() const
   {
-    return solver.n_preparations;
+    return solver;
   }
 
 
@@ -42,23 +42,20 @@ namespace liftoff
       : discretization(discretization)
       , foundation(foundation)
       , timer(timer)
+      , solver(timer)
   {}
 
 
   void
   ActiveSetIteration::set_base_matrix(const LA::MPI::SparseMatrix &B)
   {
-    base_matrix = &B;
-    discretization.reinit_matrix(foundation_matrix);
-    discretization.reinit_matrix(matrix);
-    matrix_is_current = false;
-  }
-
-
-  void
-  ActiveSetIteration::contact_set_changed()
-  {
-    matrix_is_current = false;
+    {
+      TimerOutput::Scope t(timer, "foundation update");
+      discretization.reinit_matrix(matrix);
+      matrix.copy_from(B);
+      foundation.add_to_matrix(matrix);
+    }
+    solver.prepare(matrix, discretization);
   }
 
 
@@ -81,29 +78,19 @@ namespace liftoff
                             LA::MPI::Vector       &solution,
                             LA::MPI::Vector       &ghosted_solution)
   {
-    Assert(base_matrix != nullptr, ExcMessage("set_base_matrix() first."));
+    Assert(matrix.m() > 0, ExcMessage("set_base_matrix() first."));
     Result result;
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
-        if (!matrix_is_current)
-          {
-            {
-              TimerOutput::Scope t(timer, "foundation assembly");
-              foundation.assemble_matrix(foundation_matrix);
-              matrix.copy_from(*base_matrix);
-              matrix.add(1.0, foundation_matrix);
-            }
-            TimerOutput::Scope t(timer, "factorisation");
-            solver.prepare(matrix, discretization);
-            matrix_is_current = true;
-          }
         {
-          TimerOutput::Scope t(timer, "solve");
-          solver.solve(solution, rhs);
-          discretization.constraints.distribute(solution);
-          ghosted_solution = solution;
+          TimerOutput::Scope t(timer, "foundation update");
+          if (foundation.update_matrix(matrix) > 0)
+            solver.matrix_changed();
         }
+        solver.solve(solution, rhs);
+        discretization.constraints.distribute(solution);
+        ghosted_solution = solution;
         if (requires_contact && !is_solution_of_system(solution, rhs))
           {
             result.lost_contact = true;
@@ -122,7 +109,6 @@ namespace liftoff
             result.lost_contact = true;
             return result;
           }
-        matrix_is_current = false;
       }
     return result;
   }

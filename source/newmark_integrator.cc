@@ -78,6 +78,17 @@ namespace liftoff
 
 
   void
+  NewmarkIntegrator::predict(const LA::MPI::Vector &u,
+                             const LA::MPI::Vector &v,
+                             const LA::MPI::Vector &a,
+                             LA::MPI::Vector       &u_predicted) const
+  {
+    u_predicted = u;
+    u_predicted.add(time_step, v, 0.5 * time_step * time_step, a);
+  }
+
+
+  void
   NewmarkIntegrator::advance(const LA::MPI::Vector &u_new,
                              LA::MPI::Vector       &u,
                              LA::MPI::Vector       &v,

@@ -1,6 +1,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/trilinos_precondition.h>
 
 #include <liftoff/plate_matrices.h>
 
@@ -132,5 +134,17 @@ namespace liftoff
         }
     stiffness.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);
+  }
+
+
+  void
+  PlateMatrices::solve_with_mass(LA::MPI::Vector       &x,
+                                 const LA::MPI::Vector &b) const
+  {
+    SolverControl control(10000, std::max(1e-13 * b.l2_norm(), 1e-300));
+    SolverCG<LA::MPI::Vector>            cg(control);
+    TrilinosWrappers::PreconditionJacobi jacobi;
+    jacobi.initialize(mass);
+    cg.solve(mass, x, b, jacobi);
   }
 } // namespace liftoff

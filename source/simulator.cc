@@ -100,7 +100,6 @@ namespace liftoff
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
-    mass_solver.parse_parameters(prm);
     active_set.parse_parameters(prm);
     field_output.parse_parameters(prm);
     time_history.parse_parameters(prm);
@@ -297,11 +296,10 @@ namespace liftoff
   void
   Simulator::run_static()
   {
-    active_set.set_base_matrix(matrices.stiffness);
     const bool needs_contact    = !discretization.has_kinematic_support();
     active_set.requires_contact = needs_contact;
     foundation.activate_all();
-    active_set.contact_set_changed();
+    active_set.set_base_matrix(matrices.stiffness);
 
     LA::MPI::Vector load;
     discretization.reinit_vector(load);
@@ -349,25 +347,23 @@ namespace liftoff
     {
       TimerOutput::Scope t(timer, "initial acceleration");
       foundation.update_contact_status(ghosted_u);
-      LA::MPI::SparseMatrix foundation_matrix;
-      discretization.reinit_matrix(foundation_matrix);
-      foundation.assemble_matrix(foundation_matrix);
-      foundation_matrix.add(1.0, matrices.stiffness);
-      foundation_matrix.vmult(rhs, u);
+      matrices.stiffness.vmult(rhs, u);
+      foundation.add_reaction(ghosted_u, rhs);
       rhs.sadd(-1.0, 1.0, load);
-      mass_solver.prepare(matrices.mass, discretization);
-      mass_solver.solve(a, rhs);
+      matrices.solve_with_mass(a, rhs);
       discretization.constraints.distribute(a);
     }
 
-    // Effective matrix without the foundation: assembled once per dt.
-    LA::MPI::SparseMatrix base;
-    discretization.reinit_matrix(base);
-    base.copy_from(matrices.stiffness);
-    base.add(newmark.mass_factor(), matrices.mass);
-    active_set.set_base_matrix(base);
-    foundation.activate_all(); // the first iterate is the bilateral problem
-    active_set.contact_set_changed();
+    // The first iterate is the bilateral problem. The effective matrix
+    // without the foundation is needed only to build the system matrix.
+    foundation.activate_all();
+    {
+      LA::MPI::SparseMatrix base;
+      discretization.reinit_matrix(base);
+      base.copy_from(matrices.stiffness);
+      base.add(newmark.mass_factor(), matrices.mass);
+      active_set.set_base_matrix(base);
+    }
 
     double              work    = 0;
     const EnergyBalance initial = energies(0.0);
@@ -383,7 +379,7 @@ namespace liftoff
           matrices.mass.vmult(rhs, history_term);
           rhs += next_load;
         }
-        u_new             = u;
+        newmark.predict(u, v, a, u_new);
         const auto result = active_set.solve(rhs, u_new, ghosted_u);
         AssertThrow(result.converged,
                     ExcMessage("The active set did not settle in "
@@ -425,6 +421,12 @@ namespace liftoff
           largest = std::max(largest, r.iterations);
           ++n;
         }
+    const LinearSolver            &solver = active_set.linear_solver();
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const double peak_memory_mb =
+      Utilities::MPI::max(memory.VmHWM / 1024.0, mpi_communicator);
+
     std::ostringstream text;
     text << "status: " << status << '\n'
          << "analysis: "
@@ -440,7 +442,15 @@ namespace liftoff
          << "active-set iterations per step, mean: "
          << (n > 0 ? double(total) / n : 0.0) << '\n'
          << "active-set iterations per step, max: " << largest << '\n'
-         << "factorisations: " << active_set.n_factorisations() << '\n';
+         << "factorisations: " << solver.n_preparations << '\n'
+         << "substitutions: " << solver.n_substitutions << '\n'
+         << "time per substitution [s]: "
+         << (solver.n_substitutions > 0
+               ? solver.substitution_timer.wall_time() / solver.n_substitutions
+               : 0.0)
+         << '\n'
+         << "CG iterations: " << solver.n_cg_iterations << '\n'
+         << "peak memory per rank, max [MB]: " << peak_memory_mb << '\n';
 
     const auto timings =
       timer.get_summary_data(TimerOutput::OutputData::total_wall_time);
@@ -484,6 +494,13 @@ namespace liftoff
   Simulator::solution() const
   {
     return ghosted_u;
+  }
+
+
+  unsigned int
+  Simulator::n_factorisations() const
+  {
+    return active_set.linear_solver().n_preparations;
   }
 
 

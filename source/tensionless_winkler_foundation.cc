@@ -2,6 +2,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <algorithm>
+
 #include <liftoff/tensionless_winkler_foundation.h>
 
 namespace liftoff
@@ -63,6 +65,7 @@ namespace liftoff
     FEValues<2> fe_values(disc.mapping, fe, rule, update_JxW_values);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     cell_w_dof_indices.clear();
+    cell_w_dof_is_constrained.clear();
     cell_index.clear();
     jxw.clear();
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
@@ -71,21 +74,45 @@ namespace liftoff
           fe_values.reinit(cell);
           cell->get_dof_indices(dofs);
           for (const unsigned int i : w_dofs)
-            cell_w_dof_indices.push_back(dofs[i]);
+            {
+              cell_w_dof_indices.push_back(dofs[i]);
+              // The foundation term skips constrained rows and columns,
+              // which is what condensation does for constraints of the form
+              // w_i = g_i; coupling constraints would need more.
+              const auto *entries =
+                disc.constraints.get_constraint_entries(dofs[i]);
+              AssertThrow(entries == nullptr || entries->empty(),
+                          ExcNotImplemented());
+              cell_w_dof_is_constrained.push_back(
+                disc.constraints.is_constrained(dofs[i]));
+            }
           for (unsigned int q = 0; q < n_q_points; ++q)
             jxw.push_back(fe_values.JxW(q));
           cell_index.push_back(cell->active_cell_index());
         }
     in_contact.assign(jxw.size(), model == Model::none ? 0 : 1);
+    in_matrix = in_contact;
+    points_to_update.clear();
+  }
+
+
+  void
+  TensionlessWinklerFoundation::set_status(const unsigned int  i,
+                                           const unsigned char status)
+  {
+    if (in_contact[i] == status)
+      return;
+    in_contact[i] = status;
+    points_to_update.push_back(i);
   }
 
 
   void
   TensionlessWinklerFoundation::activate_all()
   {
-    std::fill(in_contact.begin(),
-              in_contact.end(),
-              model == Model::none ? 0 : 1);
+    if (model != Model::none)
+      for (unsigned int i = 0; i < in_contact.size(); ++i)
+        set_status(i, 1);
   }
 
 
@@ -118,10 +145,10 @@ namespace liftoff
             deflection_at_gauss_points(u, c, w);
             for (unsigned int q = 0; q < n_q_points; ++q)
               {
-                const unsigned char now    = (w[q] > 0.0 ? 1 : 0);
-                unsigned char      &status = in_contact[c * n_q_points + q];
-                n_changed += (now != status);
-                status = now;
+                const unsigned int  i   = c * n_q_points + q;
+                const unsigned char now = (w[q] > 0.0 ? 1 : 0);
+                n_changed += (now != in_contact[i]);
+                set_status(i, now);
               }
           }
       }
@@ -130,38 +157,127 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::assemble_matrix(
-    LA::MPI::SparseMatrix &matrix) const
+  TensionlessWinklerFoundation::add_cell_term(
+    const unsigned int         c,
+    const std::vector<double> &weight,
+    LA::MPI::SparseMatrix     &matrix) const
   {
-    matrix                                   = 0;
+    const unsigned int n_w = w_dofs.size();
+    FullMatrix<double> cell_matrix(n_w, n_w);
+    for (unsigned int q = 0; q < n_q_points; ++q)
+      if (weight[q] != 0.0)
+        for (unsigned int i = 0; i < n_w; ++i)
+          for (unsigned int j = 0; j < n_w; ++j)
+            cell_matrix(i, j) +=
+              weight[q] * shape_values(q, i) * shape_values(q, j);
+
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (unsigned int i = 0; i < n_w; ++i)
+      {
+        if (cell_w_dof_is_constrained[c * n_w + i])
+          continue;
+        columns.clear();
+        values.clear();
+        for (unsigned int j = 0; j < n_w; ++j)
+          if (!cell_w_dof_is_constrained[c * n_w + j])
+            {
+              columns.push_back(cell_w_dof_indices[c * n_w + j]);
+              values.push_back(cell_matrix(i, j));
+            }
+        matrix.add(cell_w_dof_indices[c * n_w + i], columns, values, false);
+      }
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_to_matrix(LA::MPI::SparseMatrix &matrix)
+  {
+    std::vector<double> weight(n_q_points);
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        bool any = false;
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            weight[q]            = in_contact[i] * stiffness * jxw[i];
+            any                  = any || in_contact[i];
+          }
+        if (any)
+          add_cell_term(c, weight, matrix);
+      }
+    matrix.compress(VectorOperation::add);
+    in_matrix = in_contact;
+    points_to_update.clear();
+  }
+
+
+  unsigned long
+  TensionlessWinklerFoundation::update_matrix(LA::MPI::SparseMatrix &matrix)
+  {
+    // Points are listed in the order they changed; group them by cell so a
+    // cell's entries are added once. A point may have changed and changed
+    // back: only a difference from the matrix counts.
+    std::sort(points_to_update.begin(), points_to_update.end());
+    points_to_update.erase(std::unique(points_to_update.begin(),
+                                       points_to_update.end()),
+                           points_to_update.end());
+    unsigned long       n_updated = 0;
+    std::vector<double> weight(n_q_points);
+    for (auto p = points_to_update.begin(); p != points_to_update.end();)
+      {
+        const unsigned int c = *p / n_q_points;
+        std::fill(weight.begin(), weight.end(), 0.0);
+        bool any = false;
+        for (; p != points_to_update.end() && *p / n_q_points == c; ++p)
+          if (in_contact[*p] != in_matrix[*p])
+            {
+              weight[*p % n_q_points] =
+                (in_contact[*p] ? 1.0 : -1.0) * stiffness * jxw[*p];
+              in_matrix[*p] = in_contact[*p];
+              any           = true;
+              ++n_updated;
+            }
+        if (any)
+          add_cell_term(c, weight, matrix);
+      }
+    points_to_update.clear();
+    n_updated =
+      Utilities::MPI::sum(n_updated, discretization->mpi_communicator);
+    if (n_updated > 0)
+      matrix.compress(VectorOperation::add);
+    return n_updated;
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_reaction(const LA::MPI::Vector &u,
+                                             LA::MPI::Vector &vector) const
+  {
     const unsigned int                   n_w = w_dofs.size();
-    FullMatrix<double>                   cell_matrix(n_w, n_w);
+    Vector<double>                       cell_vector(n_w);
     std::vector<types::global_dof_index> dofs(n_w);
+    std::vector<double>                  w;
     if (model != Model::none)
       for (unsigned int c = 0; c < cell_index.size(); ++c)
         {
-          cell_matrix = 0;
-          bool any    = false;
+          deflection_at_gauss_points(u, c, w);
+          cell_vector = 0;
           for (unsigned int q = 0; q < n_q_points; ++q)
-            if (in_contact[c * n_q_points + q])
-              {
-                any            = true;
-                const double k = stiffness * jxw[c * n_q_points + q];
-                for (unsigned int i = 0; i < n_w; ++i)
-                  for (unsigned int j = 0; j < n_w; ++j)
-                    cell_matrix(i, j) +=
-                      k * shape_values(q, i) * shape_values(q, j);
-              }
-          if (!any)
-            continue;
+            {
+              const unsigned int i = c * n_q_points + q;
+              for (unsigned int k = 0; k < n_w; ++k)
+                cell_vector(k) += in_contact[i] * stiffness * jxw[i] * w[q]
+                                  * shape_values(q, k);
+            }
           std::copy(cell_w_dof_indices.begin() + c * n_w,
                     cell_w_dof_indices.begin() + (c + 1) * n_w,
                     dofs.begin());
-          discretization->constraints.distribute_local_to_global(cell_matrix,
+          discretization->constraints.distribute_local_to_global(cell_vector,
                                                                  dofs,
-                                                                 matrix);
+                                                                 vector);
         }
-    matrix.compress(VectorOperation::add);
+    vector.compress(VectorOperation::add);
   }
 
 

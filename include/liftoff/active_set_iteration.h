@@ -16,9 +16,11 @@ namespace liftoff
    * The iteration of eq. (3.9): solve (B + K_f(S)) u = b with the foundation
    * stiffness of the current contact set S, rebuild S from u at the Gauss
    * points, repeat until S no longer changes. B (plate stiffness plus the
-   * time integrator's mass term) is fixed; only K_f is rebuilt, and the
-   * system is refactorised only when S has changed since the last
-   * factorisation, so a step whose set does not move costs one solve.
+   * time integrator's mass term) is fixed for a mesh and time step; the
+   * system matrix B + K_f(S) is built and factorised once and afterwards
+   * only the springs of the Gauss points whose status flipped are added or
+   * removed, and the LinearSolver reuses its factor. A step whose set does
+   * not move costs one substitution.
    * Its parameters include those of the LinearSolver it owns.
    */
   class ActiveSetIteration
@@ -42,13 +44,10 @@ namespace liftoff
                        TensionlessWinklerFoundation &foundation,
                        TimerOutput                  &timer);
 
-    /// Use B from now on (a new mesh or time step).
+    /// Use B from now on (a new mesh or time step): builds B + K_f(S) for
+    /// the current set and factorises it. B may be destroyed afterwards.
     void
     set_base_matrix(const LA::MPI::SparseMatrix &B);
-
-    /// The contact set was changed from outside (e.g. activate_all()).
-    void
-    contact_set_changed();
 
     /// Solve; `solution` holds the result (owned entries, constraints
     /// distributed) and `ghosted_solution` the same with ghosts.
@@ -57,9 +56,9 @@ namespace liftoff
           LA::MPI::Vector       &solution,
           LA::MPI::Vector       &ghosted_solution);
 
-    /// Factorisations (or preconditioner set-ups) so far.
-    unsigned int
-    n_factorisations() const;
+    /// The linear solver, for its counters.
+    const LinearSolver &
+    linear_solver() const;
 
     unsigned int max_iterations = 50;
     /// Nothing but the foundation holds the plate (a static free plate):
@@ -70,10 +69,8 @@ namespace liftoff
     const Discretization         &discretization;
     TensionlessWinklerFoundation &foundation;
     TimerOutput                  &timer;
-    const LA::MPI::SparseMatrix  *base_matrix = nullptr;
-    LA::MPI::SparseMatrix         foundation_matrix;
-    LA::MPI::SparseMatrix         matrix;
-    bool                          matrix_is_current = false;
+    /// B + K_f(S), kept in step with S.
+    LA::MPI::SparseMatrix matrix;
     /// Declared after `matrix`: a factorisation must die before its matrix.
     LinearSolver solver;
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/lac/solver_control.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
@@ -15,12 +15,24 @@ namespace liftoff
   using namespace dealii;
 
   /**
-   * Solves A x = b for a matrix that is set up once with `prepare()` and then
-   * used for as many right hand sides as needed: a sparse direct
-   * factorisation (Trilinos Amesos: KLU or MUMPS) or conjugate gradients
-   * with algebraic multigrid (Trilinos ML). Neither assumes that the plate
-   * stiffness alone is invertible; the effective matrices of liftoff are
-   * made regular by the mass or the foundation.
+   * Solves A x = b for a matrix that changes a little between solves: the
+   * effective matrix of a time step plus the foundation term of the current
+   * contact set.
+   *
+   * `direct` factorises A once (Trilinos Amesos: MUMPS or KLU) and keeps the
+   * factor. While A is the factorised matrix, a solve is one forward and back
+   * substitution. After A has changed (matrix_changed()), the stored factor
+   * preconditions conjugate gradients on the new A; the change, a few Gauss
+   * points' springs, is small against M / (beta dt^2), so CG needs one or two
+   * iterations. Only when it needs more than `Refactorisation threshold`
+   * iterations is A factorised anew.
+   *
+   * `cg` builds an algebraic multigrid preconditioner (Trilinos ML) once per
+   * prepare() and keeps it for the changed matrices.
+   *
+   * Neither assumes that the plate stiffness alone is invertible; the
+   * effective matrices of liftoff are made regular by the mass or the
+   * foundation.
    */
   class LinearSolver
   {
@@ -30,16 +42,37 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
+    /// Section "factorisation" for factorisations and preconditioner
+    /// set-ups, "solve" for the rest of a solve.
+    explicit LinearSolver(TimerOutput &timer);
+
     /// Factorise A, or build its preconditioner. A must outlive the solves.
     void
     prepare(const LA::MPI::SparseMatrix &A, const Discretization &disc);
 
-    /// x holds the initial guess for CG on entry.
+    /// The matrix given to prepare() has been changed in place.
     void
+    matrix_changed();
+
+    /// Solve A x = b with the matrix given to prepare(); x holds the
+    /// initial guess on entry. Returns the CG iterations (0 for a plain
+    /// substitution).
+    unsigned int
     solve(LA::MPI::Vector &x, const LA::MPI::Vector &b);
 
-    /// Number of factorisations or preconditioner set-ups so far.
+    /// Factorisations or preconditioner set-ups so far.
     unsigned int n_preparations = 0;
+    /// Forward and back substitutions with a stored factor so far, and the
+    /// wall time they took.
+    mutable unsigned int n_substitutions = 0;
+    mutable Timer        substitution_timer;
+    /// CG iterations so far.
+    unsigned long n_cg_iterations = 0;
+
+    /// Apply the stored factor's inverse: dst = A_f^{-1} src. This makes
+    /// the solver the preconditioner of its own CG.
+    void
+    vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const;
 
   private:
     enum class Type
@@ -47,14 +80,26 @@ namespace liftoff
       direct,
       cg
     };
-    Type         type           = Type::direct;
-    std::string  direct_package = "Amesos_Klu";
-    double       tolerance      = 1e-12;
-    unsigned int max_iterations = 10000;
+    Type         type                      = Type::direct;
+    std::string  direct_package            = "Amesos_Mumps";
+    double       tolerance                 = 1e-12;
+    unsigned int max_iterations            = 10000;
+    unsigned int refactorisation_threshold = 8;
 
-    const LA::MPI::SparseMatrix                       *matrix = nullptr;
-    SolverControl                                      control;
+    TimerOutput                 &timer;
+    const Discretization        *discretization = nullptr;
+    const LA::MPI::SparseMatrix *matrix         = nullptr;
+    /// The factor belongs to the matrix as it is now.
+    bool                                               factor_is_exact = false;
+    SolverControl                                      direct_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+
+    /// CG to the tolerance in at most `max_steps` iterations; throws
+    /// SolverControl::NoConvergence otherwise.
+    unsigned int
+    conjugate_gradients(LA::MPI::Vector       &x,
+                        const LA::MPI::Vector &b,
+                        const unsigned int     max_steps);
   };
 } // namespace liftoff

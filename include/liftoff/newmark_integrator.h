@@ -39,6 +39,14 @@ namespace liftoff
                  const LA::MPI::Vector &a,
                  LA::MPI::Vector       &h) const;
 
+    /// u_n + dt v_n + dt^2/2 a_n, u_{n+1} if the acceleration stayed a_n:
+    /// the initial guess for an iterative solve of the step.
+    void
+    predict(const LA::MPI::Vector &u,
+            const LA::MPI::Vector &v,
+            const LA::MPI::Vector &a,
+            LA::MPI::Vector       &u_predicted) const;
+
     /// Given u_{n+1}, overwrite (u, v, a) with the state at t_{n+1}.
     void
     advance(const LA::MPI::Vector &u_new,

@@ -32,6 +32,12 @@ namespace liftoff
     void
     assemble(const Discretization &discretization, const MindlinPlate &plate);
 
+    /// Solve M x = b (conjugate gradients with Jacobi: the consistent mass
+    /// matrix is well conditioned on any mesh, so no factorisation is
+    /// needed for the initial acceleration).
+    void
+    solve_with_mass(LA::MPI::Vector &x, const LA::MPI::Vector &b) const;
+
     ShearIntegration shear_integration = ShearIntegration::full;
 
     LA::MPI::SparseMatrix stiffness;

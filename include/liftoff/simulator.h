@@ -8,7 +8,6 @@
 #include <liftoff/active_set_iteration.h>
 #include <liftoff/discretization.h>
 #include <liftoff/field_output.h>
-#include <liftoff/linear_solver.h>
 #include <liftoff/load_set.h>
 #include <liftoff/mindlin_plate.h>
 #include <liftoff/newmark_integrator.h>
@@ -71,6 +70,9 @@ namespace liftoff
     history() const;
     const LA::MPI::Vector &
     solution() const;
+    /// Factorisations (or preconditioner set-ups) of the run.
+    unsigned int
+    n_factorisations() const;
     const Discretization &
     get_discretization() const;
 
@@ -92,7 +94,6 @@ namespace liftoff
     TensionlessWinklerFoundation foundation;
     LoadSet                      loads;
     NewmarkIntegrator            newmark;
-    LinearSolver                 mass_solver; // for the initial acceleration
     ActiveSetIteration           active_set;
     FieldOutput                  field_output;
     TimeHistory                  time_history;

@@ -22,6 +22,12 @@ namespace liftoff
    *
    * The `bilateral` model keeps every point active (linear springs), and
    * `none` removes the foundation.
+   *
+   * The class also keeps a system matrix's foundation term in step with the
+   * status: add_to_matrix() adds the whole term once, and update_matrix()
+   * adds or removes only the points whose status changed since, so an
+   * active-set iteration costs a pass over the flipped points, not a
+   * reassembly.
    */
   class TensionlessWinklerFoundation
   {
@@ -50,9 +56,21 @@ namespace liftoff
     unsigned long
     update_contact_status(const LA::MPI::Vector &ghosted_solution);
 
-    /// The foundation stiffness for the current status (matrix is zeroed).
+    /// Add the foundation stiffness K_f of the current status to `matrix`
+    /// and remember that `matrix` now holds it.
     void
-    assemble_matrix(LA::MPI::SparseMatrix &matrix) const;
+    add_to_matrix(LA::MPI::SparseMatrix &matrix);
+
+    /// Bring the K_f held in `matrix` (by add_to_matrix()) up to date with
+    /// the status: only the points that changed are touched. Returns the
+    /// number of points updated over all ranks (0: `matrix` is unchanged).
+    unsigned long
+    update_matrix(LA::MPI::SparseMatrix &matrix);
+
+    /// vector += K_f(status) u, the springs' reaction to u.
+    void
+    add_reaction(const LA::MPI::Vector &ghosted_solution,
+                 LA::MPI::Vector       &vector) const;
 
     /// Energy stored in the springs, 1/2 Gamma int max(w,0)^2 (or w^2 when
     /// bilateral), on the meshed part.
@@ -83,6 +101,24 @@ namespace liftoff
     std::vector<unsigned int>            cell_index;
     std::vector<double>                  jxw;
     std::vector<unsigned char>           in_contact;
+    /// The status that the matrix given to add_to_matrix() holds, and the
+    /// points whose status may differ from it.
+    std::vector<unsigned char> in_matrix;
+    std::vector<unsigned int>  points_to_update;
+    /// Whether dof i (by local w index within a cell c) is constrained;
+    /// constrained rows and columns carry no foundation term.
+    std::vector<unsigned char> cell_w_dof_is_constrained;
+
+    /// Record a status change of point i for update_matrix().
+    void
+    set_status(const unsigned int i, const unsigned char status);
+
+    /// matrix += sum_q weight[q] phi(x_q) phi(x_q)^T on owned cell c,
+    /// without the constrained rows and columns.
+    void
+    add_cell_term(const unsigned int         c,
+                  const std::vector<double> &weight,
+                  LA::MPI::SparseMatrix     &matrix) const;
 
     /// w_h at the Gauss points of owned cell c.
     void
