@@ -56,6 +56,8 @@ COLUMNS = [
     ("per_iteration", "per it."),
     ("substitution", "subst."),
     ("ratio", "it./subst."),
+    ("per_iteration_steady", "per it. w/o factor."),
+    ("ratio_steady", "w/o factor./subst."),
     ("memory_mb", "peak MB/rank"),
 ]
 
@@ -188,21 +190,38 @@ def run_one(scene, overrides, ranks, label):
     return row
 
 
+def derived(row):
+    """Columns computed from the others (also for rows of older CSVs): the
+    time in the active-set loop per iteration without factorisations, and
+    its ratio to a substitution."""
+    iterations = float(row["iter_mean"]) * int(row["steps"])
+    steady = sum(float(row[k]) for k in ("foundation", "solve", "contact"))
+    row["per_iteration_steady"] = "%.4f" % (steady / max(iterations, 1))
+    if row.get("substitution"):
+        row["ratio_steady"] = "%.2f" % (steady / max(iterations, 1)
+                                        / float(row["substitution"]))
+    else:
+        row["ratio_steady"] = ""
+    return row
+
+
 def write_tables(new_rows):
-    exists = os.path.exists(RESULTS_CSV)
-    with open(RESULTS_CSV, "a", newline="") as f:
+    rows = []
+    if os.path.exists(RESULTS_CSV):
+        with open(RESULTS_CSV) as f:
+            rows = list(csv.DictReader(f))
+    rows = [derived(r) for r in rows + new_rows]
+    with open(RESULTS_CSV, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=[k for k, _ in COLUMNS])
-        if not exists:
-            writer.writeheader()
-        writer.writerows(new_rows)
-    with open(RESULTS_CSV) as f:
-        rows = list(csv.DictReader(f))
+        writer.writeheader()
+        writer.writerows(rows)
     lines = ["# Benchmark results",
              "",
              "Written by `benchmarks/run.py` from `results.csv`; times in "
              "seconds. `per step` excludes set-up; `per it.` is the time in "
              "the active-set loop (K_f update, factorisation, solve, contact "
-             "update) per iteration; `subst.` is one forward and back "
+             "update) per iteration, `per it. w/o factor.` the same without "
+             "the factorisations; `subst.` is one forward and back "
              "substitution with the stored factor, measured in the same run.",
              "",
              "| " + " | ".join(h for _, h in COLUMNS) + " |",
@@ -248,7 +267,7 @@ def main():
         build()
     rows = []
     for scene in args.scenes:
-        row = run_one(scene, args.set, args.ranks, args.label)
+        row = derived(run_one(scene, args.set, args.ranks, args.label))
         rows.append(row)
         print("  ".join("%s=%s" % (h, row[k]) for k, h in COLUMNS[3:]),
               flush=True)
