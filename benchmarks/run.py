@@ -138,6 +138,12 @@ def run_one(scene, overrides, ranks, label):
     with open(os.path.join(directory, "log.txt"), "w") as log:
         sh(["/usr/bin/time", "-f", "%e %M", "-o", time_file] + command,
            stdout=log, stderr=subprocess.STDOUT)
+    return tabulate(directory, scene, overrides, ranks, label)
+
+
+def tabulate(directory, scene, overrides, ranks, label):
+    """One table row from a run's folder."""
+    time_file = os.path.join(directory, "time.txt")
     with open(time_file) as f:
         rss_kb = float(f.read().split()[-1])
     values, sections = parse_summary(os.path.join(directory, "summary.txt"))
@@ -156,7 +162,7 @@ def run_one(scene, overrides, ranks, label):
     output = section("output")
     loop = foundation + factorisation + solve + contact
     iterations = iter_mean * steps
-    substitution = float(values.get("time per substitution [s]", "nan"))
+    substitution = float(values.get("time per substitution [s]", "0"))
     memory_mb = float(values.get("peak memory per rank, max [MB]",
                                  rss_kb / 1024.0))
     row = {
@@ -181,10 +187,9 @@ def run_one(scene, overrides, ranks, label):
         "rest": "%.2f" % (wall - setup - loop - output),
         "per_step": "%.4f" % ((wall - setup) / max(steps, 1)),
         "per_iteration": "%.4f" % (loop / max(iterations, 1)),
-        "substitution": ("%.4f" % substitution
-                         if substitution == substitution else ""),
+        "substitution": "%.4f" % substitution if substitution > 0 else "",
         "ratio": ("%.2f" % (loop / max(iterations, 1) / substitution)
-                  if substitution == substitution else ""),
+                  if substitution > 0 else ""),
         "memory_mb": "%.0f" % memory_mb,
     }
     return row
@@ -197,7 +202,7 @@ def derived(row):
     iterations = float(row["iter_mean"]) * int(row["steps"])
     steady = sum(float(row[k]) for k in ("foundation", "solve", "contact"))
     row["per_iteration_steady"] = "%.4f" % (steady / max(iterations, 1))
-    if row.get("substitution"):
+    if row.get("substitution") and float(row["substitution"]) > 0:
         row["ratio_steady"] = "%.2f" % (steady / max(iterations, 1)
                                         / float(row["substitution"]))
     else:
@@ -251,6 +256,9 @@ def main():
                         "(e.g. an older commit's, for a baseline)")
     parser.add_argument("--commit", help="commit to record with "
                         "--executable")
+    parser.add_argument("--tabulate", metavar="RUN_FOLDER",
+                        help="do not run: tabulate this finished run of the "
+                        "one scene given (with its --label, --ranks, --set)")
     args = parser.parse_args()
     global EXECUTABLE, COMMIT
     if args.executable:
@@ -263,6 +271,11 @@ def main():
     for scene in args.scenes:
         if not os.path.exists(os.path.join(HERE, "scenes", scene + ".prm")):
             parser.error("no scene benchmarks/scenes/%s.prm" % scene)
+    if args.tabulate:
+        row = derived(tabulate(args.tabulate, args.scenes[0], args.set,
+                               args.ranks, args.label))
+        write_tables([row])
+        return 0
     if not args.no_build:
         build()
     rows = []
