@@ -23,6 +23,15 @@ namespace liftoff
                       Patterns::Double(0.0),
                       "Gamma = K_f L^4 / D, the dimensionless Winkler "
                       "modulus.");
+    prm.declare_entry(
+      "Contact tolerance",
+      "1e-9",
+      Patterns::Double(0.0, 1.0),
+      "A Gauss point is in contact when w_h > tolerance * max |w_h| (the "
+      "maximum over all Gauss points of the plate). Where |w_h| is at "
+      "round-off level its sign depends on the linear solver and the "
+      "number of ranks; such points count as not pressed. 0 gives the bare "
+      "rule w_h > 0.");
     prm.leave_subsection();
   }
 
@@ -36,6 +45,7 @@ namespace liftoff
                                 ? Model::tensionless
                                 : (name == "bilateral" ? Model::bilateral : Model::none));
     stiffness              = prm.get_double("Stiffness");
+    contact_tolerance      = prm.get_double("Contact tolerance");
     prm.leave_subsection();
     AssertThrow(model == Model::none || stiffness > 0,
                 ExcMessage("Foundation/Stiffness (Gamma) must be > 0, or set "
@@ -91,6 +101,7 @@ namespace liftoff
           cell_index.push_back(cell->active_cell_index());
         }
     in_contact.assign(jxw.size(), model == Model::none ? 0 : 1);
+    w_at_points.resize(jxw.size());
     in_matrix = in_contact;
     points_to_update.clear();
   }
@@ -136,23 +147,30 @@ namespace liftoff
   unsigned long
   TensionlessWinklerFoundation::update_contact_status(const LA::MPI::Vector &u)
   {
-    unsigned long n_changed = 0;
-    if (model == Model::tensionless)
+    if (model != Model::tensionless)
+      return 0;
+    // Two passes: the threshold needs the largest |w_h| of the whole plate.
+    std::vector<double> w;
+    double              largest = 0;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
       {
-        std::vector<double> w;
-        for (unsigned int c = 0; c < cell_index.size(); ++c)
-          {
-            deflection_at_gauss_points(u, c, w);
-            for (unsigned int q = 0; q < n_q_points; ++q)
-              {
-                const unsigned int  i   = c * n_q_points + q;
-                const unsigned char now = (w[q] > 0.0 ? 1 : 0);
-                n_changed += (now != in_contact[i]);
-                set_status(i, now);
-              }
-          }
+        deflection_at_gauss_points(u, c, w);
+        std::copy(w.begin(), w.end(), w_at_points.begin() + c * n_q_points);
+        for (const double value : w)
+          largest = std::max(largest, std::abs(value));
       }
-    return Utilities::MPI::sum(n_changed, discretization->mpi_communicator);
+    const MPI_Comm comm = discretization->mpi_communicator;
+    const double   threshold =
+      contact_tolerance * Utilities::MPI::max(largest, comm);
+
+    unsigned long n_changed = 0;
+    for (unsigned int i = 0; i < in_contact.size(); ++i)
+      {
+        const unsigned char now = (w_at_points[i] > threshold ? 1 : 0);
+        n_changed += (now != in_contact[i]);
+        set_status(i, now);
+      }
+    return Utilities::MPI::sum(n_changed, comm);
   }
 
 

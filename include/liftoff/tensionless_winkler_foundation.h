@@ -51,7 +51,8 @@ namespace liftoff
     void
     activate_all();
 
-    /// Status from w_h at the Gauss points. Returns the number of points
+    /// Status from w_h at the Gauss points: in contact where
+    /// w_h > contact_tolerance * max |w_h|. Returns the number of points
     /// (over all ranks) whose status changed.
     unsigned long
     update_contact_status(const LA::MPI::Vector &ghosted_solution);
@@ -86,8 +87,9 @@ namespace liftoff
     Vector<float>
     contact_fraction_per_cell() const;
 
-    Model  model     = Model::tensionless;
-    double stiffness = 1.0;
+    Model  model             = Model::tensionless;
+    double stiffness         = 1.0;
+    double contact_tolerance = 1e-9;
 
   private:
     const Discretization *discretization = nullptr;
@@ -101,6 +103,8 @@ namespace liftoff
     std::vector<unsigned int>            cell_index;
     std::vector<double>                  jxw;
     std::vector<unsigned char>           in_contact;
+    /// w_h at the points, kept between the two passes of a status update.
+    std::vector<double> w_at_points;
     /// The status that the matrix given to add_to_matrix() holds, and the
     /// points whose status may differ from it.
     std::vector<unsigned char> in_matrix;
