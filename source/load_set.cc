@@ -165,6 +165,10 @@ namespace liftoff
       {{Kind::point, "Point load"},
        {Kind::pressure, "Pressure"},
        {Kind::line, "Line load"}}};
+    // Regions are checked against the plate once the plate is known; here
+    // only their form.
+    const BoundingBox<2> unbounded(
+      std::make_pair(Point<2>(-1e300, -1e300), Point<2>(1e300, 1e300)));
     for (const auto &[kind, kind_name] : kinds)
       for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
         {
@@ -174,40 +178,43 @@ namespace liftoff
           load.kind      = kind;
           load.name      = "Loads/" + section;
           load.magnitude = prm.get_double("Magnitude");
-          if (load.magnitude != 0.0)
+          // A load that is off (Magnitude 0) is checked all the same: a
+          // broken expression is an error whether or not it is used yet.
+          load.history_expression = prm.get("Time history");
+          load.history            = make_parser<1>("tau",
+                                        load.history_expression,
+                                        false,
+                                        load.name + "/Time history");
+          if (kind == Kind::point)
             {
-              load.history_expression = prm.get("Time history");
-              load.history            = make_parser<1>("tau",
-                                            load.history_expression,
-                                            false,
-                                            load.name + "/Time history");
-              if (kind == Kind::point)
+              const auto xy = Utilities::string_to_double(
+                Utilities::split_string_list(prm.get("Position"), ','));
+              load.position = Point<2>(xy[0], xy[1]);
+            }
+          else
+            {
+              load.intensity_expression = prm.get("Intensity");
+              load.intensity            = make_parser<2>("x,y,tau",
+                                              load.intensity_expression,
+                                              true,
+                                              load.name + "/Intensity");
+              load.intensity_depends_on_time =
+                names_tau(load.intensity_expression);
+              if (kind == Kind::pressure)
                 {
-                  const auto xy = Utilities::string_to_double(
-                    Utilities::split_string_list(prm.get("Position"), ','));
-                  load.position = Point<2>(xy[0], xy[1]);
+                  load.region = prm.get("Region");
+                  region_of(load, unbounded);
                 }
               else
                 {
-                  load.intensity_expression = prm.get("Intensity");
-                  load.intensity            = make_parser<2>("x,y,tau",
-                                                  load.intensity_expression,
-                                                  true,
-                                                  load.name + "/Intensity");
-                  load.intensity_depends_on_time =
-                    names_tau(load.intensity_expression);
-                  if (kind == Kind::pressure)
-                    load.region = prm.get("Region");
-                  else
-                    {
-                      const std::string edge = prm.get("Edge");
-                      for (unsigned int e = 0; e < 4; ++e)
-                        if (Discretization::edge_names[e] == edge)
-                          load.edge = e;
-                    }
+                  const std::string edge = prm.get("Edge");
+                  for (unsigned int e = 0; e < 4; ++e)
+                    if (Discretization::edge_names[e] == edge)
+                      load.edge = e;
                 }
-              loads.push_back(std::move(load));
             }
+          if (load.magnitude != 0.0)
+            loads.push_back(std::move(load));
           prm.leave_subsection();
         }
     prm.leave_subsection();
