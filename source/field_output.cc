@@ -109,8 +109,44 @@ namespace liftoff
     flags.cycle = step;
     data_out.set_flags(flags);
 
-    const std::string master = data_out.write_vtu_with_pvtu_record(
-      directory + "/", "solution", step, disc.mpi_communicator, 5);
+    // Every file goes to a temporary name first and is renamed when
+    // complete, and the record naming the pieces is written only after every
+    // rank has renamed its piece: a viewer never finds a half-written file.
+    const MPI_Comm     comm    = disc.mpi_communicator;
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  stem  = "solution_" + Utilities::int_to_string(step, 5);
+    const auto         piece = [&](const unsigned int r) {
+      return stem + "." + Utilities::int_to_string(r, 4) + ".vtu";
+    };
+    std::string error;
+    try
+      {
+        write_file_atomically(directory + "/" + piece(rank),
+                              [&](std::ostream &out) {
+                                data_out.write_vtu(out);
+                              });
+      }
+    catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    // A failure on one rank stops all of them here (this is also the
+    // barrier before the record), not in a later collective call.
+    AssertThrow(Utilities::MPI::max(error.empty() ? 0 : 1, comm) == 0,
+                ExcMessage("Writing " + stem + " failed: "
+                           + (error.empty() ? "on another rank" : error)));
+
+    const std::string master = stem + ".pvtu";
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(piece(r));
+        write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
+      }
 
     records.emplace_back(time, master);
     if (Utilities::MPI::this_mpi_process(disc.mpi_communicator) == 0)

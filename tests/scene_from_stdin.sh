@@ -28,5 +28,20 @@ rows=$(wc -l < generated/profiles.csv 2>/dev/null || echo 0)
 [ "$rows" -eq 23 ]; check $? "profiles.csv has 2 profiles of 11 points: $rows lines"
 n_vtu=$(grep -c 'DataSet' generated/solution.pvd 2>/dev/null || echo 0)
 [ "$n_vtu" -eq 3 ]; check $? "solution.pvd lists steps 0, 5, 10: $n_vtu"
+# Every file is complete: each record names existing, finished pieces and
+# no temporary file is left behind.
+missing=0
+n_pieces=0
+for pvtu in $(sed -n 's/.*file="\([^"]*\)".*/\1/p' generated/solution.pvd 2>/dev/null); do
+  [ -f "generated/$pvtu" ] || missing=$((missing + 1))
+  for piece in $(sed -n 's/.*Source="\([^"]*\)".*/\1/p' "generated/$pvtu" 2>/dev/null); do
+    n_pieces=$((n_pieces + 1))
+    tail -c 20 "generated/$piece" 2>/dev/null | grep -q '</VTKFile>' || missing=$((missing + 1))
+  done
+done
+[ "$missing" -eq 0 ] && [ "$n_pieces" -eq 3 ]
+check $? "the 3 records' VTU pieces exist and are complete ($n_pieces found, $missing missing or cut short)"
+n_tmp=$(find generated -name '*.tmp' | wc -l)
+[ "$n_tmp" -eq 0 ]; check $? "no temporary files left: $n_tmp"
 echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"
 [ "$failures" -eq 0 ]
