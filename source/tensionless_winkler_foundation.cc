@@ -27,11 +27,12 @@ namespace liftoff
       "Contact tolerance",
       "1e-9",
       Patterns::Double(0.0, 1.0),
-      "A Gauss point is in contact when w_h > tolerance * max |w_h| (the "
-      "maximum over all Gauss points of the plate). Where |w_h| is at "
-      "round-off level its sign depends on the linear solver and the "
-      "number of ranks; such points count as not pressed. 0 gives the bare "
-      "rule w_h > 0.");
+      "Round-off band of the contact rule, relative to max |w_h| over all "
+      "Gauss points of the plate: a point comes into contact when w_h rises "
+      "above tolerance * max |w_h| and leaves it when w_h falls below "
+      "-tolerance * max |w_h|; inside the band it keeps its status. There "
+      "the sign of w_h would depend on the linear solver and the number of "
+      "ranks. 0 gives the bare rule w_h > 0.");
     prm.leave_subsection();
   }
 
@@ -166,7 +167,12 @@ namespace liftoff
     unsigned long n_changed = 0;
     for (unsigned int i = 0; i < in_contact.size(); ++i)
       {
-        const unsigned char now = (w_at_points[i] > threshold ? 1 : 0);
+        // Hysteresis: within the round-off band a point keeps its status. A
+        // one-sided threshold would let a point in a stiff foundation's tail
+        // cycle: held below it by its spring, pushed above it without.
+        const double        w = w_at_points[i];
+        const unsigned char now =
+          (in_contact[i] ? w > -threshold : w > threshold);
         n_changed += (now != in_contact[i]);
         set_status(i, now);
       }

@@ -51,9 +51,10 @@ namespace liftoff
     void
     activate_all();
 
-    /// Status from w_h at the Gauss points: in contact where
-    /// w_h > contact_tolerance * max |w_h|. Returns the number of points
-    /// (over all ranks) whose status changed.
+    /// Status from w_h at the Gauss points: a point comes into contact where
+    /// w_h > delta and leaves it where w_h < -delta, delta =
+    /// contact_tolerance * max |w_h|. Returns the number of points (over all
+    /// ranks) whose status changed.
     unsigned long
     update_contact_status(const LA::MPI::Vector &ghosted_solution);
 
