@@ -17,6 +17,22 @@ namespace liftoff
                       "0.5",
                       Patterns::Double(0.5, 1.0),
                       "Newmark gamma, in [0.5, 1]; above 1/2 it damps.");
+    prm.declare_entry(
+      "Scheme",
+      "newmark",
+      Patterns::Selection("newmark|generalized-alpha"),
+      "newmark: Beta and Gamma as given. generalized-alpha: the scheme of "
+      "Chung and Hulbert (1993), which damps frequencies far above 1/dtau "
+      "(spectral radius at infinite frequency: Spectral radius) and keeps "
+      "second-order accuracy; Beta and Gamma are then derived from it and "
+      "not read. With Spectral radius = 1 it is Newmark's average "
+      "acceleration rule.");
+    prm.declare_entry("Spectral radius",
+                      "1",
+                      Patterns::Double(0.0, 1.0),
+                      "rho_inf in [0, 1] for Scheme = generalized-alpha: 1 "
+                      "damps nothing, 0 annihilates the highest frequencies "
+                      "in one step.");
     prm.declare_entry("Time step",
                       "5e-4",
                       Patterns::Double(0.0),
@@ -33,8 +49,18 @@ namespace liftoff
   NewmarkIntegrator::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time integration");
-    beta      = prm.get_double("Beta");
-    gamma     = prm.get_double("Gamma");
+    beta    = prm.get_double("Beta");
+    gamma   = prm.get_double("Gamma");
+    alpha_m = 0;
+    alpha_f = 0;
+    if (prm.get("Scheme") == "generalized-alpha")
+      {
+        const double rho = prm.get_double("Spectral radius");
+        alpha_m          = (2 * rho - 1) / (rho + 1);
+        alpha_f          = rho / (rho + 1);
+        beta  = 0.25 * (1 - alpha_m + alpha_f) * (1 - alpha_m + alpha_f);
+        gamma = 0.5 - alpha_m + alpha_f;
+      }
     time_step = prm.get_double("Time step");
     end_time  = prm.get_double("End time");
     prm.leave_subsection();
@@ -62,7 +88,14 @@ namespace liftoff
   double
   NewmarkIntegrator::mass_factor() const
   {
-    return 1.0 / (beta * time_step * time_step);
+    return (1 - alpha_m) / ((1 - alpha_f) * beta * time_step * time_step);
+  }
+
+
+  double
+  NewmarkIntegrator::previous_state_weight() const
+  {
+    return alpha_f / (1 - alpha_f);
   }
 
 
@@ -72,8 +105,16 @@ namespace liftoff
                                   const LA::MPI::Vector &a,
                                   LA::MPI::Vector       &h) const
   {
-    h.equ(mass_factor(), u);
-    h.add(1.0 / (beta * time_step), v, 1.0 / (2.0 * beta) - 1.0, a);
+    // (1 - alpha_m)/(beta dt^2) (u + dt v + dt^2 (1/2 - beta) a) - alpha_m a,
+    // divided by 1 - alpha_f.
+    const double c = 1.0 / (beta * time_step * time_step);
+    const double s = (1 - alpha_m) / (1 - alpha_f);
+    h.equ(s * c, u);
+    h.add(s * c * time_step,
+          v,
+          (s * c * time_step * time_step * (0.5 - beta)
+           - alpha_m / (1 - alpha_f)),
+          a);
   }
 
 
@@ -97,7 +138,7 @@ namespace liftoff
     // a_{n+1} = (u_{n+1} - u_n)/(beta dt^2) - v_n/(beta dt) - (1/(2beta)-1) a_n
     LA::MPI::Vector a_new(u_new);
     a_new.add(-1.0, u);
-    a_new *= mass_factor();
+    a_new *= 1.0 / (beta * time_step * time_step);
     a_new.add(-1.0 / (beta * time_step), v, -(1.0 / (2.0 * beta) - 1.0), a);
 
     v.add((1.0 - gamma) * time_step, a, gamma * time_step, a_new);

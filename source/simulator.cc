@@ -336,9 +336,12 @@ namespace liftoff
     const unsigned int n_steps = newmark.n_steps();
     const double       copies  = discretization.n_symmetry_copies();
 
-    LA::MPI::Vector load, next_load, rhs, history_term, u_new;
-    for (auto *vector : {&load, &next_load, &rhs, &history_term, &u_new})
+    LA::MPI::Vector load, next_load, rhs, history_term, u_new, balance;
+    for (auto *vector :
+         {&load, &next_load, &rhs, &history_term, &u_new, &balance})
       discretization.reinit_vector(*vector);
+    // Generalized-alpha weighs in the previous state's force balance.
+    const double previous_weight = newmark.previous_state_weight();
 
     // Initial acceleration from M a0 = F(0) - (K + K_f(u0)) u0, with the
     // contact set of u0.
@@ -347,10 +350,8 @@ namespace liftoff
     {
       TimerOutput::Scope t(timer, "initial acceleration");
       foundation.update_contact_status(ghosted_u);
-      matrices.stiffness.vmult(rhs, u);
-      foundation.add_reaction(ghosted_u, rhs);
-      rhs.sadd(-1.0, 1.0, load);
-      matrices.solve_with_mass(a, rhs);
+      force_balance(load, balance);
+      matrices.solve_with_mass(a, balance);
       discretization.constraints.distribute(a);
     }
 
@@ -378,6 +379,8 @@ namespace liftoff
           newmark.history_term(u, v, a, history_term);
           matrices.mass.vmult(rhs, history_term);
           rhs += next_load;
+          if (previous_weight != 0)
+            rhs.add(previous_weight, balance);
         }
         newmark.predict(u, v, a, u_new);
         const auto result = active_set.solve(rhs, u_new, ghosted_u);
@@ -399,6 +402,11 @@ namespace liftoff
 
         newmark.advance(u_new, u, v, a);
         ghosted_v = v;
+        if (previous_weight != 0)
+          {
+            TimerOutput::Scope t(timer, "right hand side");
+            force_balance(load, balance);
+          }
 
         record_step(step,
                     tau,
@@ -407,6 +415,16 @@ namespace liftoff
                     energies(work),
                     initial);
       }
+  }
+
+
+  void
+  Simulator::force_balance(const LA::MPI::Vector &load,
+                           LA::MPI::Vector       &balance) const
+  {
+    matrices.stiffness.vmult(balance, u);
+    foundation.add_reaction(ghosted_u, balance);
+    balance.sadd(-1.0, 1.0, load);
   }
 
 

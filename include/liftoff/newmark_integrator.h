@@ -9,12 +9,22 @@ namespace liftoff
   using namespace dealii;
 
   /**
-   * Newmark's method for M a + K(u) u = F, with beta and gamma from the scene
-   * (average acceleration, 1/4 and 1/2, by default). A step solves
-   *   (K(u) + M / (beta dt^2)) u_{n+1} = F_{n+1} + M h_n,
-   *   h_n = u_n / (beta dt^2) + v_n / (beta dt) + (1/(2 beta) - 1) a_n,
-   * then updates a and v. The class only knows these formulas; who solves
-   * the system (and how the foundation enters K) is not its business.
+   * The Newmark family for M a + f(u) = F, f(u) = K u + R_f(u): Newmark's
+   * method with beta and gamma from the scene (average acceleration, 1/4
+   * and 1/2, by default), or the generalized-alpha method of Chung and
+   * Hulbert (1993) with the spectral radius rho_inf. Generalized-alpha asks
+   * for the weighted balance
+   *   (1 - a_m) M a_{n+1} + a_m M a_n + (1 - a_f) f(u_{n+1}) + a_f f(u_n)
+   *     = (1 - a_f) F_{n+1} + a_f F_n,
+   * the forces weighted rather than evaluated at an intermediate state, so
+   * that rho_inf = 1 (a_m = a_f = 1/2) gives exactly Newmark's sequence when
+   * the initial acceleration is in balance. Divided by 1 - a_f, a step
+   * solves
+   *   (K + K_f(S) + c M) u_{n+1}
+   *     = F_{n+1} + M h_n + a_f/(1 - a_f) (F_n - f(u_n)),
+   * c = mass_factor(), h_n = history_term(), then updates a and v with the
+   * Newmark relations. The class only knows these formulas; who solves the
+   * system (and how the foundation enters f) is not its business.
    */
   class NewmarkIntegrator
   {
@@ -28,9 +38,16 @@ namespace liftoff
     unsigned int
     n_steps() const;
 
-    /// 1 / (beta dt^2), the factor of M in the effective matrix.
+    /// The factor of M in the effective matrix: 1 / (beta dt^2) for
+    /// Newmark, (1 - alpha_m) / ((1 - alpha_f) beta dt^2) in general.
     double
     mass_factor() const;
+
+    /// alpha_f / (1 - alpha_f): the weight of the previous state's force
+    /// balance F_n - K u_n - R_f(u_n) in the right-hand side (0 for
+    /// Newmark).
+    double
+    previous_state_weight() const;
 
     /// h_n from u_n, v_n, a_n.
     void
@@ -54,8 +71,11 @@ namespace liftoff
             LA::MPI::Vector       &v,
             LA::MPI::Vector       &a) const;
 
-    double beta      = 0.25;
-    double gamma     = 0.5;
+    double beta  = 0.25;
+    double gamma = 0.5;
+    /// Generalized-alpha weights (0 for Newmark).
+    double alpha_m   = 0;
+    double alpha_f   = 0;
     double time_step = 5e-4;
     double end_time  = 0.2;
   };

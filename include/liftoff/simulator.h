@@ -121,6 +121,9 @@ namespace liftoff
     set_initial_state();
     EnergyBalance
     energies(const double work) const;
+    /// F - K u - K_f(S) u for the current state u and contact set S.
+    void
+    force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
     /// Everything written after a step: history row, profiles, fields.
     void
     record_step(const unsigned int   step,
