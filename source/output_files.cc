@@ -24,4 +24,41 @@ namespace liftoff
                 dealii::ExcMessage("Cannot rename " + temporary + " to "
                                    + path));
   }
+
+
+  void
+  GrowingTextFile::open(const std::string &file_path,
+                        const double       interval_seconds)
+  {
+    path     = file_path;
+    interval = interval_seconds;
+    contents.str("");
+    since_written.restart();
+  }
+
+
+  std::ostream &
+  GrowingTextFile::stream()
+  {
+    return contents;
+  }
+
+
+  void
+  GrowingTextFile::write_if_due()
+  {
+    if (since_written.wall_time() >= interval)
+      flush();
+  }
+
+
+  void
+  GrowingTextFile::flush()
+  {
+    if (path.empty())
+      return;
+    write_file_atomically(path,
+                          [&](std::ostream &out) { out << contents.str(); });
+    since_written.restart();
+  }
 } // namespace liftoff

@@ -86,10 +86,10 @@ namespace liftoff
     if (directory.empty()
         || Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
       return;
-    file.open(directory + "/profiles.csv");
-    AssertThrow(file,
-                ExcMessage("Cannot write " + directory + "/profiles.csv"));
-    file << "tau,s,x,y,w\n" << std::flush;
+    writes_file = true;
+    file.open(directory + "/profiles.csv", 1.0);
+    file.stream() << "tau,s,x,y,w\n";
+    file.flush();
   }
 
 
@@ -111,15 +111,16 @@ namespace liftoff
     for (const auto &p : points)
       w.push_back(p.local_value(u));
     Utilities::MPI::sum(w, discretization->mpi_communicator, w);
-    if (!file.is_open())
+    if (!writes_file)
       return;
-    file << std::setprecision(12);
+    std::ostream &out = file.stream();
+    out << std::setprecision(12);
     for (unsigned int i = 0; i < n_points; ++i)
       {
         const Point<2> p = point(i);
-        file << tau << ',' << p.distance(start) << ',' << p[0] << ',' << p[1]
-             << ',' << w[i] << '\n';
+        out << tau << ',' << p.distance(start) << ',' << p[0] << ',' << p[1]
+            << ',' << w[i] << '\n';
       }
-    file << std::flush;
+    file.flush();
   }
 } // namespace liftoff

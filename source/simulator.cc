@@ -220,9 +220,18 @@ namespace liftoff
       }
     catch (...)
       {
+        // Keep the rows computed so far; the original error is the one to
+        // report, so a second one while writing them is dropped.
+        try
+          {
+            time_history.flush();
+          }
+        catch (...)
+          {}
         write_summary("failed");
         throw;
       }
+    time_history.flush();
     write_summary("completed");
   }
 

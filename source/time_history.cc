@@ -81,15 +81,17 @@ namespace liftoff
     if (directory.empty()
         || Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
       return;
-    file.open(directory + "/history.csv");
-    AssertThrow(file, ExcMessage("Cannot write " + directory + "/history.csv"));
-    file << "tau";
+    writes_file = true;
+    file.open(directory + "/history.csv", 1.0);
+    std::ostream &out = file.stream();
+    out << "tau";
     for (const auto &p : probe_points)
-      file << ",w(" << p[0] << ";" << p[1] << ")";
-    file << ",contact_fraction,active_set_iterations";
+      out << ",w(" << p[0] << ";" << p[1] << ")";
+    out << ",contact_fraction,active_set_iterations";
     if (write_energies)
-      file << ",kinetic,strain,foundation,work,balance_error";
-    file << '\n' << std::flush;
+      out << ",kinetic,strain,foundation,work,balance_error";
+    out << '\n';
+    file.flush();
   }
 
 
@@ -120,16 +122,26 @@ namespace liftoff
                       const EnergyBalance   &initial)
   {
     const std::vector<double> w = probe_values(u);
-    if (!file.is_open())
+    if (!writes_file)
       return;
-    file << std::setprecision(12) << tau;
+    std::ostream &out = file.stream();
+    out << std::setprecision(12) << tau;
     for (const double value : w)
-      file << ',' << value;
-    file << ',' << contact_fraction << ',' << iterations;
+      out << ',' << value;
+    out << ',' << contact_fraction << ',' << iterations;
     if (write_energies)
-      file << ',' << energies.kinetic << ',' << energies.strain << ','
-           << energies.foundation << ',' << energies.work << ','
-           << energies.error(initial);
-    file << '\n' << std::flush;
+      out << ',' << energies.kinetic << ',' << energies.strain << ','
+          << energies.foundation << ',' << energies.work << ','
+          << energies.error(initial);
+    out << '\n';
+    file.write_if_due();
+  }
+
+
+  void
+  TimeHistory::flush()
+  {
+    if (writes_file)
+      file.flush();
   }
 } // namespace liftoff

@@ -1,7 +1,10 @@
 #pragma once
 
+#include <deal.II/base/timer.h>
+
 #include <functional>
 #include <ostream>
+#include <sstream>
 #include <string>
 
 namespace liftoff
@@ -11,4 +14,33 @@ namespace liftoff
   void
   write_file_atomically(const std::string                         &path,
                         const std::function<void(std::ostream &)> &write);
+
+  /**
+   * A text file that grows (a CSV table) but is only ever replaced whole:
+   * rows are kept in memory and the file is rewritten atomically at most
+   * every `interval` seconds of wall time and on flush(), so a reader never
+   * sees a half-written row. An empty path keeps the rows in memory only.
+   */
+  class GrowingTextFile
+  {
+  public:
+    void
+    open(const std::string &path, const double interval_seconds);
+
+    /// Add text; the file follows when the interval has passed.
+    std::ostream &
+    stream();
+    void
+    write_if_due();
+
+    /// Write the file now.
+    void
+    flush();
+
+  private:
+    std::string        path;
+    double             interval = 1.0;
+    std::ostringstream contents;
+    dealii::Timer      since_written;
+  };
 } // namespace liftoff

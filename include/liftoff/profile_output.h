@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/discretization.h>
+#include <liftoff/output_files.h>
 #include <liftoff/point_functional.h>
 
 #include <fstream>
@@ -44,7 +45,8 @@ namespace liftoff
     std::vector<bool>            is_written;
     std::vector<PointFunctional> points;
     const Discretization        *discretization = nullptr;
-    std::ofstream                file;
+    GrowingTextFile              file;
+    bool                         writes_file = false;
 
     Point<2>
     point(const unsigned int i) const;

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/discretization.h>
+#include <liftoff/output_files.h>
 #include <liftoff/point_functional.h>
 
 #include <fstream>
@@ -33,8 +34,9 @@ namespace liftoff
   /**
    * The CSV time history a user plots: tau, w at the scene's probe points,
    * contact area fraction, active-set iterations and, when asked for, the
-   * energies and their balance. Each row is flushed as it is written, so
-   * the file is readable at any moment of a run.
+   * energies and their balance. The file is replaced whole (atomically)
+   * at most once a second and at the end, so a reader never sees a
+   * half-written row.
    */
   class TimeHistory
   {
@@ -66,11 +68,16 @@ namespace liftoff
            const EnergyBalance   &energies,
            const EnergyBalance   &initial_energies);
 
+    /// Write history.csv now (at the end of a run, also a failed one).
+    void
+    flush();
+
   private:
     std::vector<Point<2>>        probe_points;
     bool                         write_energies = true;
     std::vector<PointFunctional> probes;
     const Discretization        *discretization = nullptr;
-    std::ofstream                file;
+    GrowingTextFile              file;
+    bool                         writes_file = false;
   };
 } // namespace liftoff
