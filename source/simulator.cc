@@ -284,7 +284,8 @@ namespace liftoff
     const double       contact = foundation.contact_area_fraction();
     records.push_back(
       {tau, iterations, contact, time_history.probe_values(ghosted_u), energy});
-    time_history.record(tau, ghosted_u, contact, iterations, energy, initial);
+    time_history.record(
+      tau, records.back().probe_w, contact, iterations, energy, initial);
     // A static analysis (no time step) writes its one profile.
     profile_output.write_if_due(tau,
                                 analysis == Analysis::static_analysis

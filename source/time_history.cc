@@ -114,14 +114,13 @@ namespace liftoff
 
 
   void
-  TimeHistory::record(const double           tau,
-                      const LA::MPI::Vector &u,
-                      const double           contact_fraction,
-                      const unsigned int     iterations,
-                      const EnergyBalance   &energies,
-                      const EnergyBalance   &initial)
+  TimeHistory::record(const double               tau,
+                      const std::vector<double> &w,
+                      const double               contact_fraction,
+                      const unsigned int         iterations,
+                      const EnergyBalance       &energies,
+                      const EnergyBalance       &initial)
   {
-    const std::vector<double> w = probe_values(u);
     if (!writes_file)
       return;
     std::ostream &out = file.stream();

@@ -60,13 +60,14 @@ namespace liftoff
     std::vector<double>
     probe_values(const LA::MPI::Vector &ghosted_solution) const;
 
+    /// One row; `probe_w` from probe_values().
     void
-    record(const double           tau,
-           const LA::MPI::Vector &ghosted_solution,
-           const double           contact_fraction,
-           const unsigned int     iterations,
-           const EnergyBalance   &energies,
-           const EnergyBalance   &initial_energies);
+    record(const double               tau,
+           const std::vector<double> &probe_w,
+           const double               contact_fraction,
+           const unsigned int         iterations,
+           const EnergyBalance       &energies,
+           const EnergyBalance       &initial_energies);
 
     /// Write history.csv now (at the end of a run, also a failed one).
     void
