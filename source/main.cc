@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/simulator.h>
+#include <liftoff/stop_signal.h>
 
 #include <fstream>
 #include <iostream>
@@ -65,6 +66,11 @@ main(int argc, char **argv)
       return 2;
     }
 
+  // SIGINT / SIGTERM end the run after the current step with complete
+  // files and the exit code 128 + signal.
+  liftoff::StopSignal::install();
+  int stopping_signal = 0;
+
   // Keep the simulator alive until its exception has been caught: its
   // destructors must not run during stack unwinding under MPI.
   std::exception_ptr failure;
@@ -81,7 +87,8 @@ main(int argc, char **argv)
       }
     catch (...)
       {
-        failure = std::current_exception();
+        failure         = std::current_exception();
+        stopping_signal = simulator.stopping_signal();
       }
   }
   if (!failure)
@@ -106,5 +113,5 @@ main(int argc, char **argv)
         std::cerr << "liftoff: error in " << argv[1] << ":\n"
                   << e.what() << std::endl;
     }
-  return 1;
+  return stopping_signal != 0 ? 128 + stopping_signal : 1;
 }

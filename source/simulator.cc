@@ -5,6 +5,7 @@
 
 #include <liftoff/output_files.h>
 #include <liftoff/simulator.h>
+#include <liftoff/stop_signal.h>
 
 #include <cmath>
 #include <filesystem>
@@ -228,7 +229,7 @@ namespace liftoff
           }
         catch (...)
           {}
-        write_summary("failed");
+        write_summary(stopped_by_signal != 0 ? "interrupted" : "failed");
         throw;
       }
     time_history.flush();
@@ -424,6 +425,18 @@ namespace liftoff
                     result.iterations,
                     energies(work),
                     initial);
+
+        if (const int signal = StopSignal::received(mpi_communicator))
+          {
+            stopped_by_signal = signal;
+            AssertThrow(false,
+                        ExcMessage("Interrupted by signal "
+                                   + std::to_string(signal) + " after step "
+                                   + std::to_string(step)
+                                   + " (tau = " + format_time(tau)
+                                   + "); the files written so far are "
+                                     "complete."));
+          }
       }
   }
 
@@ -522,6 +535,13 @@ namespace liftoff
   Simulator::solution() const
   {
     return ghosted_u;
+  }
+
+
+  int
+  Simulator::stopping_signal() const
+  {
+    return stopped_by_signal;
   }
 
 

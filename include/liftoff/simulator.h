@@ -70,6 +70,10 @@ namespace liftoff
     history() const;
     const LA::MPI::Vector &
     solution() const;
+    /// The signal (SIGINT, SIGTERM) that stopped the run, or 0.
+    int
+    stopping_signal() const;
+
     /// Factorisations (or preconditioner set-ups) of the run.
     unsigned int
     n_factorisations() const;
@@ -99,7 +103,8 @@ namespace liftoff
     TimeHistory                  time_history;
     ProfileOutput                profile_output;
 
-    Analysis    analysis = Analysis::dynamic_analysis;
+    Analysis    analysis          = Analysis::dynamic_analysis;
+    int         stopped_by_signal = 0;
     std::string output_directory;
     std::string initial_displacement, initial_velocity;
     /// Parsed initial displacement and velocity.

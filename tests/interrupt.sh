@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# SIGINT and SIGTERM stop a run at the end of the current step: the exit
+# code is 128 + the signal, the message names the signal and the step, the
+# summary says "interrupted", history.csv holds exactly the steps done with
+# every row complete, every PVD record's VTU pieces exist and are complete,
+# and no temporary file is left.
+#   interrupt.sh LIFTOFF
+set -u
+liftoff=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+printf '%s\n' \
+  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 12' \
+  '  set Cells along y = 12' '  set Polynomial degree = 2' 'end' \
+  'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
+  'subsection Time integration' '  set Time step = 5e-4' '  set End time = 20' 'end' \
+  'subsection Output' '  set Directory = out' '  set VTU interval = 7' 'end' > scene.prm
+
+failures=0
+check() { if [ "$1" -eq 0 ]; then echo "PASS $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi; }
+for signal in INT TERM; do
+  rm -rf out
+  "$liftoff" scene.prm >stdout.txt 2>stderr.txt &
+  pid=$!
+  # Let it run some steps (the history file appears with its header).
+  for _ in $(seq 100); do [ -s out/history.csv ] && break; sleep 0.1; done
+  sleep 1
+  kill -"$signal" "$pid"
+  wait "$pid"
+  status=$?
+  number=$(kill -l "$signal")
+  [ "$status" -eq $((128 + number)) ]; check $? "SIG$signal: exit code $status is 128 + $number"
+  step=$(sed -n "s/.*Interrupted by signal $number after step \([0-9]*\) .*/\1/p" stderr.txt)
+  [ -n "$step" ]; check $? "SIG$signal: the message names the signal and the step ($step)"
+  grep -q '^status: interrupted' out/summary.txt 2>/dev/null; check $? "SIG$signal: summary.txt says interrupted"
+  rows=$(($(wc -l < out/history.csv) - 1))
+  [ "$rows" -eq $((step + 1)) ]; check $? "SIG$signal: history.csv has tau = 0 and the $step steps done: $rows rows"
+  n_columns=$(head -1 out/history.csv | awk -F, '{print NF}')
+  awk -F, -v n="$n_columns" 'NF != n {bad = 1} END {exit bad}' out/history.csv
+  check $? "SIG$signal: every row of history.csv has $n_columns columns"
+  missing=0
+  n_pieces=0
+  for pvtu in $(sed -n 's/.*file="\([^"]*\)".*/\1/p' out/solution.pvd); do
+    for piece in $(sed -n 's/.*Source="\([^"]*\)".*/\1/p' "out/$pvtu"); do
+      n_pieces=$((n_pieces + 1))
+      tail -c 20 "out/$piece" | grep -q '</VTKFile>' || missing=$((missing + 1))
+    done
+  done
+  [ "$n_pieces" -ge 2 ] && [ "$missing" -eq 0 ]
+  check $? "SIG$signal: $n_pieces VTU pieces listed, $missing missing or cut short"
+  [ "$(find out -name '*.tmp' | wc -l)" -eq 0 ]; check $? "SIG$signal: no temporary files left"
+done
+echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"
+[ "$failures" -eq 0 ]
