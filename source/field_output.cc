@@ -129,7 +129,7 @@ namespace liftoff
       }
     catch (const std::exception &e)
       {
-        error = e.what();
+        error = message_of(e);
       }
     // A failure on one rank stops all of them here (this is also the
     // barrier before the record), not in a later collective call.

@@ -12,17 +12,53 @@ namespace liftoff
                         const std::function<void(std::ostream &)> &write)
   {
     const std::string temporary = path + ".tmp";
+    bool              written   = false;
     {
       std::ofstream out(temporary);
       AssertThrow(out,
                   dealii::ExcMessage("Cannot write the file " + temporary));
-      write(out);
-      out.flush();
-      AssertThrow(out, dealii::ExcMessage("Writing " + temporary + " failed."));
+      try
+        {
+          write(out);
+          out.close();
+          written = static_cast<bool>(out);
+        }
+      catch (...)
+        {
+          // The writer gave up on a failing stream (deal.II's DataOut
+          // does); handled as a failed write below.
+        }
     }
+    if (!written)
+      {
+        // A full disk or a file size limit: leave no partial file behind.
+        std::remove(temporary.c_str());
+        AssertThrow(false,
+                    dealii::ExcMessage("Writing " + path
+                                       + " failed (disk full or file too "
+                                         "large?); the previous version, if "
+                                         "any, is unchanged."));
+      }
     AssertThrow(std::rename(temporary.c_str(), path.c_str()) == 0,
                 dealii::ExcMessage("Cannot rename " + temporary + " to "
                                    + path));
+  }
+
+
+  std::string
+  message_of(const std::exception &e)
+  {
+    if (const auto *deal_ii = dynamic_cast<const dealii::ExceptionBase *>(&e))
+      {
+        std::ostringstream text;
+        deal_ii->print_info(text);
+        // print_info indents and ends the text; keep the words.
+        std::string message = text.str();
+        message.erase(0, message.find_first_not_of(" \n"));
+        message.erase(message.find_last_not_of(" \n") + 1);
+        return message;
+      }
+    return e.what();
   }
 
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <numeric>
 #include <sstream>
@@ -173,7 +174,7 @@ namespace liftoff
         }
       catch (const std::exception &e)
         {
-          error = e.what();
+          error = message_of(e);
         }
     error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
     AssertThrow(error.empty(),
@@ -221,15 +222,21 @@ namespace liftoff
       }
     catch (...)
       {
-        // Keep the rows computed so far; the original error is the one to
-        // report, so a second one while writing them is dropped.
-        try
-          {
-            time_history.flush();
-          }
-        catch (...)
-          {}
-        write_summary(stopped_by_signal != 0 ? "interrupted" : "failed");
+        // Keep the rows computed so far and say how the run ended. The
+        // original error is the one to report: a second one while writing
+        // (a full disk) is dropped.
+        const auto attempt = [](const std::function<void()> &write) {
+          try
+            {
+              write();
+            }
+          catch (...)
+            {}
+        };
+        attempt([&]() { time_history.flush(); });
+        attempt([&]() {
+          write_summary(stopped_by_signal != 0 ? "interrupted" : "failed");
+        });
         throw;
       }
     time_history.flush();

@@ -15,6 +15,11 @@ namespace liftoff
   write_file_atomically(const std::string                         &path,
                         const std::function<void(std::ostream &)> &write);
 
+  /// The message of an exception without deal.II's stack trace, for
+  /// passing an error on in a message of its own.
+  std::string
+  message_of(const std::exception &e);
+
   /**
    * A text file that grows (a CSV table) but is only ever replaced whole:
    * rows are kept in memory and the file is rewritten atomically at most
