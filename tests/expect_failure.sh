@@ -8,6 +8,7 @@
 # says the run failed and a history whose every row is complete.
 set -u
 liftoff=$1
+source "$(dirname "$0")/output_checks.sh"
 scene=$2
 expect=$(sed -n '1s/^# EXPECT: //p' "$scene")
 [ -n "$expect" ] || { echo "FAIL $scene has no '# EXPECT:' first line"; exit 1; }
@@ -19,19 +20,13 @@ cd "$work"
 status=$?
 cat stderr.txt
 
-failures=0
-check() { # check CONDITION-RESULT MESSAGE
-  if [ "$1" -eq 0 ]; then echo "PASS $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi
-}
 [ "$status" -ne 0 ]; check $? "exit code is non-zero ($status)"
 grep -Eq -- "$expect" stderr.txt; check $? "message matches /$expect/"
 if grep -q '^# OUTPUT: kept' "$scene"; then
   grep -q '^status: failed' out/summary.txt 2>/dev/null; check $? "summary.txt says the run failed"
-  n_columns=$(head -1 out/history.csv | awk -F, '{print NF}')
-  awk -F, -v n="$n_columns" 'NF != n {bad = 1} END {exit bad}' out/history.csv
+  history_is_complete out
   check $? "every row of history.csv has $n_columns columns"
 else
   [ ! -e out ]; check $? "no output folder was created"
 fi
-echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"
-[ "$failures" -eq 0 ]
+finish

@@ -8,6 +8,7 @@
 #   full_disk.sh LIFTOFF
 set -u
 liftoff=$1
+source "$(dirname "$0")/output_checks.sh"
 work=$(mktemp -d)
 disk="$work/disk"
 mkdir -p "$disk"
@@ -28,24 +29,13 @@ printf '%s\n' \
 status=$?
 cat stderr.txt
 
-failures=0
-check() { if [ "$1" -eq 0 ]; then echo "PASS $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi; }
 [ "$status" -eq 1 ]; check $? "exit code 1 ($status)"
 grep -q 'solution_00020.0000.vtu failed (disk full' stderr.txt; check $? "the message names the file and the cause"
-[ "$(find "$disk" -name '*.tmp' | wc -l)" -eq 0 ]; check $? "no temporary file left"
+no_temporary_files "$disk"; check $? "no temporary file left"
 grep -q '^status: failed' "$disk/out/summary.txt"; check $? "summary.txt says failed"
-n_columns=$(head -1 "$disk/out/history.csv" | awk -F, '{print NF}')
-awk -F, -v n="$n_columns" 'NF != n {bad = 1} END {exit bad}' "$disk/out/history.csv"
+history_is_complete "$disk/out"
 check $? "every row of history.csv has $n_columns columns"
-missing=0
-n_pieces=0
-for pvtu in $(sed -n 's/.*file="\([^"]*\)".*/\1/p' "$disk/out/solution.pvd"); do
-  for piece in $(sed -n 's/.*Source="\([^"]*\)".*/\1/p' "$disk/out/$pvtu"); do
-    n_pieces=$((n_pieces + 1))
-    tail -c 20 "$disk/out/$piece" | grep -q '</VTKFile>' || missing=$((missing + 1))
-  done
-done
+count_vtu_pieces "$disk/out"
 [ "$n_pieces" -ge 1 ] && [ "$missing" -eq 0 ]
 check $? "the PVD lists $n_pieces complete VTU piece(s), $missing missing or cut short"
-echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"
-[ "$failures" -eq 0 ]
+finish

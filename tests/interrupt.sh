@@ -7,6 +7,7 @@
 #   interrupt.sh LIFTOFF
 set -u
 liftoff=$1
+source "$(dirname "$0")/output_checks.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -17,8 +18,6 @@ printf '%s\n' \
   'subsection Time integration' '  set Time step = 5e-4' '  set End time = 20' 'end' \
   'subsection Output' '  set Directory = out' '  set VTU interval = 7' 'end' > scene.prm
 
-failures=0
-check() { if [ "$1" -eq 0 ]; then echo "PASS $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi; }
 for signal in INT TERM; do
   rm -rf out
   "$liftoff" scene.prm >stdout.txt 2>stderr.txt &
@@ -36,20 +35,11 @@ for signal in INT TERM; do
   grep -q '^status: interrupted' out/summary.txt 2>/dev/null; check $? "SIG$signal: summary.txt says interrupted"
   rows=$(($(wc -l < out/history.csv) - 1))
   [ "$rows" -eq $((step + 1)) ]; check $? "SIG$signal: history.csv has tau = 0 and the $step steps done: $rows rows"
-  n_columns=$(head -1 out/history.csv | awk -F, '{print NF}')
-  awk -F, -v n="$n_columns" 'NF != n {bad = 1} END {exit bad}' out/history.csv
+  history_is_complete out
   check $? "SIG$signal: every row of history.csv has $n_columns columns"
-  missing=0
-  n_pieces=0
-  for pvtu in $(sed -n 's/.*file="\([^"]*\)".*/\1/p' out/solution.pvd); do
-    for piece in $(sed -n 's/.*Source="\([^"]*\)".*/\1/p' "out/$pvtu"); do
-      n_pieces=$((n_pieces + 1))
-      tail -c 20 "out/$piece" | grep -q '</VTKFile>' || missing=$((missing + 1))
-    done
-  done
+  count_vtu_pieces out
   [ "$n_pieces" -ge 2 ] && [ "$missing" -eq 0 ]
   check $? "SIG$signal: $n_pieces VTU pieces listed, $missing missing or cut short"
-  [ "$(find out -name '*.tmp' | wc -l)" -eq 0 ]; check $? "SIG$signal: no temporary files left"
+  no_temporary_files out; check $? "SIG$signal: no temporary files left"
 done
-echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"
-[ "$failures" -eq 0 ]
+finish

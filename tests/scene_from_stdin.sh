@@ -6,6 +6,7 @@
 # that says it completed.
 set -u
 liftoff=$1
+source "$(dirname "$0")/output_checks.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -17,8 +18,6 @@ printf '%s\n' \
   '  set Profile points = 11' '  set Profile times = 0.03, 0.1' 'end' |
   "$liftoff" - >stdout.txt 2>&1
 status=$?
-failures=0
-check() { if [ "$1" -eq 0 ]; then echo "PASS $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi; }
 [ "$status" -eq 0 ]; check $? "liftoff - exits with 0"
 rows=$(wc -l < generated/history.csv 2>/dev/null || echo 0)
 [ "$rows" -eq 12 ]; check $? "history.csv has 12 lines (header + 11 steps): $rows"
@@ -30,18 +29,8 @@ n_vtu=$(grep -c 'DataSet' generated/solution.pvd 2>/dev/null || echo 0)
 [ "$n_vtu" -eq 3 ]; check $? "solution.pvd lists steps 0, 5, 10: $n_vtu"
 # Every file is complete: each record names existing, finished pieces and
 # no temporary file is left behind.
-missing=0
-n_pieces=0
-for pvtu in $(sed -n 's/.*file="\([^"]*\)".*/\1/p' generated/solution.pvd 2>/dev/null); do
-  [ -f "generated/$pvtu" ] || missing=$((missing + 1))
-  for piece in $(sed -n 's/.*Source="\([^"]*\)".*/\1/p' "generated/$pvtu" 2>/dev/null); do
-    n_pieces=$((n_pieces + 1))
-    tail -c 20 "generated/$piece" 2>/dev/null | grep -q '</VTKFile>' || missing=$((missing + 1))
-  done
-done
+count_vtu_pieces generated
 [ "$missing" -eq 0 ] && [ "$n_pieces" -eq 3 ]
 check $? "the 3 records' VTU pieces exist and are complete ($n_pieces found, $missing missing or cut short)"
-n_tmp=$(find generated -name '*.tmp' | wc -l)
-[ "$n_tmp" -eq 0 ]; check $? "no temporary files left: $n_tmp"
-echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"
-[ "$failures" -eq 0 ]
+no_temporary_files generated; check $? "no temporary files left"
+finish
