@@ -25,6 +25,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from liftoff_runs import parse_summary, scene_with_overrides  # noqa: E402
 BUILD = os.path.join(ROOT, "build-bench")
 RESULTS_CSV = os.path.join(HERE, "results.csv")
 RESULTS_MD = os.path.join(HERE, "results.md")
@@ -90,36 +92,8 @@ def commit():
 
 
 def scene_text(scene, overrides, directory):
-    """The scene file plus the overrides (ParameterHandler keeps the last
-    value set for an entry)."""
-    with open(os.path.join(HERE, "scenes", scene + ".prm")) as f:
-        text = f.read()
-    for override in overrides + ["Output/Directory=" + directory]:
-        path, value = override.split("=", 1)
-        *sections, entry = path.split("/")
-        text += "\n"
-        for s in sections:
-            text += "subsection %s\n" % s
-        text += "  set %s = %s\n" % (entry, value)
-        text += "end\n" * len(sections)
-    return text
-
-
-def parse_summary(path):
-    values, sections = {}, {}
-    in_sections = False
-    with open(path) as f:
-        for line in f:
-            if line.startswith("wall time by section"):
-                in_sections = True
-                continue
-            key, _, value = line.strip().rpartition(": ")
-            if in_sections and line.startswith("  "):
-                sections[key] = float(value)
-            else:
-                in_sections = False
-                values[key] = value
-    return values, sections
+    return scene_with_overrides(os.path.join(HERE, "scenes", scene + ".prm"),
+                                overrides, directory)
 
 
 def run_one(scene, overrides, ranks, label):
