@@ -35,6 +35,7 @@ subsection Discretization
   set Cells along x = 8
   set Cells along y = 8
   set Polynomial degree = {degree}
+  set Shear integration = full
 end
 subsection Loads
   subsection Point load 1

@@ -5,6 +5,7 @@
 #include <liftoff/discretization.h>
 #include <liftoff/linear_algebra.h>
 #include <liftoff/mindlin_plate.h>
+#include <liftoff/transverse_shear_strain.h>
 
 namespace liftoff
 {
@@ -18,12 +19,6 @@ namespace liftoff
   class PlateMatrices
   {
   public:
-    enum class ShearIntegration
-    {
-      full,   // (p+1)^2 Gauss points, as bending
-      reduced // p^2 Gauss points: unlocks thin plates, admits spurious modes
-    };
-
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -38,7 +33,8 @@ namespace liftoff
     void
     solve_with_mass(LA::MPI::Vector &x, const LA::MPI::Vector &b) const;
 
-    ShearIntegration shear_integration = ShearIntegration::full;
+    TransverseShearStrain::Treatment shear_integration =
+      TransverseShearStrain::Treatment::mitc;
 
     LA::MPI::SparseMatrix stiffness;
     LA::MPI::SparseMatrix mass;
