@@ -73,11 +73,13 @@ VARIANTS = [
     (4, "ex4-reduced", SUPPORTED, [], "15x15 Q1, reduced"),
     (4, "ex4-full", SUPPORTED, ["Discretization/Shear integration=full"],
      "15x15 Q1, full"),
+    (4, "ex4-mitc", SUPPORTED, ["Discretization/Shear integration=mitc"],
+     "15x15 Q1, MITC"),
     (4, "ex4-reference", SUPPORTED, ["Discretization/Cells along x=30",
                                      "Discretization/Cells along y=30",
                                      "Discretization/Polynomial degree=2",
-                                     "Discretization/Shear integration=full"],
-     "30x30 Q2, full (reference)"),
+                                     "Discretization/Shear integration=mitc"],
+     "30x30 Q2, MITC (reference)"),
 ]
 
 
@@ -242,7 +244,7 @@ def plot_example_3(output):
 
 
 def plot_example_4(output):
-    names = ["ex4-reduced", "ex4-full", "ex4-reference"]
+    names = ["ex4-reduced", "ex4-full", "ex4-mitc", "ex4-reference"]
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
     for name in names:
         rows = history(output, name)
