@@ -13,6 +13,16 @@ namespace liftoff
                       Patterns::Integer(1),
                       "Iterations of eq. (3.9) per step before the run stops "
                       "with an error naming the step.");
+    prm.declare_entry(
+      "Cycle rule",
+      "union",
+      Patterns::Selection("union|stop|none"),
+      "When the contact set of a step returns to a set it had before "
+      "(a cycle that would never settle): union, solve once more with every "
+      "Gauss point in contact that was in contact in any set of the cycle "
+      "and accept that, reported in history.csv (active_set_cycle) and "
+      "summary.txt; stop, end the run with an error naming the step; none, "
+      "do not look for cycles and iterate up to Maximum iterations.");
     prm.leave_subsection();
     LinearSolver::declare_parameters(prm);
   }
@@ -22,7 +32,11 @@ namespace liftoff
   ActiveSetIteration::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Active set");
-    max_iterations = prm.get_integer("Maximum iterations");
+    max_iterations         = prm.get_integer("Maximum iterations");
+    const std::string rule = prm.get("Cycle rule");
+    cycle_rule             = (rule == "union"  ? CycleRule::union_of_cycle
+                              : rule == "stop" ? CycleRule::stop
+                                               : CycleRule::none);
     prm.leave_subsection();
     solver.parse_parameters(prm);
   }
@@ -73,6 +87,36 @@ namespace liftoff
   }
 
 
+  void
+  ActiveSetIteration::solve_with_current_set(const LA::MPI::Vector &rhs,
+                                             LA::MPI::Vector       &solution,
+                                             LA::MPI::Vector &ghosted_solution)
+  {
+    {
+      TimerOutput::Scope t(timer, "foundation update");
+      if (foundation.update_matrix(matrix) > 0)
+        solver.matrix_changed();
+    }
+    solver.solve(solution, rhs);
+    discretization.constraints.distribute(solution);
+    ghosted_solution = solution;
+  }
+
+
+  unsigned int
+  ActiveSetIteration::find_in(
+    const std::vector<std::vector<unsigned char>> &visited) const
+  {
+    const auto &status = foundation.contact_status();
+    for (unsigned int k = 0; k < visited.size(); ++k)
+      if (Utilities::MPI::min(static_cast<int>(visited[k] == status),
+                              discretization.mpi_communicator)
+          == 1)
+        return k;
+    return visited.size();
+  }
+
+
   ActiveSetIteration::Result
   ActiveSetIteration::solve(const LA::MPI::Vector &rhs,
                             LA::MPI::Vector       &solution,
@@ -80,17 +124,14 @@ namespace liftoff
   {
     Assert(matrix.m() > 0, ExcMessage("set_base_matrix() first."));
     Result result;
+    // The sets of this step so far. The solution depends on the set only,
+    // so meeting one again means the iteration would go round for ever.
+    std::vector<std::vector<unsigned char>> visited{
+      foundation.contact_status()};
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
-        {
-          TimerOutput::Scope t(timer, "foundation update");
-          if (foundation.update_matrix(matrix) > 0)
-            solver.matrix_changed();
-        }
-        solver.solve(solution, rhs);
-        discretization.constraints.distribute(solution);
-        ghosted_solution = solution;
+        solve_with_current_set(rhs, solution, ghosted_solution);
         if (requires_contact && !is_solution_of_system(solution, rhs))
           {
             result.lost_contact = true;
@@ -109,6 +150,29 @@ namespace liftoff
             result.lost_contact = true;
             return result;
           }
+        if (cycle_rule == CycleRule::none)
+          continue;
+        const unsigned int repeated = find_in(visited);
+        if (repeated < visited.size())
+          {
+            result.cycle_length = visited.size() - repeated;
+            if (cycle_rule == CycleRule::stop)
+              return result;
+            // Springs wherever any set of the cycle had them: the stiffer
+            // choice, whose error is a tension in the springs of the points
+            // that the solution lifts.
+            std::vector<unsigned char> all(visited[repeated].size(), 0);
+            for (unsigned int k = repeated; k < visited.size(); ++k)
+              for (unsigned int i = 0; i < all.size(); ++i)
+                all[i] |= visited[k][i];
+            t.stop();
+            foundation.set_contact_status(all);
+            ++result.iterations;
+            solve_with_current_set(rhs, solution, ghosted_solution);
+            result.converged = true;
+            return result;
+          }
+        visited.push_back(foundation.contact_status());
       }
     return result;
   }

@@ -26,6 +26,18 @@ namespace liftoff
       text << std::setprecision(8) << tau;
       return text.str();
     }
+
+    // Why an active-set iteration did not settle, for error messages.
+    std::string
+    unsettled(const ActiveSetIteration::Result &result,
+              const unsigned int                max_iterations)
+    {
+      if (result.cycle_length > 0)
+        return "went round a cycle of " + std::to_string(result.cycle_length)
+               + " sets";
+      return "did not settle in " + std::to_string(max_iterations)
+             + " iterations";
+    }
   } // namespace
 
   Simulator::Simulator(const MPI_Comm comm, const bool verbose)
@@ -281,19 +293,28 @@ namespace liftoff
 
 
   void
-  Simulator::record_step(const unsigned int   step,
-                         const double         tau,
-                         const bool           is_last_step,
-                         const unsigned int   iterations,
-                         const EnergyBalance &energy,
-                         const EnergyBalance &initial)
+  Simulator::record_step(const unsigned int                step,
+                         const double                      tau,
+                         const bool                        is_last_step,
+                         const ActiveSetIteration::Result &iteration,
+                         const EnergyBalance              &energy,
+                         const EnergyBalance              &initial)
   {
     TimerOutput::Scope t(timer, "output");
     const double       contact = foundation.contact_area_fraction();
-    records.push_back(
-      {tau, iterations, contact, time_history.probe_values(ghosted_u), energy});
-    time_history.record(
-      tau, records.back().probe_w, contact, iterations, energy, initial);
+    records.push_back({tau,
+                       iteration.iterations,
+                       iteration.cycle_length,
+                       contact,
+                       time_history.probe_values(ghosted_u),
+                       energy});
+    time_history.record(tau,
+                        records.back().probe_w,
+                        contact,
+                        iteration.iterations,
+                        iteration.cycle_length,
+                        energy,
+                        initial);
     // A static analysis (no time step) writes its one profile.
     profile_output.write_if_due(tau,
                                 analysis == Analysis::static_analysis
@@ -331,16 +352,18 @@ namespace liftoff
                            "has no static equilibrium under these loads. "
                            "Use a dynamic analysis or support an edge."));
     AssertThrow(result.converged,
-                ExcMessage("Static analysis: the active set did not settle in "
-                           + std::to_string(active_set.max_iterations)
-                           + " iterations (Active set/Maximum iterations)."));
+                ExcMessage("Static analysis: the active set "
+                           + unsettled(result, active_set.max_iterations)
+                           + (result.cycle_length > 0
+                                ? " (Active set/Cycle rule = stop)."
+                                : " (Active set/Maximum iterations).")));
     const EnergyBalance none;
     EnergyBalance       e = energies(0.0);
     // Loads applied proportionally: the response is positively homogeneous
     // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
     // lift-off, and the balance column checks it.
     e.work = 0.5 * discretization.n_symmetry_copies() * (load * u);
-    record_step(0, 0.0, true, result.iterations, e, none);
+    record_step(0, 0.0, true, result, e, none);
     pcout << "static: " << result.iterations << " active-set iterations, "
           << "contact fraction " << foundation.contact_area_fraction()
           << std::endl;
@@ -386,7 +409,7 @@ namespace liftoff
 
     double              work    = 0;
     const EnergyBalance initial = energies(0.0);
-    record_step(0, 0.0, n_steps == 0, 0, initial, initial);
+    record_step(0, 0.0, n_steps == 0, {}, initial, initial);
 
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
@@ -403,12 +426,16 @@ namespace liftoff
         newmark.predict(u, v, a, u_new);
         const auto result = active_set.solve(rhs, u_new, ghosted_u);
         AssertThrow(result.converged,
-                    ExcMessage("The active set did not settle in "
-                               + std::to_string(active_set.max_iterations)
-                               + " iterations at step " + std::to_string(step)
+                    ExcMessage("The active set "
+                               + unsettled(result, active_set.max_iterations)
+                               + " at step " + std::to_string(step)
                                + " (tau = " + format_time(tau)
-                               + "); raise Active set/Maximum iterations or "
-                                 "reduce Time integration/Time step."));
+                               + (result.cycle_length > 0
+                                    ? "); Active set/Cycle rule = stop asks "
+                                      "for this error; union resolves it."
+                                    : "); raise Active set/Maximum iterations "
+                                      "or reduce Time integration/Time "
+                                      "step.")));
 
         // Trapezoidal work of the loads, exact for Newmark's average
         // acceleration rule on linear problems.
@@ -426,12 +453,8 @@ namespace liftoff
             force_balance(load, balance);
           }
 
-        record_step(step,
-                    tau,
-                    step == n_steps,
-                    result.iterations,
-                    energies(work),
-                    initial);
+        record_step(
+          step, tau, step == n_steps, result, energies(work), initial);
 
         if (const int signal = StopSignal::received(mpi_communicator))
           {
@@ -461,13 +484,14 @@ namespace liftoff
   void
   Simulator::write_summary(const std::string &status) const
   {
-    unsigned int total = 0, largest = 0, n = 0;
+    unsigned int total = 0, largest = 0, n = 0, cycles = 0;
     for (const auto &r : records)
       if (r.iterations > 0)
         {
           total += r.iterations;
           largest = std::max(largest, r.iterations);
           ++n;
+          cycles += (r.cycle_length > 0);
         }
     const LinearSolver            &solver = active_set.linear_solver();
     Utilities::System::MemoryStats memory;
@@ -490,6 +514,7 @@ namespace liftoff
          << "active-set iterations per step, mean: "
          << (n > 0 ? double(total) / n : 0.0) << '\n'
          << "active-set iterations per step, max: " << largest << '\n'
+         << "steps whose active set cycled: " << cycles << '\n'
          << "factorisations: " << solver.n_preparations << '\n'
          << "substitutions: " << solver.n_substitutions << '\n'
          << "time per substitution [s]: "

@@ -119,6 +119,23 @@ namespace liftoff
   }
 
 
+  const std::vector<unsigned char> &
+  TensionlessWinklerFoundation::contact_status() const
+  {
+    return in_contact;
+  }
+
+
+  void
+  TensionlessWinklerFoundation::set_contact_status(
+    const std::vector<unsigned char> &status)
+  {
+    AssertDimension(status.size(), in_contact.size());
+    for (unsigned int i = 0; i < status.size(); ++i)
+      set_status(i, status[i]);
+  }
+
+
   void
   TensionlessWinklerFoundation::activate_all()
   {

@@ -87,7 +87,7 @@ namespace liftoff
     out << "tau";
     for (const auto &p : probe_points)
       out << ",w(" << p[0] << ";" << p[1] << ")";
-    out << ",contact_fraction,active_set_iterations";
+    out << ",contact_fraction,active_set_iterations,active_set_cycle";
     if (write_energies)
       out << ",kinetic,strain,foundation,work,balance_error";
     out << '\n';
@@ -118,6 +118,7 @@ namespace liftoff
                       const std::vector<double> &w,
                       const double               contact_fraction,
                       const unsigned int         iterations,
+                      const unsigned int         cycle_length,
                       const EnergyBalance       &energies,
                       const EnergyBalance       &initial)
   {
@@ -127,7 +128,7 @@ namespace liftoff
     out << std::setprecision(12) << tau;
     for (const double value : w)
       out << ',' << value;
-    out << ',' << contact_fraction << ',' << iterations;
+    out << ',' << contact_fraction << ',' << iterations << ',' << cycle_length;
     if (write_energies)
       out << ',' << energies.kinetic << ',' << energies.strain << ','
           << energies.foundation << ',' << energies.work << ','

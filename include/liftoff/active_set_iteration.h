@@ -33,6 +33,22 @@ namespace liftoff
       /// Only with requires_contact: the set emptied or the system was
       /// singular, i.e. nothing holds the plate.
       bool lost_contact = false;
+      /// Length of the cycle the set fell into (0: none): the number of
+      /// distinct sets it went round.
+      unsigned int cycle_length = 0;
+    };
+
+    /// What to do when the set returns to one it had earlier in the step.
+    enum class CycleRule
+    {
+      /// Solve once with the union of the sets of the cycle (every point
+      /// in contact in any of them) and accept that; see doc/model.md.
+      union_of_cycle,
+      /// Report it as not converged: the run stops with an error.
+      stop,
+      /// Do not look for cycles: iterate up to max_iterations (to show
+      /// that a cycle found is one).
+      none
     };
 
     static void
@@ -61,6 +77,7 @@ namespace liftoff
     linear_solver() const;
 
     unsigned int max_iterations = 50;
+    CycleRule    cycle_rule     = CycleRule::union_of_cycle;
     /// Nothing but the foundation holds the plate (a static free plate):
     /// stop when the contact set empties or the solve is singular.
     bool requires_contact = false;
@@ -77,5 +94,16 @@ namespace liftoff
     bool
     is_solution_of_system(const LA::MPI::Vector &x,
                           const LA::MPI::Vector &b) const;
+
+    /// Bring the matrix in step with the foundation's set and solve.
+    void
+    solve_with_current_set(const LA::MPI::Vector &rhs,
+                           LA::MPI::Vector       &solution,
+                           LA::MPI::Vector       &ghosted_solution);
+
+    /// Index of the set in `visited` equal to the foundation's current set
+    /// on every rank, or visited.size().
+    unsigned int
+    find_in(const std::vector<std::vector<unsigned char>> &visited) const;
   };
 } // namespace liftoff

@@ -37,8 +37,10 @@ namespace liftoff
     /// One row of the time history, kept in memory for tests and summaries.
     struct StepRecord
     {
-      double              tau;
-      unsigned int        iterations;
+      double       tau;
+      unsigned int iterations;
+      /// Length of the active-set cycle resolved by the cycle rule, or 0.
+      unsigned int        cycle_length;
       double              contact_fraction;
       std::vector<double> probe_w;
       EnergyBalance       energies;
@@ -131,12 +133,12 @@ namespace liftoff
     force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
     /// Everything written after a step: history row, profiles, fields.
     void
-    record_step(const unsigned int   step,
-                const double         tau,
-                const bool           is_last_step,
-                const unsigned int   iterations,
-                const EnergyBalance &energy,
-                const EnergyBalance &initial);
+    record_step(const unsigned int                step,
+                const double                      tau,
+                const bool                        is_last_step,
+                const ActiveSetIteration::Result &iteration,
+                const EnergyBalance              &energy,
+                const EnergyBalance              &initial);
     void
     write_summary(const std::string &status) const;
     bool

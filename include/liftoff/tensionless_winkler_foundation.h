@@ -88,6 +88,14 @@ namespace liftoff
     Vector<float>
     contact_fraction_per_cell() const;
 
+    /// The status of the locally owned Gauss points (1: in contact), and
+    /// its replacement; the layout is this class's own, the same between
+    /// calls on one mesh.
+    const std::vector<unsigned char> &
+    contact_status() const;
+    void
+    set_contact_status(const std::vector<unsigned char> &status);
+
     Model  model             = Model::tensionless;
     double stiffness         = 1.0;
     double contact_tolerance = 1e-9;

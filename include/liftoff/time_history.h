@@ -33,10 +33,11 @@ namespace liftoff
 
   /**
    * The CSV time history a user plots: tau, w at the scene's probe points,
-   * contact area fraction, active-set iterations and, when asked for, the
-   * energies and their balance. The file is replaced whole (atomically)
-   * at most once a second and at the end, so a reader never sees a
-   * half-written row.
+   * contact area fraction, active-set iterations, the length of an
+   * active-set cycle resolved by the cycle rule (0: none) and, when asked for,
+   * the energies and their balance. The file is replaced whole (atomically) at
+   * most once a second and at the end, so a reader never sees a half-written
+   * row.
    */
   class TimeHistory
   {
@@ -66,6 +67,7 @@ namespace liftoff
            const std::vector<double> &probe_w,
            const double               contact_fraction,
            const unsigned int         iterations,
+           const unsigned int         cycle_length,
            const EnergyBalance       &energies,
            const EnergyBalance       &initial_energies);
 
