@@ -83,3 +83,21 @@ def read_csv(path):
     with open(path) as f:
         return [{k: float(v) for k, v in row.items()}
                 for row in csv.DictReader(f)]
+
+
+def parse_parameters(path):
+    """A ParameterHandler file such as used_parameters.prm as a dict that
+    maps "Section/.../Entry" to the value's text (the last set wins, as in
+    ParameterHandler)."""
+    values, sections = {}, []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line.startswith("subsection "):
+                sections.append(line[len("subsection "):].strip())
+            elif line == "end":
+                sections.pop()
+            elif line.startswith("set "):
+                entry, _, value = line[len("set "):].partition("=")
+                values["/".join(sections + [entry.strip()])] = value.strip()
+    return values
