@@ -97,4 +97,19 @@ namespace liftoff
                           [&](std::ostream &out) { out << contents.str(); });
     since_written.restart();
   }
+
+
+  std::string
+  GrowingTextFile::text() const
+  {
+    return contents.str();
+  }
+
+
+  void
+  GrowingTextFile::replace(const std::string &text)
+  {
+    contents.str("");
+    contents << text;
+  }
 } // namespace liftoff

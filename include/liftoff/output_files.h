@@ -42,6 +42,13 @@ namespace liftoff
     void
     flush();
 
+    /// Everything added so far, and a replacement for it (a resumed run
+    /// continues the file of its checkpoint).
+    std::string
+    text() const;
+    void
+    replace(const std::string &text);
+
   private:
     std::string        path;
     double             interval = 1.0;

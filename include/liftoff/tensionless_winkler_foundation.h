@@ -4,6 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
 #include <liftoff/linear_algebra.h>
 
@@ -87,6 +88,13 @@ namespace liftoff
     /// indexed by active cell index, for output.
     Vector<float>
     contact_fraction_per_cell() const;
+
+    /// The contact status and the status the system matrix holds: the next
+    /// step starts from them, so a resumed run needs them exactly.
+    void
+    save(OutputArchive &archive) const;
+    void
+    load(InputArchive &archive);
 
     Model  model             = Model::tensionless;
     double stiffness         = 1.0;
