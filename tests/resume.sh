@@ -92,6 +92,12 @@ status=$?
 [ "$status" -eq 1 ] && grep -q 'there is no checkpoint in out/checkpoint' stdout.txt && [ ! -e out ]
 check $? "no checkpoint: refused with exit code $status, nothing written"
 
+scene out 0.01 'subsection Analysis' '  set Type = static' 'end' > static.prm
+"${run[@]}" --resume static.prm > stdout.txt 2>&1
+status=$?
+[ "$status" -eq 1 ] && grep -q 'Analysis/Type = static has none' stdout.txt && [ ! -e out ]
+check $? "static analysis: --resume refused with exit code $status, nothing written"
+
 # SIGINT: a checkpoint of the step the message names.
 start_and_wait
 signal_run INT
