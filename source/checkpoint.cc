@@ -28,6 +28,18 @@ namespace liftoff
              + ".bin";
     }
 
+    /// Read a line "<key><number>".
+    bool
+    read_number(std::istream &in, const std::string &key, unsigned int &number)
+    {
+      std::string line;
+      if (!std::getline(in, line) || line.rfind(key, 0) != 0)
+        return false;
+      std::istringstream value(line.substr(key.size()));
+      return static_cast<bool>(value >> number);
+    }
+
+
     /// Throw on every rank with the message of the first rank that failed.
     void
     throw_if_any_failed(const std::string &error,
@@ -273,9 +285,9 @@ namespace liftoff
                   + "/checkpoint. A run writes one every Checkpoint/Interval "
                     "steps and when SIGINT or SIGTERM stops it.";
         else if (!std::getline(in, line) || line != first_line
-                 || !(in.ignore(7) >> step) || !(in.ignore(9) >> saved_ranks)
-                 || !std::getline(in, line) || !std::getline(in, line)
-                 || line != "scene:")
+                 || !read_number(in, "step = ", step)
+                 || !read_number(in, "ranks = ", saved_ranks)
+                 || !std::getline(in, line) || line != "scene:")
           error = found + "/" + header_name + " is not a liftoff checkpoint "
                   + "header.";
         else

@@ -120,12 +120,16 @@ if [ "$n_ranks" -gt 1 ]; then
 fi
 resume_and_compare "SIGINT" "$step"
 
-# SIGKILL after a periodic checkpoint: the rows after it are dropped.
+# SIGKILL after a periodic checkpoint: the rows after it are dropped, and
+# temporary files it may have left are removed.
 rm -rf out
 start_and_wait
 sleep 0.5
 signal_run KILL
-step=$(sed -n 's/^step = //p' out/checkpoint/checkpoint.txt)
+# Killed between the renames of a checkpoint, only the previous one is left.
+header=out/checkpoint/checkpoint.txt
+[ -f "$header" ] || header=out/checkpoint.previous/checkpoint.txt
+step=$(sed -n 's/^step = //p' "$header")
 rows=$(($(wc -l < out/history.csv) - 1))
 [ $((step % 50)) -eq 0 ] && [ "$step" -gt 0 ]
 check $? "SIGKILL: the last periodic checkpoint is of step $step (history.csv had $rows rows)"
