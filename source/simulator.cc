@@ -222,10 +222,6 @@ namespace liftoff
                                "Output/Directory, which is empty."));
         resume_step =
           checkpoint.open(output_directory, mpi_communicator, scene);
-        // A killed run may have left temporary files (and checkpoint.new,
-        // which the next checkpoint replaces).
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          remove_temporary_files(output_directory);
         AssertThrow(resume_step <= newmark.n_steps(),
                     ExcMessage("Cannot resume: the checkpoint is of step "
                                + std::to_string(resume_step)
@@ -233,6 +229,10 @@ namespace liftoff
                                + format_time(newmark.end_time) + " ("
                                + std::to_string(newmark.n_steps())
                                + " steps)."));
+        // A killed run may have left temporary files (and checkpoint.new,
+        // which the next checkpoint replaces).
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          remove_temporary_files(output_directory);
       }
     prepare_output_directory(prm);
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
