@@ -61,6 +61,35 @@ namespace liftoff
 
 
   void
+  ActiveSetIteration::prepare_for_checkpoints()
+  {
+    solver.keeps_prepared_values = true;
+  }
+
+
+  void
+  ActiveSetIteration::save(OutputArchive &archive) const
+  {
+    archive << matrix_values(matrix);
+    solver.save(archive);
+  }
+
+
+  void
+  ActiveSetIteration::load(InputArchive                &archive,
+                           const LA::MPI::SparseMatrix &B)
+  {
+    // The same structure as set_base_matrix() builds; the values follow.
+    discretization.reinit_matrix(matrix);
+    matrix.copy_from(B);
+    std::vector<double> current;
+    archive >> current;
+    solver.load(archive, matrix, discretization);
+    set_matrix_values(current, matrix);
+  }
+
+
+  void
   ActiveSetIteration::set_base_matrix(const LA::MPI::SparseMatrix &B)
   {
     {

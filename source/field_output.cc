@@ -149,10 +149,36 @@ namespace liftoff
       }
 
     records.emplace_back(time, master);
-    if (Utilities::MPI::this_mpi_process(disc.mpi_communicator) == 0)
+    write_pvd(directory, comm);
+  }
+
+
+  void
+  FieldOutput::write_pvd(const std::string &directory,
+                         const MPI_Comm     comm) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
       write_file_atomically(directory + "/solution.pvd",
                             [&](std::ostream &out) {
                               DataOutBase::write_pvd_record(out, records);
                             });
+  }
+
+
+  void
+  FieldOutput::save(OutputArchive &archive) const
+  {
+    archive << records;
+  }
+
+
+  void
+  FieldOutput::load(InputArchive      &archive,
+                    const std::string &directory,
+                    const MPI_Comm     comm)
+  {
+    archive >> records;
+    if (!directory.empty() && !records.empty())
+      write_pvd(directory, comm);
   }
 } // namespace liftoff

@@ -74,6 +74,8 @@ namespace liftoff
     discretization = &disc;
     ++n_preparations;
     factor_is_exact = true;
+    if (keeps_prepared_values)
+      prepared_values = matrix_values(A);
     if (type == Type::direct)
       {
         // Release the old factor before the new one is built.
@@ -174,5 +176,29 @@ namespace liftoff
     TimerOutput::Scope t(timer, "solve");
     vmult(x, b);
     return 0;
+  }
+
+
+  void
+  LinearSolver::save(OutputArchive &archive) const
+  {
+    AssertThrow(keeps_prepared_values && matrix != nullptr,
+                ExcMessage("LinearSolver::save() needs keeps_prepared_values "
+                           "and a prepared matrix."));
+    archive << factor_is_exact << prepared_values;
+  }
+
+
+  void
+  LinearSolver::load(InputArchive          &archive,
+                     LA::MPI::SparseMatrix &A,
+                     const Discretization  &disc)
+  {
+    bool                exact = false;
+    std::vector<double> values;
+    archive >> exact >> values;
+    set_matrix_values(values, A);
+    prepare(A, disc);
+    factor_is_exact = exact;
   }
 } // namespace liftoff

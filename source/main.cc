@@ -13,10 +13,14 @@
 namespace
 {
   const char *usage =
-    "usage: liftoff SCENE.prm     run a scene\n"
-    "       liftoff -             read the scene from standard input\n"
-    "       liftoff --parameters  print every parameter with its default "
-    "and documentation";
+    "usage: liftoff SCENE.prm            run a scene\n"
+    "       liftoff -                    read the scene from standard input\n"
+    "       liftoff --resume SCENE.prm   continue the scene from the newest\n"
+    "                                    checkpoint in its output directory\n"
+    "                                    (same number of ranks; the end time\n"
+    "                                    may be changed)\n"
+    "       liftoff --parameters         print every parameter with its "
+    "default and documentation";
 
   // Rank 0 reads the scene (from a file or stdin) and all ranks parse the
   // same text, so every rank fails alike on bad input.
@@ -59,12 +63,15 @@ main(int argc, char **argv)
         prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
       return 0;
     }
-  if (argc != 2)
+  const bool resume = (argc == 3 && std::string(argv[1]) == "--resume");
+  if (argc != 2 + resume || std::string(argv[argc - 1]).rfind("--", 0) == 0)
     {
       if (is_root)
         std::cerr << usage << std::endl;
       return 2;
     }
+
+  const std::string scene_name = argv[argc - 1];
 
   // SIGINT / SIGTERM end the run after the current step with complete
   // files and the exit code 128 + signal.
@@ -80,10 +87,10 @@ main(int argc, char **argv)
     try
       {
         liftoff::Simulator::declare_parameters(prm);
-        std::istringstream scene(read_scene(argv[1], comm));
-        prm.parse_input(scene, argv[1]);
+        std::istringstream scene(read_scene(scene_name, comm));
+        prm.parse_input(scene, scene_name);
         simulator.parse_parameters(prm);
-        simulator.run(prm);
+        simulator.run(prm, resume);
       }
     catch (...)
       {
@@ -102,7 +109,7 @@ main(int argc, char **argv)
     {
       if (is_root)
         {
-          std::cerr << "liftoff: error in " << argv[1] << ":\n";
+          std::cerr << "liftoff: error in " << scene_name << ":\n";
           e.print_info(std::cerr);
           std::cerr << std::endl;
         }
@@ -110,7 +117,7 @@ main(int argc, char **argv)
   catch (const std::exception &e)
     {
       if (is_root)
-        std::cerr << "liftoff: error in " << argv[1] << ":\n"
+        std::cerr << "liftoff: error in " << scene_name << ":\n"
                   << e.what() << std::endl;
     }
   return stopping_signal != 0 ? 128 + stopping_signal : 1;

@@ -3,7 +3,9 @@
 #include <liftoff/output_files.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <vector>
 
 namespace liftoff
 {
@@ -42,6 +44,19 @@ namespace liftoff
     AssertThrow(std::rename(temporary.c_str(), path.c_str()) == 0,
                 dealii::ExcMessage("Cannot rename " + temporary + " to "
                                    + path));
+  }
+
+
+  void
+  remove_temporary_files(const std::string &directory)
+  {
+    std::vector<std::filesystem::path> leftovers;
+    for (const auto &entry :
+         std::filesystem::recursive_directory_iterator(directory))
+      if (entry.is_regular_file() && entry.path().extension() == ".tmp")
+        leftovers.push_back(entry.path());
+    for (const auto &path : leftovers)
+      std::filesystem::remove(path);
   }
 
 
@@ -96,5 +111,20 @@ namespace liftoff
     write_file_atomically(path,
                           [&](std::ostream &out) { out << contents.str(); });
     since_written.restart();
+  }
+
+
+  std::string
+  GrowingTextFile::text() const
+  {
+    return contents.str();
+  }
+
+
+  void
+  GrowingTextFile::replace(const std::string &text)
+  {
+    contents.str("");
+    contents << text;
   }
 } // namespace liftoff

@@ -123,4 +123,23 @@ namespace liftoff
       }
     file.flush();
   }
+
+
+  void
+  ProfileOutput::save(OutputArchive &archive) const
+  {
+    archive << is_written << file.text();
+  }
+
+
+  void
+  ProfileOutput::load(InputArchive &archive)
+  {
+    std::string text;
+    archive >> is_written >> text;
+    if (!writes_file)
+      return;
+    file.replace(text);
+    file.flush();
+  }
 } // namespace liftoff

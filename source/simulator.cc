@@ -90,6 +90,7 @@ namespace liftoff
     FieldOutput::declare_parameters(prm);
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
+    Checkpoint::declare_parameters(prm);
   }
 
 
@@ -118,6 +119,7 @@ namespace liftoff
     field_output.parse_parameters(prm);
     time_history.parse_parameters(prm);
     profile_output.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
 
     // Initial conditions must parse before anything runs.
     initial_fields.clear();
@@ -215,9 +217,35 @@ namespace liftoff
 
 
   void
-  Simulator::run(const ParameterHandler &prm)
+  Simulator::run(const ParameterHandler &prm, const bool resume)
   {
     wall_clock.restart();
+    scene       = Checkpoint::comparable_scene(prm);
+    resume_step = 0;
+    if (resume)
+      {
+        // Everything is checked before a file is touched: a refused resume
+        // leaves the output of the earlier run as it was.
+        AssertThrow(analysis == Analysis::dynamic_analysis,
+                    ExcMessage("--resume continues a time integration; "
+                               "Analysis/Type = static has none."));
+        AssertThrow(writes_files(),
+                    ExcMessage("--resume reads the checkpoint in "
+                               "Output/Directory, which is empty."));
+        resume_step =
+          checkpoint.open(output_directory, mpi_communicator, scene);
+        AssertThrow(resume_step <= newmark.n_steps(),
+                    ExcMessage("Cannot resume: the checkpoint is of step "
+                               + std::to_string(resume_step)
+                               + ", beyond Time integration/End time = "
+                               + format_time(newmark.end_time) + " ("
+                               + std::to_string(newmark.n_steps())
+                               + " steps)."));
+        // A killed run may have left temporary files (and checkpoint.new,
+        // which the next checkpoint replaces).
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          remove_temporary_files(output_directory);
+      }
     prepare_output_directory(prm);
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
           << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
@@ -384,34 +412,44 @@ namespace liftoff
     // Generalized-alpha weighs in the previous state's force balance.
     const double previous_weight = newmark.previous_state_weight();
 
-    // Initial acceleration from M a0 = F(0) - (K + K_f(u0)) u0, with the
-    // contact set of u0.
-    set_initial_state();
-    loads.assemble(0.0, load);
-    {
-      TimerOutput::Scope t(timer, "initial acceleration");
-      foundation.update_contact_status(ghosted_u);
-      force_balance(load, balance);
-      matrices.solve_with_mass(a, balance);
-      discretization.constraints.distribute(a);
-    }
+    double work = 0;
+    if (writes_files())
+      active_set.prepare_for_checkpoints();
 
-    // The first iterate is the bilateral problem. The effective matrix
-    // without the foundation is needed only to build the system matrix.
-    foundation.activate_all();
+    if (resume_step == 0)
+      {
+        // Initial acceleration from M a0 = F(0) - (K + K_f(u0)) u0, with
+        // the contact set of u0.
+        set_initial_state();
+        loads.assemble(0.0, load);
+        TimerOutput::Scope t(timer, "initial acceleration");
+        foundation.update_contact_status(ghosted_u);
+        force_balance(load, balance);
+        matrices.solve_with_mass(a, balance);
+        discretization.constraints.distribute(a);
+        // The first iterate is the bilateral problem.
+        foundation.activate_all();
+      }
     {
+      // The effective matrix without the foundation is needed only to
+      // build the system matrix.
       LA::MPI::SparseMatrix base;
       discretization.reinit_matrix(base);
       base.copy_from(matrices.stiffness);
       base.add(newmark.mass_factor(), matrices.mass);
-      active_set.set_base_matrix(base);
+      if (resume_step == 0)
+        active_set.set_base_matrix(base);
+      else
+        read_checkpoint(base, load, balance, work);
     }
+    if (resume_step == 0)
+      {
+        const EnergyBalance e = energies(0.0);
+        record_step(0, 0.0, n_steps == 0, {}, e, e);
+      }
+    const EnergyBalance initial = records.front().energies;
 
-    double              work    = 0;
-    const EnergyBalance initial = energies(0.0);
-    record_step(0, 0.0, n_steps == 0, {}, initial, initial);
-
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    for (unsigned int step = resume_step + 1; step <= n_steps; ++step)
       {
         const double tau = step * dt;
         {
@@ -456,7 +494,11 @@ namespace liftoff
         record_step(
           step, tau, step == n_steps, result, energies(work), initial);
 
-        if (const int signal = StopSignal::received(mpi_communicator))
+        const int signal = StopSignal::received(mpi_communicator);
+        if (writes_files()
+            && (signal != 0 || checkpoint.is_due(step, step == n_steps)))
+          write_checkpoint(step, load, balance, work);
+        if (signal != 0)
           {
             stopped_by_signal = signal;
             AssertThrow(false,
@@ -465,9 +507,79 @@ namespace liftoff
                                    + std::to_string(step)
                                    + " (tau = " + format_time(tau)
                                    + "); the files written so far are "
-                                     "complete."));
+                                     "complete"
+                                   + (writes_files()
+                                        ? " and `liftoff --resume` continues "
+                                          "from the checkpoint of this step."
+                                        : ".")));
           }
       }
+  }
+
+
+  void
+  Simulator::write_checkpoint(const unsigned int     step,
+                              const LA::MPI::Vector &load,
+                              const LA::MPI::Vector &balance,
+                              const double           work)
+  {
+    TimerOutput::Scope t(timer, "checkpoint");
+    // The time loop's whole state, bit for bit: the next step's right-hand
+    // side needs u, v, a (and the load and force balance of this step), its
+    // active-set iteration starts from the contact status and the matrix
+    // and factor as they are. The rows written so far go with them.
+    checkpoint.write(output_directory,
+                     mpi_communicator,
+                     step,
+                     scene,
+                     [&](OutputArchive &archive) {
+                       archive << work << records;
+                       for (const LA::MPI::Vector *vector :
+                            std::initializer_list<const LA::MPI::Vector *>{
+                              &u, &v, &a, &load, &balance})
+                         save_vector(archive, *vector);
+                       foundation.save(archive);
+                       active_set.save(archive);
+                       field_output.save(archive);
+                       profile_output.save(archive);
+                     });
+  }
+
+
+  void
+  Simulator::read_checkpoint(const LA::MPI::SparseMatrix &base,
+                             LA::MPI::Vector             &load,
+                             LA::MPI::Vector             &balance,
+                             double                      &work)
+  {
+    TimerOutput::Scope t(timer, "checkpoint");
+    checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
+      archive >> work >> records;
+      for (auto *vector : {&u, &v, &a, &load, &balance})
+        load_vector(archive, *vector);
+      foundation.load(archive);
+      active_set.load(archive, base);
+      field_output.load(archive, output_directory, mpi_communicator);
+      profile_output.load(archive);
+    });
+    AssertThrow(records.size() == resume_step + 1,
+                ExcMessage("The checkpoint of step "
+                           + std::to_string(resume_step) + " holds "
+                           + std::to_string(records.size()) + " steps."));
+    ghosted_u = u;
+    ghosted_v = v;
+    // history.csv is a function of the records: its rows are written again
+    // as they were, and those of steps after the checkpoint are gone.
+    for (const auto &r : records)
+      time_history.record(r.tau,
+                          r.probe_w,
+                          r.contact_fraction,
+                          r.iterations,
+                          r.cycle_length,
+                          r.energies,
+                          records.front().energies);
+    time_history.flush();
+    pcout << "resumed after step " << resume_step << std::endl;
   }
 
 
@@ -500,8 +612,11 @@ namespace liftoff
       Utilities::MPI::max(memory.VmHWM / 1024.0, mpi_communicator);
 
     std::ostringstream text;
-    text << "status: " << status << '\n'
-         << "analysis: "
+    text << "status: " << status << '\n';
+    if (resume_step > 0)
+      text << "resumed after step: " << resume_step
+           << " (solver counts and times below are since then)\n";
+    text << "analysis: "
          << (analysis == Analysis::static_analysis ? "static" : "dynamic")
          << '\n'
          << "ranks: " << Utilities::MPI::n_mpi_processes(mpi_communicator)

@@ -374,4 +374,25 @@ namespace liftoff
       }
     return fraction;
   }
+
+
+  void
+  TensionlessWinklerFoundation::save(OutputArchive &archive) const
+  {
+    archive << in_contact << in_matrix << points_to_update;
+  }
+
+
+  void
+  TensionlessWinklerFoundation::load(InputArchive &archive)
+  {
+    const std::size_t n_points = in_contact.size();
+    archive >> in_contact >> in_matrix >> points_to_update;
+    AssertThrow(in_contact.size() == n_points && in_matrix.size() == n_points,
+                ExcMessage("The checkpoint's contact status has "
+                           + std::to_string(in_contact.size())
+                           + " Gauss points where this rank has "
+                           + std::to_string(n_points)
+                           + ": it was written for another mesh."));
+  }
 } // namespace liftoff

@@ -21,11 +21,13 @@ namespace liftoff_tests
   using namespace dealii;
 
   /// Parse the scene (parameters it does not set keep their defaults; no
-  /// output files unless it sets Output/Directory) and run it.
+  /// output files unless it sets Output/Directory) and run it, or resume it
+  /// from its checkpoint.
   inline std::unique_ptr<liftoff::Simulator>
   run_scene(const std::string &scene,
             Function<2>       *body_force = nullptr,
-            const MPI_Comm     comm       = MPI_COMM_WORLD)
+            const MPI_Comm     comm       = MPI_COMM_WORLD,
+            const bool         resume     = false)
   {
     ParameterHandler prm;
     liftoff::Simulator::declare_parameters(prm);
@@ -37,7 +39,7 @@ namespace liftoff_tests
       std::make_unique<liftoff::Simulator>(comm, /*verbose*/ false);
     simulator->parse_parameters(prm);
     simulator->set_body_force(body_force);
-    simulator->run(prm);
+    simulator->run(prm, resume);
     return simulator;
   }
 

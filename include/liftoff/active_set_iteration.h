@@ -76,6 +76,20 @@ namespace liftoff
     const LinearSolver &
     linear_solver() const;
 
+    /// Keep what save() needs (a copy of the factorised matrix's values).
+    void
+    prepare_for_checkpoints();
+
+    /// The system matrix B + K_f(S) as it is, round-off included, and the
+    /// factor the solver holds.
+    void
+    save(OutputArchive &archive) const;
+    /// Instead of set_base_matrix(): the matrix and factor of save(), with
+    /// B giving the structure. The foundation's own status must be loaded
+    /// as well.
+    void
+    load(InputArchive &archive, const LA::MPI::SparseMatrix &B);
+
     unsigned int max_iterations = 50;
     CycleRule    cycle_rule     = CycleRule::union_of_cycle;
     /// Nothing but the foundation holds the plate (a static free plate):

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 
@@ -41,8 +42,20 @@ namespace liftoff
           const double                        time,
           const unsigned int                  step);
 
+    /// The records of the PVD file; load() rewrites it with them, and the
+    /// VTU files of later steps are overwritten as the run gets there.
+    void
+    save(OutputArchive &archive) const;
+    void
+    load(InputArchive      &archive,
+         const std::string &directory,
+         const MPI_Comm     comm);
+
   private:
     unsigned int                                interval = 10;
     std::vector<std::pair<double, std::string>> records;
+
+    void
+    write_pvd(const std::string &directory, const MPI_Comm comm) const;
   };
 } // namespace liftoff

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
 #include <liftoff/linear_algebra.h>
 
@@ -74,6 +75,25 @@ namespace liftoff
     void
     vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const;
 
+    /// Keep a copy of the values of each matrix given to prepare(), for
+    /// save(). The factor (or preconditioner) of a matrix that has been
+    /// changed in place since is only reproduced from the values it was
+    /// built from: the changes, added and taken away again, leave other
+    /// round-off in the matrix than a fresh assembly would.
+    bool keeps_prepared_values = false;
+
+    /// What it takes to continue with the same factor: the values it was
+    /// built from and whether the matrix still equals them.
+    void
+    save(OutputArchive &archive) const;
+    /// Rebuild the factor of save() for A, which must have the structure
+    /// of the matrix saved from; A is left holding the values the factor
+    /// was built from.
+    void
+    load(InputArchive          &archive,
+         LA::MPI::SparseMatrix &A,
+         const Discretization  &disc);
+
   private:
     enum class Type
     {
@@ -91,6 +111,7 @@ namespace liftoff
     const LA::MPI::SparseMatrix *matrix         = nullptr;
     /// The factor belongs to the matrix as it is now.
     bool                                               factor_is_exact = false;
+    std::vector<double>                                prepared_values;
     SolverControl                                      direct_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;

@@ -15,6 +15,11 @@ namespace liftoff
   write_file_atomically(const std::string                         &path,
                         const std::function<void(std::ostream &)> &write);
 
+  /// Remove what write_file_atomically() leaves behind when a run is killed
+  /// while writing: `*.tmp` files in `directory` and its subfolders.
+  void
+  remove_temporary_files(const std::string &directory);
+
   /// The message of an exception without deal.II's stack trace, for
   /// passing an error on in a message of its own.
   std::string
@@ -41,6 +46,13 @@ namespace liftoff
     /// Write the file now.
     void
     flush();
+
+    /// Everything added so far, and a replacement for it (a resumed run
+    /// continues the file of its checkpoint).
+    std::string
+    text() const;
+    void
+    replace(const std::string &text);
 
   private:
     std::string        path;

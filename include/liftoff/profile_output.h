@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
 #include <liftoff/output_files.h>
 #include <liftoff/point_functional.h>
@@ -37,6 +38,13 @@ namespace liftoff
     /// dt = 0 (a static analysis) write one profile unconditionally.
     void
     write_if_due(const double tau, const double dt, const LA::MPI::Vector &u);
+
+    /// The profiles written so far and which times they were for; load()
+    /// rewrites profiles.csv with them.
+    void
+    save(OutputArchive &archive) const;
+    void
+    load(InputArchive &archive);
 
   private:
     Point<2>                     start, end;

@@ -6,6 +6,7 @@
 #include <deal.II/base/timer.h>
 
 #include <liftoff/active_set_iteration.h>
+#include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
 #include <liftoff/field_output.h>
 #include <liftoff/load_set.h>
@@ -44,6 +45,14 @@ namespace liftoff
       double              contact_fraction;
       std::vector<double> probe_w;
       EnergyBalance       energies;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &tau &iterations &cycle_length &contact_fraction &probe_w
+          &energies;
+      }
     };
 
     /// With verbose = false nothing is printed (tests).
@@ -56,9 +65,11 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// Run the scene. `prm` is only used to record the parameters used.
+    /// Run the scene, or with `resume` continue it from the newest
+    /// checkpoint in its output directory. `prm` is recorded with the
+    /// results and compared with the checkpoint's scene.
     void
-    run(const ParameterHandler &prm);
+    run(const ParameterHandler &prm, const bool resume = false);
 
     /// See LoadSet::set_body_force(); for manufactured solutions.
     void
@@ -104,11 +115,15 @@ namespace liftoff
     FieldOutput                  field_output;
     TimeHistory                  time_history;
     ProfileOutput                profile_output;
+    Checkpoint                   checkpoint;
 
     Analysis    analysis          = Analysis::dynamic_analysis;
     int         stopped_by_signal = 0;
     std::string output_directory;
-    std::string initial_displacement, initial_velocity;
+    /// The scene as Checkpoint compares it, and the step resumed from.
+    std::string  scene;
+    unsigned int resume_step = 0;
+    std::string  initial_displacement, initial_velocity;
     /// Parsed initial displacement and velocity.
     std::vector<std::unique_ptr<FunctionParser<2>>> initial_fields;
 
@@ -126,6 +141,17 @@ namespace liftoff
     run_dynamic();
     void
     set_initial_state();
+    /// Everything the time loop needs to go on after `step`, and back.
+    void
+    write_checkpoint(const unsigned int     step,
+                     const LA::MPI::Vector &load,
+                     const LA::MPI::Vector &balance,
+                     const double           work);
+    void
+    read_checkpoint(const LA::MPI::SparseMatrix &base,
+                    LA::MPI::Vector             &load,
+                    LA::MPI::Vector             &balance,
+                    double                      &work);
     EnergyBalance
     energies(const double work) const;
     /// F - K u - K_f(S) u for the current state u and contact set S.

@@ -4,6 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
 #include <liftoff/linear_algebra.h>
 
@@ -95,6 +96,12 @@ namespace liftoff
     contact_status() const;
     void
     set_contact_status(const std::vector<unsigned char> &status);
+    /// The contact status and the status the system matrix holds: the next
+    /// step starts from them, so a resumed run needs them exactly.
+    void
+    save(OutputArchive &archive) const;
+    void
+    load(InputArchive &archive);
 
     Model  model             = Model::tensionless;
     double stiffness         = 1.0;

@@ -29,6 +29,13 @@ namespace liftoff
       return kinetic + strain + foundation
              - (initial.kinetic + initial.strain + initial.foundation) - work;
     }
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &kinetic &strain &foundation &work;
+    }
   };
 
   /**

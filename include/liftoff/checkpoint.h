@@ -1,0 +1,101 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <liftoff/linear_algebra.h>
+
+#include <functional>
+#include <string>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /// What each part of the state writes itself to and reads itself from.
+  using OutputArchive = boost::archive::binary_oarchive;
+  using InputArchive  = boost::archive::binary_iarchive;
+
+  /// This rank's entries of a distributed vector, bit for bit.
+  void
+  save_vector(OutputArchive &archive, const LA::MPI::Vector &vector);
+  void
+  load_vector(InputArchive &archive, LA::MPI::Vector &vector);
+
+  /// The values of this rank's rows of a matrix, bit for bit, and back;
+  /// setting them requires the same sparsity pattern and row distribution.
+  std::vector<double>
+  matrix_values(const LA::MPI::SparseMatrix &A);
+  void
+  set_matrix_values(const std::vector<double> &values,
+                    LA::MPI::SparseMatrix     &A);
+
+  /**
+   * The files of a checkpoint and when to write one. A checkpoint is a
+   * folder `checkpoint` in the output directory: one binary archive per rank
+   * (`rank_RRRR.bin`, filled by the caller with that rank's state) and a
+   * text header `checkpoint.txt`, written last, with the step, the number
+   * of ranks and the scene. It is written as `checkpoint.new` and renamed
+   * into place once complete; the previous checkpoint is kept as
+   * `checkpoint.previous` until then, so a run that dies while writing
+   * leaves one complete checkpoint behind.
+   *
+   * The archives hold each rank's own degrees of freedom and matrix rows, so
+   * a run resumes on the same number of ranks (the mesh, rebuilt from the
+   * scene, is then partitioned and numbered the same way); anything else is
+   * refused, as is a scene that differs from the checkpoint's in anything
+   * but the end time and this subsection.
+   */
+  class Checkpoint
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether a checkpoint is written after step `step` without a signal.
+    bool
+    is_due(const unsigned int step, const bool is_last_step) const;
+
+    /// The scene as "Subsection/Entry = value" lines, without the entries a
+    /// resumed run may change.
+    static std::string
+    comparable_scene(const ParameterHandler &prm);
+
+    /// Write a checkpoint of step `step`; `save` fills this rank's archive.
+    /// Collective; throws on every rank if any rank fails, and then the
+    /// previous checkpoint is untouched.
+    void
+    write(const std::string                          &directory,
+          const MPI_Comm                              comm,
+          const unsigned int                          step,
+          const std::string                          &scene,
+          const std::function<void(OutputArchive &)> &save) const;
+
+    /// Find the newest complete checkpoint in `directory` and check it
+    /// against the scene and the number of ranks; returns its step. Reads
+    /// only the header and writes nothing, so a refused resume leaves the
+    /// output as it was. Collective.
+    unsigned int
+    open(const std::string &directory,
+         const MPI_Comm     comm,
+         const std::string &scene);
+
+    /// Read this rank's archive of the checkpoint found by open().
+    void
+    read(const MPI_Comm                             comm,
+         const std::function<void(InputArchive &)> &load) const;
+
+  private:
+    unsigned int interval = 100;
+    /// The folder open() found.
+    std::string found;
+  };
+} // namespace liftoff
