@@ -150,7 +150,7 @@ namespace liftoff
   bool
   Checkpoint::is_due(const unsigned int step, const bool is_last_step) const
   {
-    return interval > 0 && (step % interval == 0 || is_last_step);
+    return is_due_every(interval, step, is_last_step);
   }
 
 

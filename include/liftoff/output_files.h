@@ -25,6 +25,16 @@ namespace liftoff
   std::string
   message_of(const std::exception &e);
 
+  /// Whether something written every `interval` steps (0: never) is due
+  /// after `step`; the last step always is, so a run ends with it.
+  inline bool
+  is_due_every(const unsigned int interval,
+               const unsigned int step,
+               const bool         is_last_step)
+  {
+    return interval > 0 && (step % interval == 0 || is_last_step);
+  }
+
   /**
    * A text file that grows (a CSV table) but is only ever replaced whole:
    * rows are kept in memory and the file is rewritten atomically at most
