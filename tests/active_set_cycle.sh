@@ -13,9 +13,7 @@ set -u
 liftoff=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 scene=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
 source "$(dirname "$0")/output_checks.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+enter_work_directory
 mpirun=$(command -v mpirun || command -v mpiexec)
 
 run() { # run NAME RANKS RULE

@@ -13,9 +13,7 @@ scene=$2
 expect=$(sed -n '1s/^# EXPECT: //p' "$scene")
 [ -n "$expect" ] || { echo "FAIL $scene has no '# EXPECT:' first line"; exit 1; }
 
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+enter_work_directory
 "$liftoff" "$scene" >stdout.txt 2>stderr.txt
 status=$?
 cat stderr.txt

@@ -8,9 +8,7 @@
 set -u
 liftoff=$1
 source "$(dirname "$0")/output_checks.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+enter_work_directory
 printf '%s\n' \
   'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 12' \
   '  set Cells along y = 12' '  set Polynomial degree = 2' 'end' \

@@ -1,6 +1,14 @@
 # Shell helpers shared by the script tests (source this file).
 
 failures=0
+
+# enter_work_directory: make a temporary directory $work, remove it when the
+# script exits, and change into it.
+enter_work_directory() {
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  cd "$work" || exit 1
+}
 # check STATUS WHAT: report a check; STATUS 0 is a pass.
 check() {
   if [ "$1" -eq 0 ]; then echo "PASS $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi

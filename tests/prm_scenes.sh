@@ -9,9 +9,7 @@ set -u
 liftoff=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 scenes=$(cd "$2" && pwd)
 source "$(dirname "$0")/output_checks.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+enter_work_directory
 n_scenes=0
 for scene in "$scenes"/*.prm; do
   name=$(basename "$scene" .prm)

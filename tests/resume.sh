@@ -11,9 +11,7 @@ set -u
 liftoff=$1
 n_ranks=${2:-1}
 source "$(dirname "$0")/output_checks.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+enter_work_directory
 if [ "$n_ranks" -gt 1 ]; then
   run=(mpirun --allow-run-as-root --oversubscribe -np "$n_ranks" "$liftoff")
 else

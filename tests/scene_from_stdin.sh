@@ -7,9 +7,7 @@
 set -u
 liftoff=$1
 source "$(dirname "$0")/output_checks.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+enter_work_directory
 printf '%s\n' \
   'subsection Discretization' '  set Cells along x = 3' '  set Cells along y = 3' 'end' \
   'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
