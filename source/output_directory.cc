@@ -89,6 +89,14 @@ namespace liftoff
                                  + std::strerror(errno)));
           if (flock(descriptor, LOCK_EX | LOCK_NB) != 0)
             {
+              const int error = errno;
+              if (error != EWOULDBLOCK)
+                {
+                  close(descriptor);
+                  AssertThrow(false,
+                              ExcMessage("cannot lock " + name + ": "
+                                         + std::strerror(error)));
+                }
               std::string holder(256, '\0');
               const auto n = pread(descriptor, holder.data(), holder.size(), 0);
               holder.resize(n > 0 ? n : 0);
@@ -131,14 +139,16 @@ namespace liftoff
       : path(folder)
       , comm(communicator)
   {
-    collective_attempt(comm, "Output/Directory = " + path, [&]() {
-      if (Utilities::MPI::this_mpi_process(comm) != 0)
-        return;
-      if (create)
-        fs::create_directories(path);
-      if (fs::is_directory(path))
-        lock_descriptor = lock(path);
-    });
+    collective_attempt(comm,
+                       "Output/Directory = " + path + " cannot be written",
+                       [&]() {
+                         if (Utilities::MPI::this_mpi_process(comm) != 0)
+                           return;
+                         if (create)
+                           fs::create_directories(path);
+                         if (fs::is_directory(path))
+                           lock_descriptor = lock(path);
+                       });
   }
 
 
@@ -166,7 +176,7 @@ namespace liftoff
   void
   OutputDirectory::refuse_earlier_results() const
   {
-    collective_attempt(comm, "Output/Directory = " + path, [&]() {
+    collective_attempt(comm, "", [&]() {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       const auto names = results();
@@ -179,7 +189,8 @@ namespace liftoff
         listed += " and " + std::to_string(names.size() - 3) + " more";
       AssertThrow(false,
                   ExcMessage(
-                    "holds the results of an earlier run (" + listed
+                    "Output/Directory = " + path
+                    + " holds the results of an earlier run (" + listed
                     + "). A run does not mix its files with another's: "
                       "`liftoff --overwrite SCENE` replaces them, `liftoff "
                       "--resume SCENE` continues that run from its "
