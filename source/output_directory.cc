@@ -43,12 +43,13 @@ namespace liftoff
       return std::regex_match(entry.path().filename().string(), names);
     }
 
-    /// liftoff's files in `folder`, then its checkpoint folders (which go
-    /// only when they are empty of anything else).
+    /// liftoff's files in `folder`, then those in its checkpoint folders,
+    /// then these folders (which go only when they are empty of anything
+    /// else).
     std::vector<fs::path>
     liftoff_entries(const std::string &folder)
     {
-      std::vector<fs::path> files, folders;
+      std::vector<fs::path> files, inner_files, folders;
       if (!fs::is_directory(folder))
         return files;
       for (const auto &entry : fs::directory_iterator(folder))
@@ -59,13 +60,15 @@ namespace liftoff
             folders.push_back(entry.path());
             for (const auto &inner : fs::directory_iterator(entry.path()))
               if (inner.is_regular_file() && matches(inner, checkpoint_files))
-                files.push_back(inner.path());
+                inner_files.push_back(inner.path());
           }
-      std::sort(files.begin(), files.end());
-      std::sort(folders.begin(), folders.end());
+      for (auto *list : {&files, &inner_files, &folders})
+        std::sort(list->begin(), list->end());
+      files.insert(files.end(), inner_files.begin(), inner_files.end());
       files.insert(files.end(), folders.begin(), folders.end());
       return files;
     }
+
 
     std::string
     host_name()

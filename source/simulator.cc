@@ -77,7 +77,11 @@ namespace liftoff
                       "output",
                       Patterns::Anything(),
                       "Folder for all results (created if needed). Empty: "
-                      "write no files.");
+                      "write no files. A run owns it while it runs (a second "
+                      "run into it is refused) and refuses it if it holds an "
+                      "earlier run's results, unless started with `liftoff "
+                      "--overwrite`, which removes them, or `--resume`. Only "
+                      "the files liftoff writes are ever touched.");
     prm.leave_subsection();
 
     MindlinPlate::declare_parameters(prm);
