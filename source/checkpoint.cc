@@ -70,12 +70,16 @@ namespace liftoff
       return text.str();
     }
 
-    std::uint32_t
-    crc_of(const std::string &text)
+    /// The last line of checkpoint.txt, after the lines `body`.
+    std::string
+    checksum_line(const std::string &body)
     {
       boost::crc_32_type crc;
-      crc.process_bytes(text.data(), text.size());
-      return crc.checksum();
+      crc.process_bytes(body.data(), body.size());
+      std::ostringstream line;
+      line << checksum_label << std::hex << std::setw(8) << std::setfill('0')
+           << crc.checksum() << '\n';
+      return line.str();
     }
 
     /// Read a line "<key><number>".
@@ -268,8 +272,7 @@ namespace liftoff
         header << rank_name(r) << " = " << describe(sums[r]) << '\n';
       header << "scene:\n" << scene;
       write_file_atomically(fresh + "/" + header_name, [&](std::ostream &out) {
-        out << header.str() << checksum_label << std::hex << std::setw(8)
-            << std::setfill('0') << crc_of(header.str()) << '\n';
+        out << header.str() << checksum_line(header.str());
       });
       std::filesystem::remove_all(previous);
       if (std::filesystem::exists(target))
@@ -311,18 +314,15 @@ namespace liftoff
       const std::string first_line = text.substr(0, text.find('\n'));
       AssertThrow(first_line != format_line + "1",
                   ExcMessage(header + " is of checkpoint format 1, written "
-                             + "by an older liftoff that this one (" + "format "
+                             + "by an older liftoff that this one (format "
                              + std::to_string(format)
                              + ") does not read; run the scene again."));
       // The last line is the checksum of everything before it.
       const auto last =
         text.size() > 1 ? text.rfind('\n', text.size() - 2) : std::string::npos;
-      const std::string  body = text.substr(0, last + 1);
-      std::ostringstream checksum;
-      checksum << checksum_label << std::hex << std::setw(8)
-               << std::setfill('0') << crc_of(body) << '\n';
+      const std::string body = text.substr(0, last + 1);
       AssertThrow(last != std::string::npos && text.back() == '\n'
-                    && text.substr(last + 1) == checksum.str(),
+                    && text.substr(last + 1) == checksum_line(body),
                   ExcMessage(header + " is damaged (its contents do not match "
                              + "its checksum) or not a liftoff checkpoint."));
       AssertThrow(first_line == format_line + std::to_string(format),
