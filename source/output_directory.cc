@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <regex>
 
 namespace liftoff
@@ -95,10 +96,14 @@ namespace liftoff
               const int error = errno;
               if (error != EWOULDBLOCK)
                 {
-                  close(descriptor);
-                  AssertThrow(false,
-                              ExcMessage("cannot lock " + name + ": "
-                                         + std::strerror(error)));
+                  // A file system without flock (Lustre mounted with
+                  // noflock): run, but say that the folder is unguarded.
+                  std::cerr << "liftoff: warning: cannot lock " << name << " ("
+                            << std::strerror(error)
+                            << "); another run into this folder would not "
+                               "be refused."
+                            << std::endl;
+                  return descriptor;
                 }
               std::string holder(256, '\0');
               const auto n = pread(descriptor, holder.data(), holder.size(), 0);

@@ -15,7 +15,9 @@ namespace liftoff
    * folder, a file naming its pid and host. The kernel releases the lock
    * when the process ends however it ends, so the file a killed run leaves
    * behind does not count; another liftoff (a second run, a resume) is
-   * refused with the holder's pid and host while it is held.
+   * refused with the holder's pid and host while it is held. On a file
+   * system without flock the run goes on with a warning that the folder is
+   * unguarded.
    *
    * liftoff's entries are the files it writes (used_parameters.prm,
    * summary.txt, history.csv, profiles.csv, solution.pvd,
