@@ -46,7 +46,9 @@ def run_scene(executable, text, directory, ranks=1, log_name="log.txt",
     prm = os.path.join(directory, "scene.prm")
     with open(prm, "w") as f:
         f.write(text)
-    command = [executable, prm]
+    # The directory is the script's own: a run replaces the results that an
+    # earlier run of the script left there (liftoff refuses that otherwise).
+    command = [executable, "--overwrite", prm]
     if ranks > 1:
         command = ["mpirun", "--allow-run-as-root", "--oversubscribe",
                    "-np", str(ranks)] + command

@@ -7,9 +7,12 @@
 #include <liftoff/output_files.h>
 
 #include <Epetra_CrsMatrix.h>
+#include <zlib.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace liftoff
@@ -17,15 +20,73 @@ namespace liftoff
   namespace
   {
     const std::string header_name = "checkpoint.txt";
-    const std::string first_line  = "liftoff checkpoint, format 1";
+    const std::string format_line = "liftoff checkpoint, format ";
+    /// Raised whenever what a checkpoint holds or how it is laid out
+    /// changes, so that an older checkpoint is refused by name rather than
+    /// misread.
+    const unsigned int format         = 2;
+    const std::string  checksum_label = "crc32 of the lines above = ";
+
+    std::string
+    rank_name(const unsigned int rank)
+    {
+      return "rank_" + Utilities::int_to_string(rank, 4) + ".bin";
+    }
 
     std::string
     rank_file(const std::string &folder, const MPI_Comm comm)
     {
-      return folder + "/rank_"
-             + Utilities::int_to_string(Utilities::MPI::this_mpi_process(comm),
-                                        4)
-             + ".bin";
+      return folder + "/" + rank_name(Utilities::MPI::this_mpi_process(comm));
+    }
+
+    /// The CRC-32 of `n` bytes continuing that of the bytes before them
+    /// (`crc`): zlib's, which deal.II links, a few times faster than a
+    /// byte-wise table (boost::crc_32_type gives the same values).
+    std::uint32_t
+    crc_of(const char *data, const std::size_t n, const std::uint32_t crc = 0)
+    {
+      return crc32(crc, reinterpret_cast<const Bytef *>(data), n);
+    }
+
+    /// Size and CRC-32 of a file, as checkpoint.txt records them.
+    using FileSum = std::pair<std::uint64_t, std::uint32_t>;
+
+    FileSum
+    sum_of_file(const std::string &name)
+    {
+      std::ifstream in(name, std::ios::binary);
+      AssertThrow(in,
+                  ExcMessage("the checkpoint file " + name + " is missing."));
+      std::uint32_t     crc   = 0;
+      std::uint64_t     bytes = 0;
+      std::vector<char> buffer(1 << 20);
+      while (in)
+        {
+          in.read(buffer.data(), buffer.size());
+          crc = crc_of(buffer.data(), in.gcount(), crc);
+          bytes += in.gcount();
+        }
+      AssertThrow(in.eof(), ExcMessage("Cannot read " + name));
+      return {bytes, crc};
+    }
+
+    std::string
+    describe(const FileSum &sum)
+    {
+      std::ostringstream text;
+      text << sum.first << " bytes, crc32 " << std::hex << std::setw(8)
+           << std::setfill('0') << sum.second;
+      return text.str();
+    }
+
+    /// The last line of checkpoint.txt, after the lines `body`.
+    std::string
+    checksum_line(const std::string &body)
+    {
+      std::ostringstream line;
+      line << checksum_label << std::hex << std::setw(8) << std::setfill('0')
+           << crc_of(body.data(), body.size()) << '\n';
+      return line.str();
     }
 
     /// Read a line "<key><number>".
@@ -37,23 +98,6 @@ namespace liftoff
         return false;
       std::istringstream value(line.substr(key.size()));
       return static_cast<bool>(value >> number);
-    }
-
-
-    /// Throw on every rank with the message of the first rank that failed.
-    void
-    throw_if_any_failed(const std::string &error,
-                        const MPI_Comm     comm,
-                        const std::string &what)
-    {
-      const auto  errors = Utilities::MPI::gather(comm, error, 0);
-      std::string first;
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        for (const auto &e : errors)
-          if (first.empty())
-            first = e;
-      first = Utilities::MPI::broadcast(comm, first, 0);
-      AssertThrow(first.empty(), ExcMessage(what + ": " + first));
     }
   } // namespace
 
@@ -203,58 +247,46 @@ namespace liftoff
                              + std::to_string(step) + " to " + target
                              + " failed (the previous one is unchanged)";
 
-    std::string error;
-    if (is_root)
-      try
+    collective_attempt(comm, what, [&]() {
+      if (is_root)
         {
           std::filesystem::remove_all(fresh);
           std::filesystem::create_directories(fresh);
         }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-    throw_if_any_failed(error, comm, what);
+    });
 
-    try
-      {
-        write_file_atomically(rank_file(fresh, comm), [&](std::ostream &out) {
-          OutputArchive archive(out);
-          save(archive);
-        });
-      }
-    catch (const std::exception &e)
-      {
-        error = message_of(e);
-      }
-    throw_if_any_failed(error, comm, what);
+    // Each file's checksum is taken from what is on the disk.
+    FileSum sum;
+    collective_attempt(comm, what, [&]() {
+      write_file_atomically(rank_file(fresh, comm), [&](std::ostream &out) {
+        OutputArchive archive(out);
+        save(archive);
+      });
+      sum = sum_of_file(rank_file(fresh, comm));
+    });
+    const std::vector<FileSum> sums = Utilities::MPI::gather(comm, sum, 0);
 
     // The header is written last: a folder without it is incomplete. Then
     // the new folder takes the place of the old one, which goes only after.
-    if (is_root)
-      try
-        {
-          write_file_atomically(fresh + "/" + header_name,
-                                [&](std::ostream &out) {
-                                  out << first_line << '\n'
-                                      << "step = " << step << '\n'
-                                      << "ranks = "
-                                      << Utilities::MPI::n_mpi_processes(comm)
-                                      << '\n'
-                                      << "scene:\n"
-                                      << scene;
-                                });
-          std::filesystem::remove_all(previous);
-          if (std::filesystem::exists(target))
-            std::filesystem::rename(target, previous);
-          std::filesystem::rename(fresh, target);
-          std::filesystem::remove_all(previous);
-        }
-      catch (const std::exception &e)
-        {
-          error = message_of(e);
-        }
-    throw_if_any_failed(error, comm, what);
+    collective_attempt(comm, what, [&]() {
+      if (!is_root)
+        return;
+      std::ostringstream header;
+      header << format_line << format << '\n'
+             << "step = " << step << '\n'
+             << "ranks = " << sums.size() << '\n';
+      for (unsigned int r = 0; r < sums.size(); ++r)
+        header << rank_name(r) << " = " << describe(sums[r]) << '\n';
+      header << "scene:\n" << scene;
+      write_file_atomically(fresh + "/" + header_name, [&](std::ostream &out) {
+        out << header.str() << checksum_line(header.str());
+      });
+      std::filesystem::remove_all(previous);
+      if (std::filesystem::exists(target))
+        std::filesystem::rename(target, previous);
+      std::filesystem::rename(fresh, target);
+      std::filesystem::remove_all(previous);
+    });
   }
 
 
@@ -263,67 +295,107 @@ namespace liftoff
                    const MPI_Comm     comm,
                    const std::string &scene)
   {
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    std::string        error;
-    unsigned int       step = 0;
+    const unsigned int   n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    unsigned int         step    = 0;
+    std::vector<FileSum> sums;
     found.clear();
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        // A run that died between the two renames of write() left only
-        // the previous checkpoint.
-        for (const std::string name : {"checkpoint", "checkpoint.previous"})
-          if (found.empty()
-              && std::filesystem::exists(directory + "/" + name + "/"
-                                         + header_name))
-            found = directory + "/" + name;
+    collective_attempt(comm, "Cannot resume", [&]() {
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      // A run that died between the two renames of write() left only
+      // the previous checkpoint.
+      for (const std::string name : {"checkpoint", "checkpoint.previous"})
+        if (found.empty()
+            && std::filesystem::exists(directory + "/" + name + "/"
+                                       + header_name))
+          found = directory + "/" + name;
+      AssertThrow(!found.empty(),
+                  ExcMessage("there is no checkpoint in " + directory
+                             + "/checkpoint. A run writes one every "
+                               "Checkpoint/Interval steps and when SIGINT or "
+                               "SIGTERM stops it."));
 
-        std::ifstream in(found + "/" + header_name);
-        std::string   line, saved_scene;
-        unsigned int  saved_ranks = 0;
-        if (found.empty())
-          error = "there is no checkpoint in " + directory
-                  + "/checkpoint. A run writes one every Checkpoint/Interval "
-                    "steps and when SIGINT or SIGTERM stops it.";
-        else if (!std::getline(in, line) || line != first_line
-                 || !read_number(in, "step = ", step)
-                 || !read_number(in, "ranks = ", saved_ranks)
-                 || !std::getline(in, line) || line != "scene:")
-          error = found + "/" + header_name + " is not a liftoff checkpoint "
-                  + "header.";
-        else
-          {
-            saved_scene.assign(std::istreambuf_iterator<char>(in), {});
-            if (saved_ranks != n_ranks)
-              error = "the checkpoint in " + found + " was written by "
-                      + std::to_string(saved_ranks) + " rank(s); resume it on "
-                      + "as many (mpirun -np " + std::to_string(saved_ranks)
-                      + "), not " + std::to_string(n_ranks) + ".";
-            else if (saved_scene != scene)
-              {
-                // Name the first parameter that differs.
-                std::istringstream a(saved_scene), b(scene);
-                std::string        saved_line, scene_line;
-                while (std::getline(a, saved_line)
-                       && std::getline(b, scene_line)
-                       && saved_line == scene_line)
-                  ;
-                error =
-                  "the scene differs from the one the checkpoint in " + found
-                  + " was written for (only Time integration/End time "
-                    "and the Checkpoint subsection may change): now <"
-                  + scene_line + ">, in the checkpoint <" + saved_line + ">.";
-              }
-          }
-      }
-    error = Utilities::MPI::broadcast(comm, error, 0);
-    AssertThrow(error.empty(), ExcMessage("Cannot resume: " + error));
+      const std::string header = found + "/" + header_name;
+      std::ifstream     in(header, std::ios::binary);
+      const std::string text(std::istreambuf_iterator<char>(in), {});
+      const std::string first_line = text.substr(0, text.find('\n'));
+      AssertThrow(first_line != format_line + "1",
+                  ExcMessage(header + " is of checkpoint format 1, written "
+                             + "by an older liftoff that this one (format "
+                             + std::to_string(format)
+                             + ") does not read; run the scene again."));
+      // The last line is the checksum of everything before it.
+      const auto last =
+        text.size() > 1 ? text.rfind('\n', text.size() - 2) : std::string::npos;
+      const std::string body = text.substr(0, last + 1);
+      AssertThrow(last != std::string::npos && text.back() == '\n'
+                    && text.substr(last + 1) == checksum_line(body),
+                  ExcMessage(header + " is damaged (its contents do not match "
+                             + "its checksum) or not a liftoff checkpoint."));
+      AssertThrow(first_line == format_line + std::to_string(format),
+                  ExcMessage(header + " says <" + first_line + ">; this "
+                             + "liftoff reads format " + std::to_string(format)
+                             + " only."));
+
+      std::istringstream lines(body.substr(first_line.size() + 1));
+      unsigned int       saved_ranks = 0;
+      std::string        line;
+      bool               is_header = read_number(lines, "step = ", step)
+                       && read_number(lines, "ranks = ", saved_ranks);
+      for (unsigned int r = 0; is_header && r < saved_ranks; ++r)
+        {
+          FileSum     sum;
+          std::string name, equals, bytes, label;
+          is_header = std::getline(lines, line).good();
+          std::istringstream entry(line);
+          entry >> name >> equals >> sum.first >> bytes >> label >> std::hex
+            >> sum.second;
+          is_header = is_header && entry && name == rank_name(r);
+          sums.push_back(sum);
+        }
+      is_header = is_header && std::getline(lines, line) && line == "scene:";
+      AssertThrow(is_header,
+                  ExcMessage(header + " is not a liftoff checkpoint header."));
+      const std::string saved_scene(std::istreambuf_iterator<char>(lines), {});
+      AssertThrow(saved_ranks == n_ranks,
+                  ExcMessage("the checkpoint in " + found + " was written by "
+                             + std::to_string(saved_ranks)
+                             + " rank(s); resume it on as many (mpirun -np "
+                             + std::to_string(saved_ranks) + "), not "
+                             + std::to_string(n_ranks) + "."));
+      if (saved_scene != scene)
+        {
+          // Name the first parameter that differs.
+          std::istringstream a(saved_scene), b(scene);
+          std::string        saved_line, scene_line;
+          while (std::getline(a, saved_line) && std::getline(b, scene_line)
+                 && saved_line == scene_line)
+            ;
+          AssertThrow(
+            false,
+            ExcMessage(
+              "the scene differs from the one the checkpoint in " + found
+              + " was written for (only Time integration/End time "
+                "and the Checkpoint subsection may change): now <"
+              + scene_line + ">, in the checkpoint <" + saved_line + ">."));
+        }
+    });
     found = Utilities::MPI::broadcast(comm, found, 0);
     step  = Utilities::MPI::broadcast(comm, step, 0);
+    sums  = Utilities::MPI::broadcast(comm, sums, 0);
 
-    const bool has_file = std::filesystem::exists(rank_file(found, comm));
-    AssertThrow(Utilities::MPI::min(has_file ? 1 : 0, comm) == 1,
-                ExcMessage("Cannot resume: a rank's file is missing in " + found
-                           + "."));
+    // Every rank checks its own file before any rank reads one: a damaged
+    // file must stop all ranks here, not one of them halfway through
+    // restoring the state, which communicates.
+    collective_attempt(comm, "Cannot resume", [&]() {
+      const std::string name  = rank_file(found, comm);
+      const FileSum     saved = sums[Utilities::MPI::this_mpi_process(comm)];
+      const FileSum     now   = sum_of_file(name);
+      AssertThrow(now == saved,
+                  ExcMessage("the checkpoint file " + name + " is damaged: "
+                             + describe(now) + " where " + header_name
+                             + " records " + describe(saved) + "."));
+    });
     return step;
   }
 

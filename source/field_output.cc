@@ -119,49 +119,44 @@ namespace liftoff
     const auto         piece = [&](const unsigned int r) {
       return stem + "." + Utilities::int_to_string(r, 4) + ".vtu";
     };
-    std::string error;
-    try
-      {
-        write_file_atomically(directory + "/" + piece(rank),
-                              [&](std::ostream &out) {
-                                data_out.write_vtu(out);
-                              });
-      }
-    catch (const std::exception &e)
-      {
-        error = message_of(e);
-      }
     // A failure on one rank stops all of them here (this is also the
     // barrier before the record), not in a later collective call.
-    AssertThrow(Utilities::MPI::max(error.empty() ? 0 : 1, comm) == 0,
-                ExcMessage("Writing " + stem + " failed: "
-                           + (error.empty() ? "on another rank" : error)));
-
+    const std::string what = "Writing " + stem + " failed";
+    collective_attempt(comm, what, [&]() {
+      write_file_atomically(directory + "/" + piece(rank),
+                            [&](std::ostream &out) {
+                              data_out.write_vtu(out);
+                            });
+    });
     const std::string master = stem + ".pvtu";
-    if (rank == 0)
-      {
-        std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          pieces.push_back(piece(r));
-        write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
-          data_out.write_pvtu_record(out, pieces);
-        });
-      }
-
+    collective_attempt(comm, what, [&]() {
+      if (rank != 0)
+        return;
+      std::vector<std::string> pieces;
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        pieces.push_back(piece(r));
+      write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
+        data_out.write_pvtu_record(out, pieces);
+      });
+    });
     records.emplace_back(time, master);
-    write_pvd(directory, comm);
+    write_record(directory, comm);
   }
 
 
   void
-  FieldOutput::write_pvd(const std::string &directory,
-                         const MPI_Comm     comm) const
+  FieldOutput::write_record(const std::string &directory,
+                            const MPI_Comm     comm) const
   {
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_file_atomically(directory + "/solution.pvd",
-                            [&](std::ostream &out) {
-                              DataOutBase::write_pvd_record(out, records);
-                            });
+    if (records.empty())
+      return;
+    collective_attempt(comm, "", [&]() {
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        write_file_atomically(directory + "/solution.pvd",
+                              [&](std::ostream &out) {
+                                DataOutBase::write_pvd_record(out, records);
+                              });
+    });
   }
 
 
@@ -173,12 +168,8 @@ namespace liftoff
 
 
   void
-  FieldOutput::load(InputArchive      &archive,
-                    const std::string &directory,
-                    const MPI_Comm     comm)
+  FieldOutput::load(InputArchive &archive)
   {
     archive >> records;
-    if (!directory.empty() && !records.empty())
-      write_pvd(directory, comm);
   }
 } // namespace liftoff

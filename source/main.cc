@@ -13,9 +13,13 @@
 namespace
 {
   const char *usage =
-    "usage: liftoff SCENE.prm            run a scene\n"
+    "usage: liftoff SCENE.prm            run a scene (refused if its output\n"
+    "                                    directory holds an earlier run's\n"
+    "                                    results or another run is using it)\n"
     "       liftoff -                    read the scene from standard input\n"
-    "       liftoff --resume SCENE.prm   continue the scene from the newest\n"
+    "       liftoff --overwrite SCENE    the same, replacing the results of\n"
+    "                                    an earlier run in the directory\n"
+    "       liftoff --resume SCENE       continue the scene from the newest\n"
     "                                    checkpoint in its output directory\n"
     "                                    (same number of ranks; the end time\n"
     "                                    may be changed)\n"
@@ -63,8 +67,15 @@ main(int argc, char **argv)
         prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
       return 0;
     }
-  const bool resume = (argc == 3 && std::string(argv[1]) == "--resume");
-  if (argc != 2 + resume || std::string(argv[argc - 1]).rfind("--", 0) == 0)
+  using Start           = liftoff::Simulator::Start;
+  Start      start      = Start::fresh;
+  const bool has_option = (argc == 3);
+  if (has_option && std::string(argv[1]) == "--resume")
+    start = Start::resume;
+  else if (has_option && std::string(argv[1]) == "--overwrite")
+    start = Start::overwrite;
+  if (argc != 2 + (start != Start::fresh)
+      || std::string(argv[argc - 1]).rfind("--", 0) == 0)
     {
       if (is_root)
         std::cerr << usage << std::endl;
@@ -90,7 +101,7 @@ main(int argc, char **argv)
         std::istringstream scene(read_scene(scene_name, comm));
         prm.parse_input(scene, scene_name);
         simulator.parse_parameters(prm);
-        simulator.run(prm, resume);
+        simulator.run(prm, start);
       }
     catch (...)
       {

@@ -1,11 +1,10 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <liftoff/output_files.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <vector>
 
 namespace liftoff
 {
@@ -47,19 +46,6 @@ namespace liftoff
   }
 
 
-  void
-  remove_temporary_files(const std::string &directory)
-  {
-    std::vector<std::filesystem::path> leftovers;
-    for (const auto &entry :
-         std::filesystem::recursive_directory_iterator(directory))
-      if (entry.is_regular_file() && entry.path().extension() == ".tmp")
-        leftovers.push_back(entry.path());
-    for (const auto &path : leftovers)
-      std::filesystem::remove(path);
-  }
-
-
   std::string
   message_of(const std::exception &e)
   {
@@ -78,11 +64,46 @@ namespace liftoff
 
 
   void
+  collective_attempt(const MPI_Comm               comm,
+                     const std::string           &what,
+                     const std::function<void()> &attempt)
+  {
+    std::string error;
+    try
+      {
+        attempt();
+      }
+    catch (const std::exception &e)
+      {
+        error = message_of(e);
+      }
+    catch (...)
+      {
+        error = "an unknown error";
+      }
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int first   = dealii::Utilities::MPI::min(
+      error.empty() ? n_ranks : dealii::Utilities::MPI::this_mpi_process(comm),
+      comm);
+    if (first == n_ranks)
+      return;
+    error = dealii::Utilities::MPI::broadcast(comm, error, first);
+    AssertThrow(false,
+                dealii::ExcMessage(what.empty() ? error : what + ": " + error));
+  }
+
+
+  void
   GrowingTextFile::open(const std::string &file_path,
-                        const double       interval_seconds)
+                        const double       interval_seconds,
+                        const MPI_Comm     communicator)
   {
     path     = file_path;
     interval = interval_seconds;
+    comm     = communicator;
+    is_writer =
+      !path.empty() && dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    is_held = false;
     contents.str("");
     since_written.restart();
   }
@@ -91,26 +112,46 @@ namespace liftoff
   std::ostream &
   GrowingTextFile::stream()
   {
-    return contents;
+    return is_writer ? contents : discarded;
   }
 
 
   void
   GrowingTextFile::write_if_due()
   {
-    if (since_written.wall_time() >= interval)
-      flush();
+    // Rank 0's clock decides; the others take part in case the write fails.
+    write(!is_held && since_written.wall_time() >= interval);
   }
 
 
   void
   GrowingTextFile::flush()
   {
+    is_held = false;
+    write(true);
+  }
+
+
+  void
+  GrowingTextFile::write(const bool is_due)
+  {
     if (path.empty())
       return;
-    write_file_atomically(path,
-                          [&](std::ostream &out) { out << contents.str(); });
-    since_written.restart();
+    collective_attempt(comm, "", [&]() {
+      if (is_writer && is_due)
+        write_file_atomically(path, [&](std::ostream &out) {
+          out << contents.str();
+        });
+    });
+    if (is_due)
+      since_written.restart();
+  }
+
+
+  void
+  GrowingTextFile::hold()
+  {
+    is_held = true;
   }
 
 

@@ -83,13 +83,11 @@ namespace liftoff
     for (unsigned int i = 0; i < n_points; ++i)
       points.emplace_back(disc, disc.to_modelled_part(point(i)));
 
-    if (directory.empty()
-        || Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
-      return;
-    writes_file = true;
-    file.open(directory + "/profiles.csv", 1.0);
+    // The file appears with the first profile.
+    file.open(directory.empty() ? "" : directory + "/profiles.csv",
+              1.0,
+              disc.mpi_communicator);
     file.stream() << "tau,s,x,y,w\n";
-    file.flush();
   }
 
 
@@ -111,8 +109,6 @@ namespace liftoff
     for (const auto &p : points)
       w.push_back(p.local_value(u));
     Utilities::MPI::sum(w, discretization->mpi_communicator, w);
-    if (!writes_file)
-      return;
     std::ostream &out = file.stream();
     out << std::setprecision(12);
     for (unsigned int i = 0; i < n_points; ++i)
@@ -137,9 +133,15 @@ namespace liftoff
   {
     std::string text;
     archive >> is_written >> text;
-    if (!writes_file)
-      return;
     file.replace(text);
-    file.flush();
+    file.hold();
+  }
+
+
+  void
+  ProfileOutput::flush()
+  {
+    if (n_points > 0)
+      file.flush();
   }
 } // namespace liftoff

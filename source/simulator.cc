@@ -77,7 +77,11 @@ namespace liftoff
                       "output",
                       Patterns::Anything(),
                       "Folder for all results (created if needed). Empty: "
-                      "write no files.");
+                      "write no files. A run owns it while it runs (a second "
+                      "run into it is refused) and refuses it if it holds an "
+                      "earlier run's results, unless started with `liftoff "
+                      "--overwrite`, which removes them, or `--resume`. Only "
+                      "the files liftoff writes are ever touched.");
     prm.leave_subsection();
 
     MindlinPlate::declare_parameters(prm);
@@ -169,31 +173,54 @@ namespace liftoff
   }
 
 
-  void
-  Simulator::prepare_output_directory(const ParameterHandler &prm) const
+  std::unique_ptr<OutputDirectory>
+  Simulator::prepare_output_directory(const Start start) const
   {
     if (!writes_files())
-      return;
-    // Rank 0 creates the folder; every rank learns whether it could, so all
-    // stop together.
-    std::string error;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      try
-        {
-          std::filesystem::create_directories(output_directory);
-          write_file_atomically(
-            output_directory + "/used_parameters.prm", [&](std::ostream &out) {
-              prm.print_parameters(out, ParameterHandler::ShortPRM);
-            });
-        }
-      catch (const std::exception &e)
-        {
-          error = message_of(e);
-        }
-    error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
-    AssertThrow(error.empty(),
-                ExcMessage("Output/Directory = " + output_directory
-                           + " cannot be written: " + error));
+      return nullptr;
+    // A resume needs the folder of its checkpoint and creates none.
+    auto folder = std::make_unique<OutputDirectory>(output_directory,
+                                                    mpi_communicator,
+                                                    start != Start::resume);
+    if (start == Start::fresh)
+      folder->refuse_earlier_results();
+    else if (start == Start::overwrite)
+      folder->remove_earlier_results();
+    if (start != Start::resume)
+      write_used_parameters();
+    return folder;
+  }
+
+
+  void
+  Simulator::write_used_parameters() const
+  {
+    collective_attempt(
+      mpi_communicator,
+      "Output/Directory = " + output_directory + " cannot be written",
+      [&]() {
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          write_file_atomically(output_directory + "/used_parameters.prm",
+                                [&](std::ostream &out) {
+                                  out << used_parameters;
+                                });
+      });
+  }
+
+
+  void
+  Simulator::take_over_output(const unsigned int step)
+  {
+    has_taken_over_output = true;
+    // The old summary goes first: a run killed in between leaves none,
+    // as any run that has not ended does. The field files of later steps
+    // go last, once the PVD no longer lists them.
+    output_folder->remove_summary();
+    write_used_parameters();
+    time_history.flush();
+    profile_output.flush();
+    field_output.write_record(output_directory, mpi_communicator);
+    output_folder->remove_fields_after(step);
   }
 
 
@@ -217,21 +244,38 @@ namespace liftoff
 
 
   void
-  Simulator::run(const ParameterHandler &prm, const bool resume)
+  Simulator::run(const ParameterHandler &prm, const Start start)
   {
     wall_clock.restart();
-    scene       = Checkpoint::comparable_scene(prm);
-    resume_step = 0;
-    if (resume)
+    scene = Checkpoint::comparable_scene(prm);
+    std::ostringstream parameters;
+    prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+    used_parameters = parameters.str();
+    resume_step     = 0;
+    if (start == Start::resume)
       {
-        // Everything is checked before a file is touched: a refused resume
-        // leaves the output of the earlier run as it was.
         AssertThrow(analysis == Analysis::dynamic_analysis,
                     ExcMessage("--resume continues a time integration; "
                                "Analysis/Type = static has none."));
         AssertThrow(writes_files(),
                     ExcMessage("--resume reads the checkpoint in "
                                "Output/Directory, which is empty."));
+      }
+    // The folder is this run's from here until run() returns or throws.
+    output_folder = prepare_output_directory(start);
+    struct Release
+    {
+      std::unique_ptr<OutputDirectory> &folder;
+      ~Release()
+      {
+        folder.reset();
+      }
+    } release{output_folder};
+
+    if (start == Start::resume)
+      {
+        // Everything is checked before a file is touched: a refused resume
+        // leaves the output of the earlier run as it was.
         resume_step =
           checkpoint.open(output_directory, mpi_communicator, scene);
         AssertThrow(resume_step <= newmark.n_steps(),
@@ -243,10 +287,9 @@ namespace liftoff
                                + " steps)."));
         // A killed run may have left temporary files (and checkpoint.new,
         // which the next checkpoint replaces).
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          remove_temporary_files(output_directory);
+        output_folder->remove_temporary_files();
       }
-    prepare_output_directory(prm);
+    has_taken_over_output = (start != Start::resume);
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
           << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
           << discretization.degree() << "), "
@@ -259,12 +302,16 @@ namespace liftoff
           run_static();
         else
           run_dynamic();
+        if (!has_taken_over_output)
+          take_over_output(resume_step);
+        time_history.flush();
       }
     catch (...)
       {
-        // Keep the rows computed so far and say how the run ended. The
-        // original error is the one to report: a second one while writing
-        // (a full disk) is dropped.
+        // Keep the rows computed so far and say how the run ended, unless
+        // a resumed run has not written anything yet: then the earlier
+        // run's files stay as they are. The original error is the one to
+        // report: a second one while writing (a full disk) is dropped.
         const auto attempt = [](const std::function<void()> &write) {
           try
             {
@@ -273,13 +320,15 @@ namespace liftoff
           catch (...)
             {}
         };
-        attempt([&]() { time_history.flush(); });
-        attempt([&]() {
-          write_summary(stopped_by_signal != 0 ? "interrupted" : "failed");
-        });
+        if (has_taken_over_output)
+          {
+            attempt([&]() { time_history.flush(); });
+            attempt([&]() {
+              write_summary(stopped_by_signal != 0 ? "interrupted" : "failed");
+            });
+          }
         throw;
       }
-    time_history.flush();
     write_summary("completed");
   }
 
@@ -357,6 +406,8 @@ namespace liftoff
                          ghosted_v,
                          tau,
                          step);
+    if (!has_taken_over_output)
+      take_over_output(step);
   }
 
 
@@ -559,7 +610,7 @@ namespace liftoff
         load_vector(archive, *vector);
       foundation.load(archive);
       active_set.load(archive, base);
-      field_output.load(archive, output_directory, mpi_communicator);
+      field_output.load(archive);
       profile_output.load(archive);
     });
     AssertThrow(records.size() == resume_step + 1,
@@ -568,8 +619,10 @@ namespace liftoff
                            + std::to_string(records.size()) + " steps."));
     ghosted_u = u;
     ghosted_v = v;
-    // history.csv is a function of the records: its rows are written again
-    // as they were, and those of steps after the checkpoint are gone.
+    // history.csv is a function of the records: its rows are recorded again
+    // as they were, and those of steps after the checkpoint are gone once
+    // the file is rewritten (take_over_output()).
+    time_history.hold();
     for (const auto &r : records)
       time_history.record(r.tau,
                           r.probe_w,
@@ -578,7 +631,6 @@ namespace liftoff
                           r.cycle_length,
                           r.energies,
                           records.front().energies);
-    time_history.flush();
     pcout << "resumed after step " << resume_step << std::endl;
   }
 
@@ -648,10 +700,12 @@ namespace liftoff
       text << "  " << section << ": " << seconds << '\n';
 
     pcout << text.str();
-    if (writes_files()
-        && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      write_file_atomically(output_directory + "/summary.txt",
-                            [&](std::ostream &out) { out << text.str(); });
+    if (writes_files())
+      collective_attempt(mpi_communicator, "", [&]() {
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          write_file_atomically(output_directory + "/summary.txt",
+                                [&](std::ostream &out) { out << text.str(); });
+      });
   }
 
 

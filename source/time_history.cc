@@ -77,12 +77,11 @@ namespace liftoff
     for (const auto &p : probe_points)
       probes.emplace_back(disc, disc.to_modelled_part(p));
 
-    // No directory: keep the values in memory only (tests).
-    if (directory.empty()
-        || Utilities::MPI::this_mpi_process(disc.mpi_communicator) != 0)
-      return;
-    writes_file = true;
-    file.open(directory + "/history.csv", 1.0);
+    // No directory: keep the values in memory only (tests). The file
+    // appears with the first rows.
+    file.open(directory.empty() ? "" : directory + "/history.csv",
+              1.0,
+              disc.mpi_communicator);
     std::ostream &out = file.stream();
     out << "tau";
     for (const auto &p : probe_points)
@@ -91,7 +90,6 @@ namespace liftoff
     if (write_energies)
       out << ",kinetic,strain,foundation,work,balance_error";
     out << '\n';
-    file.flush();
   }
 
 
@@ -122,8 +120,6 @@ namespace liftoff
                       const EnergyBalance       &energies,
                       const EnergyBalance       &initial)
   {
-    if (!writes_file)
-      return;
     std::ostream &out = file.stream();
     out << std::setprecision(12) << tau;
     for (const double value : w)
@@ -141,7 +137,13 @@ namespace liftoff
   void
   TimeHistory::flush()
   {
-    if (writes_file)
-      file.flush();
+    file.flush();
+  }
+
+
+  void
+  TimeHistory::hold()
+  {
+    file.hold();
   }
 } // namespace liftoff

@@ -78,7 +78,10 @@ end
   {
     try
       {
-        liftoff_tests::run_scene(scene, nullptr, comm, /*resume*/ true);
+        liftoff_tests::run_scene(scene,
+                                 nullptr,
+                                 comm,
+                                 liftoff::Simulator::Start::resume);
       }
     catch (const std::exception &e)
       {
@@ -130,11 +133,17 @@ main(int argc, char **argv)
         continue;
       const std::string scene     = plate_scene + options;
       const auto        reference = liftoff_tests::run_scene(scene);
+      // Each variant replaces the previous one's files.
       liftoff_tests::run_scene(scene + output
-                               + set("Time integration", "End time = 0.01")
-                               + set("Checkpoint", "Interval = 20"));
-      const auto resumed =
-        liftoff_tests::run_scene(scene + output, nullptr, comm, true);
+                                 + set("Time integration", "End time = 0.01")
+                                 + set("Checkpoint", "Interval = 20"),
+                               nullptr,
+                               comm,
+                               Simulator::Start::overwrite);
+      const auto resumed = liftoff_tests::run_scene(scene + output,
+                                                    nullptr,
+                                                    comm,
+                                                    Simulator::Start::resume);
 
       const auto  &a = reference->history(), &b = resumed->history();
       unsigned int differing = (a.size() != b.size());

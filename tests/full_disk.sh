@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
-# A full disk in the middle of a run: liftoff writes into a 200 kB tmpfs,
-# which fills while a VTU file is being written. The run must stop with exit
-# code 1 and a message that names the file and the cause, leave no
-# temporary file, and keep every file it has is complete: the history rows,
-# every PVD record's pieces, and a summary that says the run failed.
+# A full disk in the middle of a run, on N_RANKS ranks (1 by default):
+# liftoff writes into a small tmpfs that fills
+# - while a VTU piece is written (200 kB, fields every 20 steps), or
+# - while rank 0 alone writes history.csv (64 kB, no fields, no
+#   checkpoints, history rows for 2000 steps: about 240 kB).
+# Every rank must stop (exit code 1 within the 60 s `timeout` allows; a
+# hang ends with 124) with a message that names the file and the cause,
+# leave no temporary file, and keep every file it has complete: the history
+# rows, every PVD record's pieces, and a summary that says the run failed.
 # Needs root to mount the tmpfs; without it the test is skipped (77).
-#   full_disk.sh LIFTOFF
+#   full_disk.sh LIFTOFF [N_RANKS]
 set -u
-liftoff=$1
+liftoff=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+n_ranks=${2:-1}
 source "$(dirname "$0")/output_checks.sh"
 work=$(mktemp -d)
 disk="$work/disk"
@@ -19,23 +24,41 @@ if ! mount -t tmpfs -o size=200k tmpfs "$disk" 2>/dev/null; then
 fi
 trap 'umount "$disk"; rm -rf "$work"' EXIT
 cd "$work"
-printf '%s\n' \
-  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 32' \
-  '  set Cells along y = 32' '  set Polynomial degree = 2' 'end' \
-  'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
-  'subsection Time integration' '  set Time step = 5e-4' '  set End time = 0.05' 'end' \
-  "subsection Output" "  set Directory = $disk/out" '  set VTU interval = 20' 'end' > scene.prm
-"$liftoff" scene.prm >stdout.txt 2>stderr.txt
-status=$?
-cat stderr.txt
+run=(timeout -k 5 60 "$liftoff")
+[ "$n_ranks" -gt 1 ] &&
+  run=(timeout -k 5 60 "$(command -v mpirun || command -v mpiexec)" --allow-run-as-root --oversubscribe -np "$n_ranks" "$liftoff")
 
-[ "$status" -eq 1 ]; check $? "exit code 1 ($status)"
-grep -q 'solution_00020.0000.vtu failed (disk full' stderr.txt; check $? "the message names the file and the cause"
-no_temporary_files "$disk"; check $? "no temporary file left"
-grep -q '^status: failed' "$disk/out/summary.txt"; check $? "summary.txt says failed"
-history_is_complete "$disk/out"
-check $? "every row of history.csv has $n_columns columns"
+# fill SIZE WHAT EXPECTED_MESSAGE SCENE_LINES...: run the scene on a fresh
+# tmpfs of SIZE and check the outcome.
+fill() {
+  umount "$disk"
+  mount -t tmpfs -o size="$1" tmpfs "$disk"
+  printf '%s\n' "${@:4}" > scene.prm
+  "${run[@]}" scene.prm >stdout.txt 2>stderr.txt
+  status=$?
+  cat stderr.txt
+  [ "$status" -eq 1 ]; check $? "$2: exit code 1 ($status; 124 = hang)"
+  grep -Eq "$3" stderr.txt; check $? "$2: the message names the file and the cause"
+  no_temporary_files "$disk"; check $? "$2: no temporary file left"
+  grep -q '^status: failed' "$disk/out/summary.txt"; check $? "$2: summary.txt says failed"
+  [ ! -e "$disk/out/history.csv" ] || history_is_complete "$disk/out"
+  check $? "$2: every row of history.csv (if any) has ${n_columns:-all} columns"
+}
+plate=('subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end')
+
+fill 200k "VTU" 'solution_00020\.000[01]\.vtu failed \(disk full' \
+  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 32' \
+  '  set Cells along y = 32' '  set Polynomial degree = 2' 'end' "${plate[@]}" \
+  'subsection Time integration' '  set Time step = 5e-4' '  set End time = 0.05' 'end' \
+  "subsection Output" "  set Directory = $disk/out" '  set VTU interval = 20' 'end'
 count_vtu_pieces "$disk/out"
-[ "$n_pieces" -ge 1 ] && [ "$missing" -eq 0 ]
-check $? "the PVD lists $n_pieces complete VTU piece(s), $missing missing or cut short"
+[ "$n_pieces" -ge "$n_ranks" ] && [ "$missing" -eq 0 ]
+check $? "VTU: the PVD lists $n_pieces complete VTU piece(s), $missing missing or cut short"
+
+fill 64k "history.csv" 'history\.csv failed \(disk full' \
+  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 2' \
+  '  set Cells along y = 2' 'end' "${plate[@]}" \
+  'subsection Time integration' '  set Time step = 1e-4' '  set End time = 0.2' 'end' \
+  "subsection Output" "  set Directory = $disk/out" '  set VTU interval = 0' 'end' \
+  'subsection Checkpoint' '  set Interval = 0' 'end'
 finish

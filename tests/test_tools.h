@@ -21,13 +21,14 @@ namespace liftoff_tests
   using namespace dealii;
 
   /// Parse the scene (parameters it does not set keep their defaults; no
-  /// output files unless it sets Output/Directory) and run it, or resume it
-  /// from its checkpoint.
+  /// output files unless it sets Output/Directory) and run it, started as
+  /// `start` says (Simulator::Start).
   inline std::unique_ptr<liftoff::Simulator>
-  run_scene(const std::string &scene,
-            Function<2>       *body_force = nullptr,
-            const MPI_Comm     comm       = MPI_COMM_WORLD,
-            const bool         resume     = false)
+  run_scene(
+    const std::string              &scene,
+    Function<2>                    *body_force = nullptr,
+    const MPI_Comm                  comm       = MPI_COMM_WORLD,
+    const liftoff::Simulator::Start start = liftoff::Simulator::Start::fresh)
   {
     ParameterHandler prm;
     liftoff::Simulator::declare_parameters(prm);
@@ -39,7 +40,7 @@ namespace liftoff_tests
       std::make_unique<liftoff::Simulator>(comm, /*verbose*/ false);
     simulator->parse_parameters(prm);
     simulator->set_body_force(body_force);
-    simulator->run(prm, resume);
+    simulator->run(prm, start);
     return simulator;
   }
 

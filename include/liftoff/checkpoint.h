@@ -40,17 +40,19 @@ namespace liftoff
    * The files of a checkpoint and when to write one. A checkpoint is a
    * folder `checkpoint` in the output directory: one binary archive per rank
    * (`rank_RRRR.bin`, filled by the caller with that rank's state) and a
-   * text header `checkpoint.txt`, written last, with the step, the number
-   * of ranks and the scene. It is written as `checkpoint.new` and renamed
-   * into place once complete; the previous checkpoint is kept as
-   * `checkpoint.previous` until then, so a run that dies while writing
-   * leaves one complete checkpoint behind.
+   * text header `checkpoint.txt`, written last, with the format number, the
+   * step, the number of ranks, each archive's size and CRC-32, the scene,
+   * and a last line with the CRC-32 of all the lines before it. It is
+   * written as `checkpoint.new` and renamed into place once complete; the
+   * previous checkpoint is kept as `checkpoint.previous` until then, so a
+   * run that dies while writing leaves one complete checkpoint behind.
    *
    * The archives hold each rank's own degrees of freedom and matrix rows, so
    * a run resumes on the same number of ranks (the mesh, rebuilt from the
    * scene, is then partitioned and numbered the same way); anything else is
    * refused, as is a scene that differs from the checkpoint's in anything
-   * but the end time and this subsection.
+   * but the end time and this subsection, a checkpoint of another format,
+   * and any file whose size or checksum differs from the header's.
    */
   class Checkpoint
   {
@@ -79,16 +81,18 @@ namespace liftoff
           const std::string                          &scene,
           const std::function<void(OutputArchive &)> &save) const;
 
-    /// Find the newest complete checkpoint in `directory` and check it
-    /// against the scene and the number of ranks; returns its step. Reads
-    /// only the header and writes nothing, so a refused resume leaves the
-    /// output as it was. Collective.
+    /// Find the newest complete checkpoint in `directory`, check its
+    /// header against the scene and the number of ranks and every rank's
+    /// archive against the header's checksum; returns its step. Writes
+    /// nothing, so a refused resume leaves the output as it was. Collective:
+    /// throws on every rank if any check fails on any rank.
     unsigned int
     open(const std::string &directory,
          const MPI_Comm     comm,
          const std::string &scene);
 
-    /// Read this rank's archive of the checkpoint found by open().
+    /// Read this rank's archive of the checkpoint found by open(), whose
+    /// checksum open() has checked on every rank.
     void
     read(const MPI_Comm                             comm,
          const std::function<void(InputArchive &)> &load) const;

@@ -42,20 +42,20 @@ namespace liftoff
           const double                        time,
           const unsigned int                  step);
 
-    /// The records of the PVD file; load() rewrites it with them, and the
-    /// VTU files of later steps are overwritten as the run gets there.
+    /// Write the PVD file with the records so far (none: no file).
+    /// Collective, as is write().
+    void
+    write_record(const std::string &directory, const MPI_Comm comm) const;
+
+    /// The records of the PVD file; after load(), write_record() rewrites
+    /// it with them.
     void
     save(OutputArchive &archive) const;
     void
-    load(InputArchive      &archive,
-         const std::string &directory,
-         const MPI_Comm     comm);
+    load(InputArchive &archive);
 
   private:
     unsigned int                                interval = 10;
     std::vector<std::pair<double, std::string>> records;
-
-    void
-    write_pvd(const std::string &directory, const MPI_Comm comm) const;
   };
 } // namespace liftoff

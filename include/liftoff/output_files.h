@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <functional>
@@ -15,15 +16,25 @@ namespace liftoff
   write_file_atomically(const std::string                         &path,
                         const std::function<void(std::ostream &)> &write);
 
-  /// Remove what write_file_atomically() leaves behind when a run is killed
-  /// while writing: `*.tmp` files in `directory` and its subfolders.
-  void
-  remove_temporary_files(const std::string &directory);
-
   /// The message of an exception without deal.II's stack trace, for
   /// passing an error on in a message of its own.
   std::string
   message_of(const std::exception &e);
+
+  /**
+   * The one rule for everything that can fail on some ranks only (a file
+   * that rank 0 alone writes, a rank's own checkpoint file, a folder rank 0
+   * creates): every rank runs `attempt` (which does nothing on the ranks it
+   * does not concern), and if it threw on any rank, all ranks throw the
+   * message of the lowest such rank, prefixed by `what` unless that is
+   * empty. Without it, the ranks that did not fail would go on and wait for
+   * ever in their next collective call. Collective; costs one reduction
+   * when nothing fails.
+   */
+  void
+  collective_attempt(const MPI_Comm               comm,
+                     const std::string           &what,
+                     const std::function<void()> &attempt);
 
   /// Whether something written every `interval` steps (0: never) is due
   /// after `step`; the last step always is, so a run ends with it.
@@ -39,23 +50,35 @@ namespace liftoff
    * A text file that grows (a CSV table) but is only ever replaced whole:
    * rows are kept in memory and the file is rewritten atomically at most
    * every `interval` seconds of wall time and on flush(), so a reader never
-   * sees a half-written row. An empty path keeps the rows in memory only.
+   * sees a half-written row. Rank 0 keeps the text and writes the file;
+   * what other ranks add is discarded, but they call write_if_due() and
+   * flush() as well, so that a failed write stops all ranks. An empty path
+   * keeps the rows in memory only.
    */
   class GrowingTextFile
   {
   public:
+    /// Nothing is written yet: the file appears at the first write.
     void
-    open(const std::string &path, const double interval_seconds);
+    open(const std::string &path,
+         const double       interval_seconds,
+         const MPI_Comm     comm);
 
     /// Add text; the file follows when the interval has passed.
     std::ostream &
     stream();
+    /// Collective.
     void
     write_if_due();
 
-    /// Write the file now.
+    /// Write the file now (collective).
     void
     flush();
+
+    /// Write nothing until the next flush(): a resumed run holds back the
+    /// rows of its checkpoint until it has a step of its own to add.
+    void
+    hold();
 
     /// Everything added so far, and a replacement for it (a resumed run
     /// continues the file of its checkpoint).
@@ -66,8 +89,17 @@ namespace liftoff
 
   private:
     std::string        path;
-    double             interval = 1.0;
+    double             interval  = 1.0;
+    MPI_Comm           comm      = MPI_COMM_SELF;
+    bool               is_writer = false;
+    bool               is_held   = false;
     std::ostringstream contents;
-    dealii::Timer      since_written;
+    /// Where the other ranks' text goes: a stream without a buffer.
+    std::ostream  discarded{nullptr};
+    dealii::Timer since_written;
+
+    /// Write the file if `is_due` on rank 0 (collective).
+    void
+    write(const bool is_due);
   };
 } // namespace liftoff

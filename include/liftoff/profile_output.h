@@ -39,12 +39,16 @@ namespace liftoff
     void
     write_if_due(const double tau, const double dt, const LA::MPI::Vector &u);
 
-    /// The profiles written so far and which times they were for; load()
-    /// rewrites profiles.csv with them.
+    /// The profiles written so far and which times they were for; after
+    /// load(), profiles.csv is left as it is until the next flush().
     void
     save(OutputArchive &archive) const;
     void
     load(InputArchive &archive);
+
+    /// Write profiles.csv now (collective; nothing without profiles).
+    void
+    flush();
 
   private:
     Point<2>                     start, end;
@@ -54,7 +58,6 @@ namespace liftoff
     std::vector<PointFunctional> points;
     const Discretization        *discretization = nullptr;
     GrowingTextFile              file;
-    bool                         writes_file = false;
 
     Point<2>
     point(const unsigned int i) const;

@@ -12,6 +12,7 @@
 #include <liftoff/load_set.h>
 #include <liftoff/mindlin_plate.h>
 #include <liftoff/newmark_integrator.h>
+#include <liftoff/output_directory.h>
 #include <liftoff/plate_matrices.h>
 #include <liftoff/profile_output.h>
 #include <liftoff/tensionless_winkler_foundation.h>
@@ -55,6 +56,17 @@ namespace liftoff
       }
     };
 
+    /// How a run treats its output directory. A run owns it while it runs
+    /// (OutputDirectory); `fresh` refuses a directory holding an earlier
+    /// run's results, `overwrite` removes them first, `resume` continues
+    /// the earlier run from its newest checkpoint.
+    enum class Start
+    {
+      fresh,
+      overwrite,
+      resume
+    };
+
     /// With verbose = false nothing is printed (tests).
     explicit Simulator(const MPI_Comm comm, const bool verbose = true);
 
@@ -65,11 +77,10 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// Run the scene, or with `resume` continue it from the newest
-    /// checkpoint in its output directory. `prm` is recorded with the
+    /// Run the scene, started as `start` says. `prm` is recorded with the
     /// results and compared with the checkpoint's scene.
     void
-    run(const ParameterHandler &prm, const bool resume = false);
+    run(const ParameterHandler &prm, const Start start = Start::fresh);
 
     /// See LoadSet::set_body_force(); for manufactured solutions.
     void
@@ -123,7 +134,14 @@ namespace liftoff
     /// The scene as Checkpoint compares it, and the step resumed from.
     std::string  scene;
     unsigned int resume_step = 0;
-    std::string  initial_displacement, initial_velocity;
+    /// The parameters as used_parameters.prm records them.
+    std::string used_parameters;
+    /// The output directory, locked while run() runs.
+    std::unique_ptr<OutputDirectory> output_folder;
+    /// False while a resumed run has not yet replaced the files of the run
+    /// it continues (see take_over_output()).
+    bool        has_taken_over_output = true;
+    std::string initial_displacement, initial_velocity;
     /// Parsed initial displacement and velocity.
     std::vector<std::unique_ptr<FunctionParser<2>>> initial_fields;
 
@@ -133,8 +151,15 @@ namespace liftoff
 
     void
     setup();
+    std::unique_ptr<OutputDirectory>
+    prepare_output_directory(const Start start) const;
     void
-    prepare_output_directory(const ParameterHandler &prm) const;
+    write_used_parameters() const;
+    /// A resumed run leaves every file of the run it continues as it is
+    /// until it has something newer (step `step` done, or the end), so a
+    /// refused or killed start-up changes nothing; then it replaces them.
+    void
+    take_over_output(const unsigned int step);
     void
     run_static();
     void

@@ -79,8 +79,15 @@ namespace liftoff
            const EnergyBalance       &initial_energies);
 
     /// Write history.csv now (at the end of a run, also a failed one).
+    /// Collective, as is record().
     void
     flush();
+
+    /// Write nothing until flush(): a resumed run records the rows of its
+    /// checkpoint again but leaves the file as it is until it has a step
+    /// of its own.
+    void
+    hold();
 
   private:
     std::vector<Point<2>>        probe_points;
@@ -88,6 +95,5 @@ namespace liftoff
     std::vector<PointFunctional> probes;
     const Discretization        *discretization = nullptr;
     GrowingTextFile              file;
-    bool                         writes_file = false;
   };
 } // namespace liftoff

@@ -1,0 +1,80 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  /**
+   * The output folder of a run, which the run owns while it runs, and the
+   * one place that knows which of the folder's entries are liftoff's.
+   *
+   * Ownership: rank 0 holds an exclusive flock(2) on `liftoff.lock` in the
+   * folder, a file naming its pid and host. The kernel releases the lock
+   * when the process ends however it ends, so the file a killed run leaves
+   * behind does not count; another liftoff (a second run, a resume) is
+   * refused with the holder's pid and host while it is held. On a file
+   * system without flock the run goes on with a warning that the folder is
+   * unguarded.
+   *
+   * liftoff's entries are the files it writes (used_parameters.prm,
+   * summary.txt, history.csv, profiles.csv, solution.pvd,
+   * solution_NNNNN.pvtu, solution_NNNNN.RRRR.vtu, and within the folders
+   * checkpoint, checkpoint.new and checkpoint.previous checkpoint.txt and
+   * rank_RRRR.bin) and the temporary `<name>.tmp` of each. Nothing else in
+   * the folder is ever counted, removed or overwritten.
+   *
+   * Every member is collective and throws on all ranks if it fails.
+   */
+  class OutputDirectory
+  {
+  public:
+    /// Lock the folder `path`, creating it if `create`; a folder that does
+    /// not exist and is not created is not locked (there is nothing in it
+    /// to protect).
+    OutputDirectory(const std::string &path,
+                    const MPI_Comm     comm,
+                    const bool         create);
+    /// Release the lock and remove the lock file (rank 0 only; no
+    /// communication, so it is safe while an exception unwinds).
+    ~OutputDirectory();
+
+    OutputDirectory(const OutputDirectory &) = delete;
+    OutputDirectory &
+    operator=(const OutputDirectory &) = delete;
+
+    /// Refuse a folder that holds results of an earlier run, naming them:
+    /// a new run must not mix its files with another run's.
+    void
+    refuse_earlier_results() const;
+
+    /// Remove the results of an earlier run (`liftoff --overwrite`).
+    void
+    remove_earlier_results() const;
+
+    /// Remove the temporary files a killed run left (`liftoff --resume`).
+    void
+    remove_temporary_files() const;
+
+    /// What a resumed run removes once it has a step of its own: the
+    /// summary of the run it continues, and (once its own PVD file no longer
+    /// lists them) the field files of steps after `step`, which that run
+    /// wrote and this one has not yet.
+    void
+    remove_summary() const;
+    void
+    remove_fields_after(const unsigned int step) const;
+
+  private:
+    std::string path;
+    MPI_Comm    comm;
+    /// The locked file's descriptor on rank 0, or -1.
+    int lock_descriptor = -1;
+
+    /// liftoff's entries of the folder, relative to it (rank 0).
+    std::vector<std::string>
+    results() const;
+  };
+} // namespace liftoff
