@@ -50,9 +50,10 @@ namespace liftoff
                       "5e-4",
                       Patterns::Double(0.0),
                       "dtau > 0, in units of t0 = L^2 sqrt(rho H / D). It is "
-                      "kept constant: End time must be a whole number (at "
-                      "least 1) of time steps, to 1e-9; any other End time "
-                      "is refused, no step is shortened.");
+                      "kept constant: in a dynamic analysis End time must "
+                      "be a whole number (at least 1) of time steps, to "
+                      "1e-9; any other End time is refused, no step is "
+                      "shortened.");
     prm.declare_entry("End time",
                       "0.2",
                       Patterns::Double(0.0),
@@ -90,6 +91,12 @@ namespace liftoff
     AssertThrow(end_time / time_step < 1e8,
                 ExcMessage("Time integration/End time / Time step exceeds "
                            "1e8 steps; choose a larger Time step."));
+  }
+
+
+  void
+  NewmarkIntegrator::check_end_time() const
+  {
     // A run ends exactly at End time with steps of exactly Time step, or is
     // refused: silently stepping past End time (or not stepping at all)
     // would report times the scene did not ask for.

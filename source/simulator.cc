@@ -161,7 +161,12 @@ namespace liftoff
     if (analysis == Analysis::static_analysis)
       loads.check_against(discretization, 0.0, 0);
     else
-      loads.check_against(discretization, newmark.time_step, newmark.n_steps());
+      {
+        newmark.check_end_time();
+        loads.check_against(discretization,
+                            newmark.time_step,
+                            newmark.n_steps());
+      }
     time_history.check_against(discretization);
     profile_output.check_against(discretization);
   }

@@ -2,7 +2,7 @@
 # SIGINT during a static analysis stops it like a dynamic run: exit code
 # 130, a message naming the signal, `status: interrupted` in the summary and
 # no result row. (It used to be ignored: exit 0, status completed.) The
-# scene is large enough (full 150 x 150 Q2, about 0.6 million unknowns)
+# scene is large enough (full 100 x 100 Q2, about 120 000 unknowns)
 # that the signal, sent when the output folder appears (after assembly),
 # arrives during the factorisation and solve.
 #   interrupt_static.sh LIFTOFF
@@ -12,8 +12,8 @@ source "$(dirname "$0")/output_checks.sh"
 enter_work_directory
 printf '%s\n' \
   'subsection Analysis' '  set Type = static' 'end' \
-  'subsection Discretization' '  set Cells along x = 150' \
-  '  set Cells along y = 150' '  set Polynomial degree = 2' 'end' \
+  'subsection Discretization' '  set Cells along x = 100' \
+  '  set Cells along y = 100' '  set Polynomial degree = 2' 'end' \
   'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
   'subsection Output' '  set Directory = out' 'end' > scene.prm
 

@@ -34,8 +34,14 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
+    /// Refuse an End time that is not a whole number (at least 1) of time
+    /// steps: a run never shortens a step nor passes End time. Only a time
+    /// integration asks; a static analysis ignores both.
+    void
+    check_end_time() const;
+
     /// Number of steps of size dt that reach the end time (a multiple of
-    /// dt, checked by parse_parameters()).
+    /// dt after check_end_time()).
     unsigned int
     n_steps() const;
 
