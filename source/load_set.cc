@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -73,7 +74,6 @@ namespace liftoff
              <= 1e-10 * std::max(1.0, std::abs(a) + std::abs(b));
     }
 
-    const std::vector<double> sample_times = {0.0, 0.0137, 0.1, 0.5, 1.3, 4.0};
   } // namespace
 
 
@@ -255,7 +255,9 @@ namespace liftoff
 
 
   void
-  LoadSet::check_against(const Discretization &disc) const
+  LoadSet::check_against(const Discretization &disc,
+                         const double          time_step,
+                         const unsigned int    n_steps) const
   {
     const BoundingBox<2> plate = disc.plate_box();
     for (const auto &load : loads)
@@ -270,46 +272,105 @@ namespace liftoff
         if (load.kind == Kind::pressure)
           region_of(load, plate);
       }
+    if (disc.symmetry() == Symmetry::full)
+      return;
 
-    const std::string symmetry =
+    // A reduced model is right only if what it integrates is symmetric: the
+    // loads are compared where they are evaluated (every quadrature point of
+    // the full plate's mesh) and when (every time the run visits), not at
+    // samples, which a load can dodge.
+    std::vector<double> times(n_steps + 1);
+    for (unsigned int k = 0; k <= n_steps; ++k)
+      times[k] = k * time_step;
+    const FullPlatePoints points = full_plate_points(disc);
+    const std::string     symmetry =
       (disc.symmetry() == Symmetry::half ? "half" : "quarter");
     for (const unsigned int axis : disc.symmetry_axes())
       for (const auto &load : loads)
         {
           bool has_image = false;
           for (const auto &other : loads)
-            has_image = has_image || is_mirror_image(load, other, axis, plate);
+            has_image =
+              has_image
+              || is_mirror_image(load, other, axis, plate, times, points, disc);
           AssertThrow(has_image,
                       ExcMessage(
                         "Discretization/Symmetry = " + symmetry
                         + " needs symmetric loads, but " + load.name
                         + " has no mirror image about the plane "
                         + (axis == 0 ? "x = 0" : "y = 0")
-                        + ". Add the mirrored load or model the full plate."));
+                        + " (compared at every quadrature point of the full "
+                          "plate and every step time). Add the mirrored load "
+                          "or model the full plate."));
         }
   }
 
 
-  bool
-  LoadSet::is_mirror_image(const Load           &load,
-                           const Load           &other,
-                           const unsigned int    axis,
-                           const BoundingBox<2> &plate)
+  LoadSet::FullPlatePoints
+  LoadSet::full_plate_points(const Discretization &disc)
   {
+    // The points integrate_density() uses on this rank's cells, and their
+    // images in every combination of symmetry planes: together the
+    // quadrature points of the mesh of the full plate.
+    const auto       &fe    = *disc.fe;
+    const UpdateFlags flags = update_quadrature_points;
+    FEValues<2> fe_values(disc.mapping, fe, QGauss<2>(fe.degree + 2), flags);
+    FEFaceValues<2> fe_face_values(disc.mapping,
+                                   fe,
+                                   QGauss<1>(fe.degree + 2),
+                                   flags);
+    FullPlatePoints meshed;
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          for (const auto &p : fe_values.get_quadrature_points())
+            meshed.area.push_back(p);
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary()
+                && cell->face(f)->boundary_id()
+                     < Discretization::x_symmetry_plane)
+              {
+                fe_face_values.reinit(cell, f);
+                for (const auto &p : fe_face_values.get_quadrature_points())
+                  meshed.edge.push_back(p);
+              }
+        }
+    FullPlatePoints full = meshed;
+    for (const unsigned int axis : disc.symmetry_axes())
+      for (auto *set : {&full.area, &full.edge})
+        {
+          const unsigned int n = set->size();
+          for (unsigned int i = 0; i < n; ++i)
+            set->push_back(mirrored((*set)[i], axis));
+        }
+    return full;
+  }
+
+
+  bool
+  LoadSet::is_mirror_image(const Load                &load,
+                           const Load                &other,
+                           const unsigned int         axis,
+                           const BoundingBox<2>      &plate,
+                           const std::vector<double> &times,
+                           const FullPlatePoints     &points,
+                           const Discretization      &disc)
+  {
+    // Cheap comparisons first; all of these are the same on every rank.
     if (load.kind != other.kind
         || !nearly_equal(load.magnitude, other.magnitude))
       return false;
-    for (const double tau : sample_times)
-      if (!nearly_equal(load.history->value(Point<1>(tau)),
-                        other.history->value(Point<1>(tau))))
-        return false;
 
-    // Sample points on which the two intensities must agree.
-    std::vector<Point<2>> samples;
+    // Where `load` acts, in full plate coordinates.
+    std::function<bool(const Point<2> &)> acts_at;
+    const std::vector<Point<2>>          *candidates = &points.area;
     switch (load.kind)
       {
       case Kind::point:
-        return (mirrored(load.position, axis) - other.position).norm() < 1e-12;
+        if ((mirrored(load.position, axis) - other.position).norm() >= 1e-12)
+          return false;
+        break;
       case Kind::pressure:
         {
           const BoundingBox<2> a  = region_of(load, plate);
@@ -323,10 +384,7 @@ namespace liftoff
           if ((image_lo - b.get_boundary_points().first).norm() > 1e-12
               || (image_hi - b.get_boundary_points().second).norm() > 1e-12)
             return false;
-          for (unsigned int i = 0; i <= 4; ++i)
-            for (unsigned int j = 0; j <= 4; ++j)
-              samples.emplace_back(lo[0] + (hi[0] - lo[0]) * i / 4.0,
-                                   lo[1] + (hi[1] - lo[1]) * j / 4.0);
+          acts_at = [a](const Point<2> &p) { return a.point_inside(p, 1e-12); };
           break;
         }
       case Kind::line:
@@ -336,24 +394,78 @@ namespace liftoff
             edge_normal_to_axis ? (load.edge ^ 1u) : load.edge;
           if (other.edge != image_edge)
             return false;
-          const Point<2>     lo    = plate.get_boundary_points().first;
-          const Point<2>     hi    = plate.get_boundary_points().second;
-          const unsigned int along = (load.edge < 2 ? 1 : 0);
-          Point<2>           p     = (load.edge % 2 == 0 ? lo : hi);
-          for (unsigned int i = 0; i <= 8; ++i)
-            {
-              p[along] = lo[along] + (hi[along] - lo[along]) * i / 8.0;
-              samples.push_back(p);
-            }
+          // Edges 0, 1 lie at x = -1/2, 1/2; edges 2, 3 at y = -mu/2, mu/2.
+          const unsigned int normal = load.edge / 2;
+          const double       at =
+            (load.edge % 2 == 0 ? plate.get_boundary_points().first
+                                : plate.get_boundary_points().second)[normal];
+          acts_at = [normal, at](const Point<2> &p) {
+            return std::abs(p[normal] - at) < 1e-12;
+          };
+          candidates = &points.edge;
           break;
         }
       }
-    for (const auto &p : samples)
-      for (const double tau : sample_times)
-        if (!nearly_equal(load.intensity_at(p, tau),
-                          other.intensity_at(mirrored(p, axis), tau)))
-          return false;
-    return true;
+
+    for (const double tau : times)
+      if (!nearly_equal(load.history->value(Point<1>(tau)),
+                        other.history->value(Point<1>(tau))))
+        return false;
+    if (load.kind == Kind::point)
+      return true;
+
+    // Intensities at every quadrature point the load covers, at every step
+    // time if either names tau (otherwise once).
+    const bool time_dependent =
+      load.intensity_depends_on_time || other.intensity_depends_on_time;
+    const auto   n_times  = time_dependent ? times.size() : 1;
+    unsigned int is_image = 1;
+    for (const auto &p : *candidates)
+      if (acts_at(p))
+        for (unsigned int k = 0; k < n_times && is_image; ++k)
+          is_image =
+            nearly_equal(load.intensity_at(p, times[k]),
+                         other.intensity_at(mirrored(p, axis), times[k]));
+    return Utilities::MPI::min(is_image, disc.mpi_communicator) == 1;
+  }
+
+
+  std::string
+  LoadSet::non_finite_load(const double tau) const
+  {
+    LA::MPI::Vector scratch;
+    discretization->reinit_vector(scratch);
+    std::ostringstream time;
+    time << std::setprecision(8) << tau;
+    for (const auto &load : loads)
+      {
+        const double h = load.history->value(Point<1>(tau));
+        if (!std::isfinite(h))
+          return load.name + "/Time history = <" + load.history_expression
+                 + "> is " + std::to_string(h) + " at tau = " + time.str()
+                 + ".";
+        if (load.intensity_depends_on_time)
+          assemble_spatial_part(load, tau, scratch);
+        else
+          scratch = load.spatial_part;
+        if (!is_finite(scratch))
+          return load.name
+                 + (load.kind == Kind::point
+                      ? ": Magnitude = " + std::to_string(load.magnitude)
+                          + " is too large to be represented"
+                      : "/Intensity = <" + load.intensity_expression
+                          + "> times Magnitude is not a finite number at "
+                            "some quadrature point at tau = "
+                          + time.str())
+                 + ".";
+        scratch *= h;
+        if (!is_finite(scratch))
+          return load.name + ": Magnitude * Time history overflows at tau = "
+                 + time.str() + ".";
+      }
+    if (body_force != nullptr)
+      return "the body force at tau = " + time.str() + ".";
+    return "the sum of the loads overflows at tau = " + time.str() + ".";
   }
 
 

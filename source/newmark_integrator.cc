@@ -1,6 +1,9 @@
 #include <liftoff/newmark_integrator.h>
 
 #include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace liftoff
 {
@@ -12,7 +15,17 @@ namespace liftoff
                       "0.25",
                       Patterns::Double(0.0, 0.5),
                       "Newmark beta, in (0, 0.5]; 1/4 with gamma = 1/2 is "
-                      "the average acceleration rule.");
+                      "the average acceleration rule. Beta < Gamma/2 is only "
+                      "conditionally stable: dtau must stay below "
+                      "Omega_crit / omega_max, Omega_crit = (Gamma/2 - "
+                      "Beta)^(-1/2), omega_max^2 the largest eigenvalue of "
+                      "M^-1 (K + K_f) with every spring in contact, estimated "
+                      "by power iteration before the first step. A larger "
+                      "dtau is refused with a message giving the limit (the "
+                      "estimate is a lower bound of omega_max, so a stable "
+                      "scheme is never refused). The generalized-alpha "
+                      "scheme is unconditionally stable for every Spectral "
+                      "radius in [0, 1].");
     prm.declare_entry("Gamma",
                       "0.5",
                       Patterns::Double(0.5, 1.0),
@@ -36,11 +49,16 @@ namespace liftoff
     prm.declare_entry("Time step",
                       "5e-4",
                       Patterns::Double(0.0),
-                      "dtau > 0, in units of t0 = L^2 sqrt(rho H / D).");
+                      "dtau > 0, in units of t0 = L^2 sqrt(rho H / D). It is "
+                      "kept constant: in a dynamic analysis End time must "
+                      "be a whole number (at least 1) of time steps, to "
+                      "1e-9; any other End time is refused, no step is "
+                      "shortened.");
     prm.declare_entry("End time",
                       "0.2",
                       Patterns::Double(0.0),
-                      "Final dimensionless time tau > 0.");
+                      "Final dimensionless time tau > 0, a multiple of Time "
+                      "step.");
     prm.leave_subsection();
   }
 
@@ -76,12 +94,60 @@ namespace liftoff
   }
 
 
+  void
+  NewmarkIntegrator::check_end_time() const
+  {
+    // A run ends exactly at End time with steps of exactly Time step, or is
+    // refused: silently stepping past End time (or not stepping at all)
+    // would report times the scene did not ask for.
+    const double ratio = end_time / time_step;
+    const double n     = std::round(ratio);
+    const auto   text  = [](const double value) {
+      std::ostringstream out;
+      out << std::setprecision(10) << value;
+      return out.str();
+    };
+    AssertThrow(n >= 1,
+                ExcMessage("Time integration/Time step = " + text(time_step)
+                           + " exceeds End time = " + text(end_time)
+                           + ": not one step would be taken."));
+    AssertThrow(std::abs(ratio - n) <= 1e-9 * n,
+                ExcMessage("Time integration/End time = " + text(end_time)
+                           + " is not a multiple of Time step = "
+                           + text(time_step) + " (" + text(ratio)
+                           + " steps); the step is never shortened. Use End "
+                             "time = "
+                           + text(std::floor(ratio) * time_step) + " or "
+                           + text(std::ceil(ratio) * time_step) + "."));
+  }
+
+
   unsigned int
   NewmarkIntegrator::n_steps() const
   {
-    // The step is kept exactly as given; a remainder below one part in 1e9
-    // counts as none.
-    return static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9));
+    // parse_parameters() made End time a multiple of the step to 1e-9.
+    return static_cast<unsigned int>(std::round(end_time / time_step));
+  }
+
+
+  bool
+  NewmarkIntegrator::is_conditionally_stable() const
+  {
+    // Hughes (1987), sec. 9.1: for gamma >= 1/2 Newmark is unconditionally
+    // stable iff 2 beta >= gamma. Generalized-alpha from rho_inf in [0, 1]
+    // always satisfies alpha_m <= alpha_f <= 1/2, beta >= 1/4 + (alpha_f -
+    // alpha_m)/2 (Chung and Hulbert 1993), i.e. unconditional stability.
+    return alpha_m == 0 && alpha_f == 0 && 2 * beta < gamma;
+  }
+
+
+  double
+  NewmarkIntegrator::stable_time_step(const double largest_eigenvalue) const
+  {
+    if (!is_conditionally_stable())
+      return std::numeric_limits<double>::infinity();
+    // omega_max dt <= Omega_crit = (gamma/2 - beta)^(-1/2) (undamped system).
+    return 1.0 / std::sqrt((0.5 * gamma - beta) * largest_eigenvalue);
   }
 
 

@@ -7,6 +7,7 @@
 #include <liftoff/simulator.h>
 #include <liftoff/stop_signal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include <iomanip>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 namespace liftoff
 {
@@ -160,7 +162,15 @@ namespace liftoff
 
     // Geometry-dependent checks need the mesh; building it writes nothing.
     discretization.setup(plate);
-    loads.check_against(discretization);
+    if (analysis == Analysis::static_analysis)
+      loads.check_against(discretization, 0.0, 0);
+    else
+      {
+        newmark.check_end_time();
+        loads.check_against(discretization,
+                            newmark.time_step,
+                            newmark.n_steps());
+      }
     time_history.check_against(discretization);
     profile_output.check_against(discretization);
   }
@@ -238,8 +248,112 @@ namespace liftoff
       discretization.reinit_vector(*vector);
     discretization.reinit_ghosted_vector(ghosted_u);
     discretization.reinit_ghosted_vector(ghosted_v);
-    time_history.setup(discretization, output_directory);
-    profile_output.setup(discretization, output_directory);
+  }
+
+
+  void
+  Simulator::check_before_run()
+  {
+    if (analysis == Analysis::static_analysis)
+      return;
+    // The initial fields are evaluated at the nodes only now; a nan there
+    // (sqrt(x) on x < 0) would otherwise surface as a nan history.
+    set_initial_state();
+    for (const auto &[name, text, state] :
+         {std::make_tuple("Displacement", &initial_displacement, &u),
+          std::make_tuple("Velocity", &initial_velocity, &v)})
+      AssertThrow(is_finite(*state),
+                  ExcMessage(std::string("Initial conditions/") + name + " = <"
+                             + *text
+                             + "> is not a finite number at every node of "
+                               "the plate."));
+
+    if (!newmark.is_conditionally_stable())
+      return;
+    const double limit = stable_time_step();
+    AssertThrow(
+      newmark.time_step <= limit,
+      ExcMessage(
+        "Time integration/Time step = " + format_time(newmark.time_step)
+        + " exceeds the stability limit " + format_time(limit)
+        + " of Newmark's method with Beta = " + format_time(newmark.beta)
+        + " < Gamma/2 = " + format_time(0.5 * newmark.gamma)
+        + " (omega_max^2 of M^-1 (K + K_f) estimated as "
+        + format_time(largest_eigenvalue)
+        + "): the run would blow up. Use a smaller Time "
+          "step or Beta >= Gamma/2 (e.g. 0.25 and 0.5)."));
+  }
+
+
+  double
+  Simulator::stable_time_step()
+  {
+    if (largest_eigenvalue == 0)
+      {
+        TimerOutput::Scope t(timer, "stability limit");
+        // Every spring in contact (the status setup() leaves): the stiffest
+        // the foundation can make the plate.
+        LA::MPI::Vector ghosted;
+        discretization.reinit_ghosted_vector(ghosted);
+        largest_eigenvalue = matrices.largest_eigenvalue(
+          discretization, [&](const LA::MPI::Vector &x, LA::MPI::Vector &y) {
+            ghosted = x;
+            foundation.add_reaction(ghosted, y);
+          });
+      }
+    return newmark.stable_time_step(largest_eigenvalue);
+  }
+
+
+  void
+  Simulator::require_finite(const unsigned int                          step,
+                            const double                                tau,
+                            const std::string                          &what,
+                            const std::vector<const LA::MPI::Vector *> &vectors,
+                            const std::vector<double>                  &numbers,
+                            const std::function<std::string()>         &cause)
+  {
+    bool finite = std::all_of(numbers.begin(), numbers.end(), [](double x) {
+      return std::isfinite(x);
+    });
+    for (const auto *vector : vectors)
+      finite = finite && has_finite_local_entries(*vector);
+    if (Utilities::MPI::min(static_cast<int>(finite), mpi_communicator) == 1)
+      return;
+    AssertThrow(false,
+                ExcMessage("Step " + std::to_string(step)
+                           + " (tau = " + format_time(tau) + "): " + what
+                           + " is not a finite number. Likely cause: "
+                           + cause()));
+  }
+
+
+  std::string
+  Simulator::cause_of_non_finite_state(const LA::MPI::Vector &load)
+  {
+    if (newmark.is_conditionally_stable()
+        && analysis == Analysis::dynamic_analysis)
+      return "Newmark's method with Beta = " + format_time(newmark.beta)
+             + " < Gamma/2 = " + format_time(0.5 * newmark.gamma)
+             + " is stable only for Time step <= about "
+             + format_time(stable_time_step())
+             + " (an estimate from below of omega_max); Time integration/Time "
+               "step = "
+             + format_time(newmark.time_step) + " is too large for it.";
+    return "the values overflow the range of double: the largest load "
+           "entry is "
+           + format_time(load.linfty_norm())
+           + "; check Loads/.../Magnitude and the initial conditions.";
+  }
+
+
+  void
+  Simulator::stop_for_signal(const int signal, const std::string &when)
+  {
+    stopped_by_signal = signal;
+    AssertThrow(false,
+                ExcMessage("Interrupted by signal " + std::to_string(signal)
+                           + " " + when));
   }
 
 
@@ -261,6 +375,15 @@ namespace liftoff
                     ExcMessage("--resume reads the checkpoint in "
                                "Output/Directory, which is empty."));
       }
+    pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
+          << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
+          << discretization.degree() << "), "
+          << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
+          << std::endl;
+    // Checks that need the matrices come before the folder is touched.
+    setup();
+    check_before_run();
+
     // The folder is this run's from here until run() returns or throws.
     output_folder = prepare_output_directory(start);
     struct Release
@@ -290,12 +413,8 @@ namespace liftoff
         output_folder->remove_temporary_files();
       }
     has_taken_over_output = (start != Start::resume);
-    pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
-          << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
-          << discretization.degree() << "), "
-          << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
-          << std::endl;
-    setup();
+    time_history.setup(discretization, output_directory);
+    profile_output.setup(discretization, output_directory);
     try
       {
         if (analysis == Analysis::static_analysis)
@@ -421,9 +540,17 @@ namespace liftoff
 
     LA::MPI::Vector load;
     discretization.reinit_vector(load);
-    loads.assemble(0.0, load);
+    assemble_loads(0, 0.0, load);
 
     const auto result = active_set.solve(load, u, ghosted_u);
+    require_finite(0, 0.0, "the static solution", {&u}, {}, [&]() {
+      return cause_of_non_finite_state(load);
+    });
+    // The one "step" of a static analysis is done: a stop request ends the
+    // run here, like a dynamic run after a step, with no result written.
+    if (const int signal = StopSignal::received(mpi_communicator))
+      stop_for_signal(signal,
+                      "during the static analysis; no result was written.");
     AssertThrow(!result.lost_contact,
                 ExcMessage("Static analysis: the plate lifts off the "
                            "foundation everywhere (or keeps too little "
@@ -442,6 +569,9 @@ namespace liftoff
     // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
     // lift-off, and the balance column checks it.
     e.work = 0.5 * discretization.n_symmetry_copies() * (load * u);
+    require_finite(0, 0.0, "an energy", {}, e.values(), [&]() {
+      return cause_of_non_finite_state(load);
+    });
     record_step(0, 0.0, true, result, e, none);
     pcout << "static: " << result.iterations << " active-set iterations, "
           << "contact fraction " << foundation.contact_area_fraction()
@@ -471,13 +601,16 @@ namespace liftoff
       {
         // Initial acceleration from M a0 = F(0) - (K + K_f(u0)) u0, with
         // the contact set of u0.
-        set_initial_state();
-        loads.assemble(0.0, load);
+        // check_before_run() set the initial state.
+        assemble_loads(0, 0.0, load);
         TimerOutput::Scope t(timer, "initial acceleration");
         foundation.update_contact_status(ghosted_u);
         force_balance(load, balance);
         matrices.solve_with_mass(a, balance);
         discretization.constraints.distribute(a);
+        require_finite(0, 0.0, "the initial acceleration", {&a}, {}, [&]() {
+          return cause_of_non_finite_state(load);
+        });
         // The first iterate is the bilateral problem.
         foundation.activate_all();
       }
@@ -496,6 +629,9 @@ namespace liftoff
     if (resume_step == 0)
       {
         const EnergyBalance e = energies(0.0);
+        require_finite(0, 0.0, "an energy", {}, e.values(), [&]() {
+          return cause_of_non_finite_state(load);
+        });
         record_step(0, 0.0, n_steps == 0, {}, e, e);
       }
     const EnergyBalance initial = records.front().energies;
@@ -505,7 +641,7 @@ namespace liftoff
         const double tau = step * dt;
         {
           TimerOutput::Scope t(timer, "right hand side");
-          loads.assemble(tau, next_load);
+          assemble_loads(step, tau, next_load);
           newmark.history_term(u, v, a, history_term);
           matrices.mass.vmult(rhs, history_term);
           rhs += next_load;
@@ -514,6 +650,10 @@ namespace liftoff
         }
         newmark.predict(u, v, a, u_new);
         const auto result = active_set.solve(rhs, u_new, ghosted_u);
+        // Before the convergence test: a nan makes the contact set wander.
+        require_finite(step, tau, "the solution", {&u_new}, {}, [&]() {
+          return cause_of_non_finite_state(next_load);
+        });
         AssertThrow(result.converged,
                     ExcMessage("The active set "
                                + unsettled(result, active_set.max_iterations)
@@ -542,28 +682,28 @@ namespace liftoff
             force_balance(load, balance);
           }
 
-        record_step(
-          step, tau, step == n_steps, result, energies(work), initial);
+        const EnergyBalance e = energies(work);
+        require_finite(step,
+                       tau,
+                       "the velocity, acceleration or an energy",
+                       {&v, &a},
+                       e.values(),
+                       [&]() { return cause_of_non_finite_state(load); });
+        record_step(step, tau, step == n_steps, result, e, initial);
 
         const int signal = StopSignal::received(mpi_communicator);
         if (writes_files()
             && (signal != 0 || checkpoint.is_due(step, step == n_steps)))
           write_checkpoint(step, load, balance, work);
         if (signal != 0)
-          {
-            stopped_by_signal = signal;
-            AssertThrow(false,
-                        ExcMessage("Interrupted by signal "
-                                   + std::to_string(signal) + " after step "
-                                   + std::to_string(step)
-                                   + " (tau = " + format_time(tau)
-                                   + "); the files written so far are "
-                                     "complete"
-                                   + (writes_files()
-                                        ? " and `liftoff --resume` continues "
-                                          "from the checkpoint of this step."
-                                        : ".")));
-          }
+          stop_for_signal(signal,
+                          "after step " + std::to_string(step)
+                            + " (tau = " + format_time(tau)
+                            + "); the files written so far are complete"
+                            + (writes_files()
+                                 ? " and `liftoff --resume` continues from "
+                                   "the checkpoint of this step."
+                                 : "."));
       }
   }
 
@@ -632,6 +772,18 @@ namespace liftoff
                           r.energies,
                           records.front().energies);
     pcout << "resumed after step " << resume_step << std::endl;
+  }
+
+
+  void
+  Simulator::assemble_loads(const unsigned int step,
+                            const double       tau,
+                            LA::MPI::Vector   &load)
+  {
+    loads.assemble(tau, load);
+    require_finite(step, tau, "the load vector", {&load}, {}, [&]() {
+      return loads.non_finite_load(tau);
+    });
   }
 
 

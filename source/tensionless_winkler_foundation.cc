@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
@@ -73,12 +74,16 @@ namespace liftoff
       for (unsigned int k = 0; k < w_dofs.size(); ++k)
         shape_values(q, k) = fe.shape_value(w_dofs[k], rule.point(q));
 
-    FEValues<2> fe_values(disc.mapping, fe, rule, update_JxW_values);
+    FEValues<2>                          fe_values(disc.mapping,
+                          fe,
+                          rule,
+                          update_JxW_values | update_quadrature_points);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     cell_w_dof_indices.clear();
     cell_w_dof_is_constrained.clear();
     cell_index.clear();
     jxw.clear();
+    gauss_points.clear();
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -98,7 +103,10 @@ namespace liftoff
                 disc.constraints.is_constrained(dofs[i]));
             }
           for (unsigned int q = 0; q < n_q_points; ++q)
-            jxw.push_back(fe_values.JxW(q));
+            {
+              jxw.push_back(fe_values.JxW(q));
+              gauss_points.push_back(fe_values.quadrature_point(q));
+            }
           cell_index.push_back(cell->active_cell_index());
         }
     in_contact.assign(jxw.size(), model == Model::none ? 0 : 1);
@@ -355,6 +363,43 @@ namespace liftoff
     const MPI_Comm comm = discretization->mpi_communicator;
     return Utilities::MPI::sum(in_contact_area, comm)
            / Utilities::MPI::sum(area, comm);
+  }
+
+
+  double
+  TensionlessWinklerFoundation::rigid_body_restraint() const
+  {
+    // Modes r = (1, x, y); a symmetry plane x = 0 (y = 0) fixes the
+    // rotation that w = x (w = y) needs, so that mode is held already.
+    std::array<bool, 3> is_free = {{true, true, true}};
+    for (const unsigned int axis : discretization->symmetry_axes())
+      is_free[1 + axis] = false;
+    // Moments of the contact set and of the whole part, entry by entry.
+    std::vector<double> moments(18, 0.0);
+    for (unsigned int i = 0; i < jxw.size(); ++i)
+      {
+        const Point<2>             &p = gauss_points[i];
+        const std::array<double, 3> r = {{1.0, p[0], p[1]}};
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+            {
+              moments[3 * a + b] += in_contact[i] * jxw[i] * r[a] * r[b];
+              moments[9 + 3 * a + b] += jxw[i] * r[a] * r[b];
+            }
+      }
+    Utilities::MPI::sum(moments, discretization->mpi_communicator, moments);
+    // The whole part's moment matrix is diagonal (it is symmetric about
+    // the axes of the modes kept): scale by it, so that full contact gives
+    // the identity; held modes enter as 1.
+    SymmetricTensor<2, 3> scaled;
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = a; b < 3; ++b)
+        scaled[a][b] =
+          (is_free[a] && is_free[b]
+             ? moments[3 * a + b]
+                 / std::sqrt(moments[9 + 4 * a] * moments[9 + 4 * b])
+             : (a == b ? 1.0 : 0.0));
+    return eigenvalues(scaled)[2];
   }
 
 

@@ -72,7 +72,9 @@ start_and_wait() {
   scene out 20 > long.prm
   "${run[@]}" long.prm > stdout.txt 2> stderr.txt &
   pid=$!
-  for _ in $(seq 100); do [ -s out/checkpoint/checkpoint.txt ] && break; sleep 0.1; done
+  # Up to a minute: on a loaded machine (two 2-rank tests at once under
+  # ctest -j2) the 50 steps to the first checkpoint took more than 10 s.
+  for _ in $(seq 600); do [ -s out/checkpoint/checkpoint.txt ] && break; sleep 0.1; done
   sleep 0.5
 }
 # signal_run SIGNAL: signal liftoff itself (under mpirun its processes, which

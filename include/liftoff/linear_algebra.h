@@ -1,6 +1,11 @@
 #pragma once
 
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/lac/generic_linear_algebra.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace liftoff
 {
@@ -8,4 +13,23 @@ namespace liftoff
   // speaks of LA::MPI::Vector and LA::MPI::SparseMatrix, so a switch of
   // backend is a change here and in LinearSolver only.
   namespace LA = dealii::LinearAlgebraTrilinos;
+
+  /// Whether every entry this rank owns is a finite number (not collective).
+  inline bool
+  has_finite_local_entries(const LA::MPI::Vector &v)
+  {
+    return std::all_of(v.begin(), v.end(), [](const double x) {
+      return std::isfinite(x);
+    });
+  }
+
+  /// Whether every entry on every rank is a finite number (collective).
+  inline bool
+  is_finite(const LA::MPI::Vector &v)
+  {
+    return dealii::Utilities::MPI::min(static_cast<int>(
+                                         has_finite_local_entries(v)),
+                                       v.get_mpi_communicator())
+           == 1;
+  }
 } // namespace liftoff

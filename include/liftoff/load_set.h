@@ -42,9 +42,15 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// Loads inside the plate, and symmetric where the model relies on it.
+    /// Loads inside the plate, and symmetric where the model relies on it:
+    /// on a half or quarter model every load must have a mirror image whose
+    /// history agrees at the `n_steps + 1` times k * time_step and whose
+    /// intensity agrees at every quadrature point of the full plate's mesh
+    /// (at every one of those times if it names tau). Collective.
     void
-    check_against(const Discretization &discretization) const;
+    check_against(const Discretization &discretization,
+                  const double          time_step,
+                  const unsigned int    n_steps) const;
 
     /// Precompute the time independent parts on this discretization.
     void
@@ -53,6 +59,12 @@ namespace liftoff
     /// The load vector F(tau) (owned entries, constraints applied).
     void
     assemble(const double tau, LA::MPI::Vector &load_vector) const;
+
+    /// After assemble() gave a non-finite number at `tau`: which load did
+    /// it, and how (its time history, its intensity, an overflow), for an
+    /// error message. Collective.
+    std::string
+    non_finite_load(const double tau) const;
 
     /// A distributed force on all three equations (force on w, moments on
     /// psi_x and psi_y), f(x, y) with time set by set_time(tau); it is
@@ -113,12 +125,25 @@ namespace liftoff
       const unsigned int                                            edge,
       LA::MPI::Vector &vector) const;
 
+    /// Quadrature points of the full plate's mesh (this rank's share) in
+    /// cells and on the plate's edges.
+    struct FullPlatePoints
+    {
+      std::vector<Point<2>> area, edge;
+    };
+    static FullPlatePoints
+    full_plate_points(const Discretization &discretization);
+
     /// Whether `other` is the image of `load` in the symmetry plane normal
-    /// to `axis` (a load on the plane may be its own image).
+    /// to `axis` (a load on the plane may be its own image), at `times` and
+    /// `points`. Collective.
     static bool
-    is_mirror_image(const Load           &load,
-                    const Load           &other,
-                    const unsigned int    axis,
-                    const BoundingBox<2> &plate);
+    is_mirror_image(const Load                &load,
+                    const Load                &other,
+                    const unsigned int         axis,
+                    const BoundingBox<2>      &plate,
+                    const std::vector<double> &times,
+                    const FullPlatePoints     &points,
+                    const Discretization      &discretization);
   };
 } // namespace liftoff

@@ -34,9 +34,27 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// Number of steps of size dt that reach the end time.
+    /// Refuse an End time that is not a whole number (at least 1) of time
+    /// steps: a run never shortens a step nor passes End time. Only a time
+    /// integration asks; a static analysis ignores both.
+    void
+    check_end_time() const;
+
+    /// Number of steps of size dt that reach the end time (a multiple of
+    /// dt after check_end_time()).
     unsigned int
     n_steps() const;
+
+    /// Whether the scheme is stable only for small enough steps (Newmark
+    /// with 2 beta < gamma).
+    bool
+    is_conditionally_stable() const;
+
+    /// The largest stable dt for a system whose largest eigenvalue of
+    /// M^-1 K is `largest_eigenvalue` (omega_max^2); infinite for an
+    /// unconditionally stable scheme.
+    double
+    stable_time_step(const double largest_eigenvalue) const;
 
     /// The factor of M in the effective matrix: 1 / (beta dt^2) for
     /// Newmark, (1 - alpha_m) / ((1 - alpha_f) beta dt^2) in general.

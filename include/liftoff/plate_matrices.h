@@ -7,6 +7,8 @@
 #include <liftoff/mindlin_plate.h>
 #include <liftoff/transverse_shear_strain.h>
 
+#include <functional>
+
 namespace liftoff
 {
   using namespace dealii;
@@ -32,6 +34,16 @@ namespace liftoff
     /// needed for the initial acceleration).
     void
     solve_with_mass(LA::MPI::Vector &x, const LA::MPI::Vector &b) const;
+
+    /// An estimate from below of the largest eigenvalue of M^-1 (K + A),
+    /// omega_max^2, by power iteration with the Rayleigh quotient, where
+    /// `add_extra(x, y)` adds A x to y (the foundation); constrained
+    /// entries are kept at zero. Each iteration costs one mass solve.
+    double
+    largest_eigenvalue(
+      const Discretization &discretization,
+      const std::function<void(const LA::MPI::Vector &, LA::MPI::Vector &)>
+        &add_extra) const;
 
     TransverseShearStrain::Treatment shear_integration =
       TransverseShearStrain::Treatment::mitc;

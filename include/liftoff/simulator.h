@@ -18,6 +18,7 @@
 #include <liftoff/tensionless_winkler_foundation.h>
 #include <liftoff/time_history.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -148,11 +149,47 @@ namespace liftoff
     LA::MPI::Vector         u, v, a;              // owned state
     LA::MPI::Vector         ghosted_u, ghosted_v; // with ghosts, for evaluation
     std::vector<StepRecord> records;
+    /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
+    /// estimate from below), once it was needed; 0 before.
+    double largest_eigenvalue = 0;
 
+    /// Matrices, foundation, loads and state vectors; writes nothing.
     void
     setup();
     std::unique_ptr<OutputDirectory>
     prepare_output_directory(const Start start) const;
+    /// What can be refused only once the matrices exist, before any file is
+    /// written: non-finite initial conditions, a time step beyond the
+    /// stability limit of a conditionally stable scheme.
+    void
+    check_before_run();
+    /// The largest stable time step of the scheme (infinite if it is
+    /// unconditionally stable).
+    double
+    stable_time_step();
+    /// The loads at tau; a non-finite entry stops the run naming the load.
+    void
+    assemble_loads(const unsigned int step,
+                   const double       tau,
+                   LA::MPI::Vector   &load);
+    /// One rule for every value a step produces: if any entry of `vectors`
+    /// or any of `numbers` is not finite on any rank, stop the run with a
+    /// message naming the step, tau, `what` and cause() (collective).
+    void
+    require_finite(const unsigned int                          step,
+                   const double                                tau,
+                   const std::string                          &what,
+                   const std::vector<const LA::MPI::Vector *> &vectors,
+                   const std::vector<double>                  &numbers,
+                   const std::function<std::string()>         &cause);
+    /// Why the state may have become non-finite with finite loads: the
+    /// stability limit of a conditionally stable scheme, or an overflow.
+    std::string
+    cause_of_non_finite_state(const LA::MPI::Vector &load);
+    /// End the run as interrupted by `signal` (the exit code is 128 +
+    /// signal); `when` completes the message.
+    [[noreturn]] void
+    stop_for_signal(const int signal, const std::string &when);
     void
     write_used_parameters() const;
     /// A resumed run leaves every file of the run it continues as it is

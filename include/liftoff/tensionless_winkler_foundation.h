@@ -84,6 +84,16 @@ namespace liftoff
     double
     contact_area_fraction() const;
 
+    /// How firmly the springs in contact hold the rigid-body motions that
+    /// nothing else holds on a plate with free edges (w = 1, and w = x,
+    /// w = y unless x = 0 or y = 0 is a symmetry plane): the smallest
+    /// eigenvalue of the contact set's moment matrix int_S r_i r_j over
+    /// that of the whole meshed part, in [0, 1]. Zero exactly when the set
+    /// is empty or lies on a line, i.e. when K + K_f(S) is singular for a
+    /// free plate (collective).
+    double
+    rigid_body_restraint() const;
+
     /// Fraction of each locally owned cell's Gauss points in contact,
     /// indexed by active cell index, for output.
     Vector<float>
@@ -118,6 +128,7 @@ namespace liftoff
     std::vector<types::global_dof_index> cell_w_dof_indices;
     std::vector<unsigned int>            cell_index;
     std::vector<double>                  jxw;
+    std::vector<Point<2>>                gauss_points;
     std::vector<unsigned char>           in_contact;
     /// w_h at the points, kept between the two passes of a status update.
     std::vector<double> w_at_points;

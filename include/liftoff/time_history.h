@@ -30,6 +30,13 @@ namespace liftoff
              - (initial.kinetic + initial.strain + initial.foundation) - work;
     }
 
+    /// The four numbers, for checks that treat them alike.
+    std::vector<double>
+    values() const
+    {
+      return {kinetic, strain, foundation, work};
+    }
+
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int)
