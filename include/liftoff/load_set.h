@@ -42,6 +42,10 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
+    /// No load is on (every Magnitude is 0).
+    bool
+    is_empty() const;
+
     /// Loads inside the plate, and symmetric where the model relies on it.
     void
     check_against(const Discretization &discretization) const;
