@@ -7,7 +7,8 @@
 # most two lines on stderr and 1000 bytes, no stack trace, no output folder.
 set -u
 liftoff=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-source "$(dirname "$0")/output_checks.sh"
+tests=$(cd "$(dirname "$0")" && pwd)
+source "$tests/output_checks.sh"
 enter_work_directory
 
 # refused NAME REGEX SCENE [LIMIT_KB]: run SCENE (under ulimit -v LIMIT_KB
@@ -76,6 +77,17 @@ printf '%s\nsubsection Discretization\n  set Global refinements = 9\nend\n' "$lo
 refused "Global refinements = 9 under ulimit -v 3 GB" \
   'Global refinements = 9, Polynomial degree = 1 make 2\.6[0-9]*e\+07 cells.*GB per rank.*only [0-9.]+ GB per rank are available' \
   refined.prm 3000000
+
+# The same refusals on two ranks: every rank stops (no hang), rank 0 says why.
+for scene in a.prm "$tests/bad_input/mesh_too_large.prm" long_intensity.prm; do
+  timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$liftoff" "$scene" >stdout.txt 2>stderr.txt
+  status=$?
+  [ "$status" -ne 0 ] && [ "$status" -ne 124 ]
+  check $? "2 ranks, $(basename "$scene"): stops with a non-zero exit code, no hang ($status)"
+  [ "$(grep -c 'liftoff: error in' stderr.txt)" -eq 1 ] &&
+    grep -Eq 'form a cycle|GB per rank are available|must be a muParser' stderr.txt
+  check $? "2 ranks, $(basename "$scene"): one message, from rank 0"
+done
 
 # Profile times beyond the end: the run completes, writes the profiles it
 # reaches and warns about the others by name.
