@@ -207,7 +207,7 @@ namespace liftoff
       return plate;
 
     const std::string message =
-      load.name + "/Region = <" + load.region
+      load.name + "/Region = <" + abbreviated(load.region)
       + "> must be 'whole plate' or 'x_min, x_max, y_min, y_max' with "
         "x_min < x_max, y_min < y_max, inside the plate [-1/2, 1/2] x [-mu/2, "
         "mu/2].";

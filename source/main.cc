@@ -33,6 +33,13 @@ namespace
     std::string        line, word;
     while (words >> word)
       line += (line.empty() ? "" : " ") + word;
+    // deal.II quotes a value that does not match its pattern whole, however
+    // long; keep the start and the end, which names the pattern.
+    constexpr std::size_t head = 400, tail = 300;
+    if (line.size() > head + tail + 100)
+      line = line.substr(0, head) + " ... ("
+             + std::to_string(line.size() - head - tail)
+             + " characters left out) ... " + line.substr(line.size() - tail);
     return line;
   }
 

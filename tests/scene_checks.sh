@@ -66,6 +66,13 @@ refused "1 MB intensity" 'Loads/Pressure 1/Intensity = <1\+\+\+.*\.\.\. \(100000
 printf '%s\nsubsection Initial conditions\n  set Displacement = 0; 0; x%s\nend\n' \
   "$loaded" "$long" > long_initial.prm
 refused "1 MB initial displacement" 'Initial conditions/Displacement = <0; 0; x\+\+.*characters\)> must be 3 muParser expressions' long_initial.prm
+ones=$(head -c 1000000 /dev/zero | tr '\0' '1')
+printf 'subsection Loads\n  subsection Point load 1\n    set Magnitude = %sx\n  end\nend\n' \
+  "$ones" > long_number.prm
+refused "1 MB number" 'The entry value 1111.*characters left out.*for the entry named Magnitude does not match the given pattern' long_number.prm
+printf '%s\nsubsection Loads\n  subsection Pressure 1\n    set Magnitude = 1\n    set Region = 0%s\n  end\nend\n' \
+  "$loaded" "$long" > long_region.prm
+refused "1 MB region" 'Loads/Pressure 1/Region = <0\+\+\+.*\(1000001 characters\)> must be' long_region.prm
 printf '%s\nsubsection Loads\n  subsection Point load 1\n    set Time history = sin(tau\n  end\nend\n' \
   "$loaded" > short_history.prm
 refused "unbalanced time history" 'Loads/Point load 1/Time history = <sin\(tau> must be a muParser expression in \(tau\): .*Missing parenthesis' short_history.prm
