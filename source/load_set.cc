@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/load_set.h>
+#include <liftoff/scene_input.h>
 
 #include <cmath>
 #include <functional>
@@ -15,8 +16,6 @@ namespace liftoff
 {
   namespace
   {
-    const std::map<std::string, double> parser_constants = {{"pi", M_PI}};
-
     std::string
     subsection_name(const std::string &kind, const unsigned int i)
     {
@@ -28,35 +27,6 @@ namespace liftoff
     {
       static const std::regex tau("(^|[^A-Za-z0-9_])tau([^A-Za-z0-9_]|$)");
       return std::regex_search(expression, tau);
-    }
-
-    // muParser in deal.II 9.4 parses lazily: evaluate once now so that a
-    // bad expression is reported with the parameter's name before any run.
-    template <int dim>
-    std::unique_ptr<FunctionParser<dim>>
-    make_parser(const std::string &variables,
-                const std::string &expression,
-                const bool         time_dependent,
-                const std::string &parameter)
-    {
-      auto parser = std::make_unique<FunctionParser<dim>>(1);
-      try
-        {
-          parser->initialize(variables,
-                             expression,
-                             parser_constants,
-                             time_dependent);
-          const double value = parser->value(Point<dim>());
-          (void)value;
-        }
-      catch (const std::exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage(parameter + " = <" + expression
-                                 + "> is not a valid expression in ("
-                                 + variables + "): " + e.what()));
-        }
-      return parser;
     }
 
     Point<2>
@@ -181,10 +151,11 @@ namespace liftoff
           // A load that is off (Magnitude 0) is checked all the same: a
           // broken expression is an error whether or not it is used yet.
           load.history_expression = prm.get("Time history");
-          load.history            = make_parser<1>("tau",
-                                        load.history_expression,
-                                        false,
-                                        load.name + "/Time history");
+          load.history = parse_expression<1>(load.name + "/Time history",
+                                             load.history_expression,
+                                             1,
+                                             "tau",
+                                             false);
           if (kind == Kind::point)
             {
               const auto xy = Utilities::string_to_double(
@@ -194,10 +165,11 @@ namespace liftoff
           else
             {
               load.intensity_expression = prm.get("Intensity");
-              load.intensity            = make_parser<2>("x,y,tau",
-                                              load.intensity_expression,
-                                              true,
-                                              load.name + "/Intensity");
+              load.intensity = parse_expression<2>(load.name + "/Intensity",
+                                                   load.intensity_expression,
+                                                   1,
+                                                   "x,y,tau",
+                                                   true);
               load.intensity_depends_on_time =
                 names_tau(load.intensity_expression);
               if (kind == Kind::pressure)
@@ -221,6 +193,13 @@ namespace liftoff
   }
 
 
+  bool
+  LoadSet::is_empty() const
+  {
+    return loads.empty();
+  }
+
+
   BoundingBox<2>
   LoadSet::region_of(const Load &load, const BoundingBox<2> &plate)
   {
@@ -228,7 +207,7 @@ namespace liftoff
       return plate;
 
     const std::string message =
-      load.name + "/Region = <" + load.region
+      load.name + "/Region = <" + abbreviated(load.region)
       + "> must be 'whole plate' or 'x_min, x_max, y_min, y_max' with "
         "x_min < x_max, y_min < y_max, inside the plate [-1/2, 1/2] x [-mu/2, "
         "mu/2].";

@@ -2,6 +2,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <liftoff/output_files.h>
+#include <liftoff/scene_input.h>
 #include <liftoff/simulator.h>
 #include <liftoff/stop_signal.h>
 
@@ -26,13 +28,34 @@ namespace
     "       liftoff --parameters         print every parameter with its "
     "default and documentation";
 
-  // Rank 0 reads the scene (from a file or stdin) and all ranks parse the
-  // same text, so every rank fails alike on bad input.
+  // deal.II spreads its messages over indented lines; one line reads
+  // better and stays one line in a log.
+  std::string
+  one_line(const std::string &message)
+  {
+    std::istringstream words(message);
+    std::string        line, word;
+    while (words >> word)
+      line += (line.empty() ? "" : " ") + word;
+    // deal.II quotes a value that does not match its pattern whole, however
+    // long; keep the start and the end, which names the pattern.
+    constexpr std::size_t head = 400, tail = 300;
+    if (line.size() > head + tail + 100)
+      line = line.substr(0, head) + " ... ("
+             + std::to_string(line.size() - head - tail)
+             + " characters left out) ... " + line.substr(line.size() - tail);
+    return line;
+  }
+
+
+  // Rank 0 reads the scene (from a file or stdin) and follows its include
+  // lines; all ranks parse the same text, so every rank fails alike on bad
+  // input.
   std::string
   read_scene(const std::string &name, const MPI_Comm comm)
   {
     std::string text;
-    bool        ok = true;
+    std::string error;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
       {
         if (name == "-")
@@ -40,14 +63,23 @@ namespace
         else
           {
             std::ifstream in(name);
-            ok = static_cast<bool>(in);
+            if (!in)
+              error = "Cannot read the scene file " + name;
             text.assign(std::istreambuf_iterator<char>(in), {});
           }
+        if (error.empty())
+          try
+            {
+              liftoff::check_include_cycles(text, name);
+            }
+          catch (const std::exception &e)
+            {
+              error = liftoff::message_of(e);
+            }
       }
-    ok   = dealii::Utilities::MPI::broadcast(comm, ok, 0);
-    text = dealii::Utilities::MPI::broadcast(comm, text, 0);
-    AssertThrow(ok, dealii::ExcMessage("Cannot read the scene file " + name));
-    return text;
+    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+    AssertThrow(error.empty(), dealii::ExcMessage(error));
+    return dealii::Utilities::MPI::broadcast(comm, text, 0);
   }
 } // namespace
 
@@ -118,18 +150,36 @@ main(int argc, char **argv)
     }
   catch (const dealii::ExceptionBase &e)
     {
+      // A solver failure is not the user's message but is mostly caused by
+      // the scene: say what to look at.
+      const std::string hint =
+        std::string(e.get_exc_name()).find("Trilinos") != std::string::npos
+          ? " (the linear solver failed: the system matrix is singular or too "
+            "ill-conditioned for double precision; check Plate, "
+            "Foundation/Stiffness, the supports and Time integration/Time "
+            "step)"
+          : "";
       if (is_root)
-        {
-          std::cerr << "liftoff: error in " << scene_name << ":\n";
-          e.print_info(std::cerr);
-          std::cerr << std::endl;
-        }
+        std::cerr << "liftoff: error in " << scene_name << ":\n    "
+                  << one_line(liftoff::message_of(e)) << hint << std::endl;
+    }
+  catch (const std::bad_alloc &)
+    {
+      // Only rank 0 reports, and a rank that ran out may not be rank 0:
+      // every rank that did says so, in one line.
+      std::cerr << "liftoff: error in " << scene_name
+                << ": out of memory (std::bad_alloc) on rank "
+                << dealii::Utilities::MPI::this_mpi_process(comm)
+                << "; the scene needs more memory than this machine or its "
+                   "limits give (see Discretization/Cells along x, y, Global "
+                   "refinements, Polynomial degree)."
+                << std::endl;
     }
   catch (const std::exception &e)
     {
       if (is_root)
-        std::cerr << "liftoff: error in " << scene_name << ":\n"
-                  << e.what() << std::endl;
+        std::cerr << "liftoff: error in " << scene_name << ":\n    "
+                  << one_line(e.what()) << std::endl;
     }
   return stopping_signal != 0 ? 128 + stopping_signal : 1;
 }

@@ -26,7 +26,11 @@ namespace liftoff
     prm.declare_entry("Profile times",
                       "",
                       Patterns::List(Patterns::Double(0.0)),
-                      "Times tau at which profiles.csv gets a profile.");
+                      "Times tau at which profiles.csv gets a profile, "
+                      "each at the step nearest to it. Times beyond "
+                      "Time integration/End time are not reached: the run "
+                      "warns about them and goes on (a scene may be run "
+                      "shorter for a try or resumed further).");
     prm.leave_subsection();
   }
 
@@ -69,6 +73,18 @@ namespace liftoff
                              "on the plate [-1/2, 1/2] x [-mu/2, mu/2]; "
                              + std::to_string(p[0]) + ", "
                              + std::to_string(p[1]) + " does not."));
+  }
+
+
+  std::vector<double>
+  ProfileOutput::times_not_reached(const double end_time, const double dt) const
+  {
+    std::vector<double> late;
+    if (n_points > 0)
+      for (const double tau : times)
+        if (tau > end_time + 0.5 * dt * (1 + 1e-12))
+          late.push_back(tau);
+    return late;
   }
 
 

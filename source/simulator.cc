@@ -4,6 +4,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/output_files.h>
+#include <liftoff/scene_input.h>
 #include <liftoff/simulator.h>
 #include <liftoff/stop_signal.h>
 
@@ -27,6 +28,25 @@ namespace liftoff
       std::ostringstream text;
       text << std::setprecision(8) << tau;
       return text.str();
+    }
+
+    // Whether initial fields vanish at every node: a plate at rest.
+    bool
+    is_at_rest(const Discretization                                  &disc,
+               const std::vector<std::unique_ptr<FunctionParser<2>>> &fields)
+    {
+      LA::MPI::Vector state;
+      disc.reinit_vector(state);
+      for (const auto &field : fields)
+        {
+          VectorTools::interpolate(disc.mapping,
+                                   disc.dof_handler,
+                                   *field,
+                                   state);
+          if (state.linfty_norm() != 0.0)
+            return false;
+        }
+      return true;
     }
 
     // Why an active-set iteration did not settle, for error messages.
@@ -133,23 +153,8 @@ namespace liftoff
          {std::make_pair("Displacement", initial_displacement),
           std::make_pair("Velocity", initial_velocity)})
       {
-        auto f = std::make_unique<FunctionParser<2>>(3);
-        try
-          {
-            f->initialize("x,y", text, {{"pi", M_PI}});
-            Vector<double> values(3);
-            f->vector_value(Point<2>(), values);
-          }
-        catch (const std::exception &e)
-          {
-            AssertThrow(false,
-                        ExcMessage(std::string("Initial conditions/") + name
-                                   + " = <" + text
-                                   + "> must be three muParser expressions in "
-                                     "x, y separated by ';': "
-                                   + e.what()));
-          }
-        initial_fields.push_back(std::move(f));
+        initial_fields.push_back(parse_expression<2>(
+          std::string("Initial conditions/") + name, text, 3, "x,y", false));
       }
 
     if (analysis == Analysis::static_analysis)
@@ -160,7 +165,17 @@ namespace liftoff
                              "free and Foundation/Model = none has no static "
                              "equilibrium."));
 
-    // Geometry-dependent checks need the mesh; building it writes nothing.
+    // Geometry-dependent checks need the mesh; building it writes nothing,
+    // but what it and the solver would allocate is estimated first (the
+    // direct solver's factor dominates a large scene).
+    prm.enter_subsection("Linear solver");
+    const auto factor = prm.get("Type") == "cg"
+                          ? Discretization::Factor::none
+                          : (prm.get("Direct solver package") == "klu"
+                               ? Discretization::Factor::on_rank_0
+                               : Discretization::Factor::distributed);
+    prm.leave_subsection();
+    discretization.check_memory(factor);
     discretization.setup(plate);
     if (analysis == Analysis::static_analysis)
       loads.check_against(discretization, 0.0, 0);
@@ -173,6 +188,42 @@ namespace liftoff
       }
     time_history.check_against(discretization);
     profile_output.check_against(discretization);
+
+    // Nothing to compute: most likely a load whose Magnitude was left at its
+    // default 0.
+    if (loads.is_empty())
+      AssertThrow(analysis == Analysis::dynamic_analysis
+                    && !is_at_rest(discretization, initial_fields),
+                  ExcMessage(
+                    "The scene has no load (every Loads/.../Magnitude is 0)"
+                    + std::string(analysis == Analysis::dynamic_analysis
+                                    ? " and starts at rest (Initial "
+                                      "conditions are 0)"
+                                    : "")
+                    + ", so its solution is u = 0. Give a load a "
+                      "Magnitude"
+                    + (analysis == Analysis::dynamic_analysis
+                         ? ", or the plate an initial displacement or "
+                           "velocity."
+                         : ".")));
+
+    // A shortened run (a try, or a resume to a later end) may skip
+    // profiles; say so rather than drop them unnoticed.
+    if (analysis == Analysis::dynamic_analysis)
+      {
+        const auto late =
+          profile_output.times_not_reached(newmark.end_time, newmark.time_step);
+        if (!late.empty()
+            && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          {
+            std::cerr << "liftoff: warning: Output/Profile times";
+            for (const double tau : late)
+              std::cerr << ' ' << format_time(tau);
+            std::cerr << " lie beyond Time integration/End time = "
+                      << format_time(newmark.end_time)
+                      << "; no profile is written for them." << std::endl;
+          }
+      }
   }
 
 

@@ -48,6 +48,26 @@ namespace liftoff
   class Discretization
   {
   public:
+    /// Where a direct solver keeps its factor: none (CG and AMG), spread
+    /// over the ranks (MUMPS) or on rank 0 (KLU).
+    enum class Factor
+    {
+      none,
+      distributed,
+      on_rank_0
+    };
+
+    /// The size of the discretization the parameters ask for, known
+    /// before anything is built.
+    struct SizeEstimate
+    {
+      double n_cells          = 0;
+      double n_dofs           = 0;
+      double n_matrix_entries = 0;
+      /// Bytes the largest rank will add to what it holds at start-up.
+      double memory_per_rank = 0;
+    };
+
     /// Boundary ids: the four plate edges, then the symmetry planes.
     enum BoundaryId : types::boundary_id
     {
@@ -68,6 +88,19 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+
+    /// Cells, unknowns, matrix entries and memory of this discretization on
+    /// `n_ranks` ranks, from the parameters alone (doc/reliability.md has
+    /// the formula and how well it matches measured peak memory).
+    SizeEstimate
+    estimate_size(const Factor factor, const unsigned int n_ranks) const;
+
+    /// Refuse, on every rank, a discretization whose estimate does not fit
+    /// in the memory each rank can have (the node's MemAvailable or a
+    /// cgroup limit shared by the ranks on the node, and `ulimit -v`).
+    /// Call it before setup(): it allocates nothing.
+    void
+    check_memory(const Factor factor) const;
 
     /// Build mesh, dofs, constraints for a plate of the given aspect ratio.
     void

@@ -42,6 +42,10 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
+    /// No load is on (every Magnitude is 0).
+    bool
+    is_empty() const;
+
     /// Loads inside the plate, and symmetric where the model relies on it:
     /// on a half or quarter model every load must have a mirror image whose
     /// history agrees at the `n_steps + 1` times k * time_step and whose

@@ -31,6 +31,11 @@ namespace liftoff
     void
     check_against(const Discretization &discretization) const;
 
+    /// The requested times that a time integration with step `dt` to
+    /// `end_time` does not reach (nearer to no step than dt/2).
+    std::vector<double>
+    times_not_reached(const double end_time, const double dt) const;
+
     void
     setup(const Discretization &discretization, const std::string &directory);
 
