@@ -136,13 +136,16 @@ namespace liftoff
                              LA::MPI::Vector       &a) const
   {
     // a_{n+1} = (u_{n+1} - u_n)/(beta dt^2) - v_n/(beta dt) - (1/(2beta)-1) a_n
-    LA::MPI::Vector a_new(u_new);
-    a_new.add(-1.0, u);
+    // is built in u's storage, which u_n no longer needs afterwards, so no
+    // vector is allocated; the operations are those of the formula in its
+    // order, so the rounding is too.
+    LA::MPI::Vector &a_new = u;
+    a_new.sadd(-1.0, 1.0, u_new);
     a_new *= 1.0 / (beta * time_step * time_step);
     a_new.add(-1.0 / (beta * time_step), v, -(1.0 / (2.0 * beta) - 1.0), a);
 
     v.add((1.0 - gamma) * time_step, a, gamma * time_step, a_new);
-    a = a_new;
+    a.swap(a_new);
     u = u_new;
   }
 } // namespace liftoff

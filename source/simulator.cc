@@ -405,9 +405,10 @@ namespace liftoff
     const unsigned int n_steps = newmark.n_steps();
     const double       copies  = discretization.n_symmetry_copies();
 
-    LA::MPI::Vector load, next_load, rhs, history_term, u_new, balance;
+    LA::MPI::Vector load, next_load, rhs, history_term, u_new, balance,
+      increment;
     for (auto *vector :
-         {&load, &next_load, &rhs, &history_term, &u_new, &balance})
+         {&load, &next_load, &rhs, &history_term, &u_new, &balance, &increment})
       discretization.reinit_vector(*vector);
     // Generalized-alpha weighs in the previous state's force balance.
     const double previous_weight = newmark.previous_state_weight();
@@ -462,7 +463,7 @@ namespace liftoff
             rhs.add(previous_weight, balance);
         }
         newmark.predict(u, v, a, u_new);
-        const auto result = active_set.solve(rhs, u_new, ghosted_u);
+        const auto result = active_set.solve(rhs, u_new, ghosted_u, true);
         AssertThrow(result.converged,
                     ExcMessage("The active set "
                                + unsettled(result, active_set.max_iterations)
@@ -477,7 +478,7 @@ namespace liftoff
 
         // Trapezoidal work of the loads, exact for Newmark's average
         // acceleration rule on linear problems.
-        LA::MPI::Vector increment(u_new);
+        increment = u_new;
         increment -= u;
         load += next_load;
         work += 0.5 * copies * (increment * load);
@@ -496,7 +497,8 @@ namespace liftoff
 
         const int signal = StopSignal::received(mpi_communicator);
         if (writes_files()
-            && (signal != 0 || checkpoint.is_due(step, step == n_steps)))
+            && (signal != 0
+                || checkpoint.is_due(step, step == n_steps, mpi_communicator)))
           write_checkpoint(step, load, balance, work);
         if (signal != 0)
           {
@@ -631,6 +633,7 @@ namespace liftoff
          << "active-set iterations per step, max: " << largest << '\n'
          << "steps whose active set cycled: " << cycles << '\n'
          << "factorisations: " << solver.n_preparations << '\n'
+         << "factor: " << solver.factor_name() << '\n'
          << "substitutions: " << solver.n_substitutions << '\n'
          << "time per substitution [s]: "
          << (solver.n_substitutions > 0
@@ -696,6 +699,13 @@ namespace liftoff
   Simulator::n_factorisations() const
   {
     return active_set.linear_solver().n_preparations;
+  }
+
+
+  const LinearSolver &
+  Simulator::linear_solver() const
+  {
+    return active_set.linear_solver();
   }
 
 
