@@ -164,11 +164,15 @@ namespace liftoff
   {
     Assert(matrix.m() > 0, ExcMessage("set_base_matrix() first."));
     Result result;
+    // The set the previous step ended with, when the iteration starts from
+    // the prediction's.
+    std::vector<unsigned char> previous_set;
     if (guess_is_prediction && starts_from_prediction)
       {
         // The contact rule applied to the prediction: where the plate is
-        // heading. The set's own rule (and its round-off band) decides.
+        // heading.
         TimerOutput::Scope t(timer, "contact update");
+        previous_set     = foundation.contact_status();
         ghosted_solution = solution;
         foundation.update_contact_status(ghosted_solution);
       }
@@ -188,7 +192,14 @@ namespace liftoff
         TimerOutput::Scope  t(timer, "contact update");
         const unsigned long n_changed =
           foundation.update_contact_status(ghosted_solution);
-        if (n_changed == 0)
+        // Points whose w_h ends inside the round-off band keep the status
+        // they had: the rule's choice there depends on the set an iteration
+        // starts from, and with the prediction's set it would not be the
+        // previous step's. Restoring it (and solving once more) makes the
+        // converged set the one a start from the previous set gives.
+        if (n_changed == 0
+            && (previous_set.empty()
+                || foundation.keep_status_in_band(previous_set) == 0))
           {
             result.converged = true;
             return result;
