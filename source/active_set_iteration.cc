@@ -30,8 +30,10 @@ namespace liftoff
       "The contact set a time step's iteration starts from. predicted: "
       "the set of the Newmark predictor u + dt v + dt^2/2 a (the points it "
       "presses into the foundation); previous: the set the previous step "
-      "ended with. The iteration ends at the same set either way; the "
-      "prediction needs fewer iterations.");
+      "ended with. Either way the first step starts from the bilateral set, "
+      "and points that end inside the round-off band of the contact rule "
+      "keep the previous step's status, so both reach the same sets; the "
+      "prediction mostly needs fewer iterations.");
     prm.leave_subsection();
     LinearSolver::declare_parameters(prm);
   }

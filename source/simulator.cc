@@ -463,7 +463,9 @@ namespace liftoff
             rhs.add(previous_weight, balance);
         }
         newmark.predict(u, v, a, u_new);
-        const auto result = active_set.solve(rhs, u_new, ghosted_u, true);
+        // The first step starts from the bilateral set: the predictor has
+        // no motion yet to extrapolate.
+        const auto result = active_set.solve(rhs, u_new, ghosted_u, step > 1);
         AssertThrow(result.converged,
                     ExcMessage("The active set "
                                + unsettled(result, active_set.max_iterations)
