@@ -179,9 +179,9 @@ def tabulate(directory, scene, overrides, ranks, label):
         "contact": "%.3f" % contact,
         "output": "%.3f" % output,
         "rest": "%.2f" % (wall - setup - loop - output),
-        "per_step": "%.4f" % ((wall - setup) / max(steps, 1)),
-        "per_iteration": "%.4f" % (loop / max(iterations, 1)),
-        "substitution": "%.4f" % substitution if substitution > 0 else "",
+        "per_step": "%.4g" % ((wall - setup) / max(steps, 1)),
+        "per_iteration": "%.4g" % (loop / max(iterations, 1)),
+        "substitution": "%.4g" % substitution if substitution > 0 else "",
         "ratio": ("%.2f" % (loop / max(iterations, 1) / substitution)
                   if substitution > 0 else ""),
         "memory_mb": "%.0f" % memory_mb,
@@ -201,7 +201,7 @@ def set_floor(rows, floor):
     (CHOLMOD's), measured in this session; each row's time per step against
     it."""
     for row in rows:
-        row["floor"] = "%.6f" % floor
+        row["floor"] = "%.4g" % floor
         row["ratio_floor"] = "%.1f" % (float(row["per_step"]) / floor)
 
 
@@ -211,7 +211,7 @@ def derived(row):
     its ratio to a substitution."""
     iterations = float(row["iter_mean"]) * int(row["steps"])
     steady = sum(float(row[k]) for k in ("foundation", "solve", "contact"))
-    row["per_iteration_steady"] = "%.4f" % (steady / max(iterations, 1))
+    row["per_iteration_steady"] = "%.4g" % (steady / max(iterations, 1))
     if row.get("substitution") and float(row["substitution"]) > 0:
         row["ratio_steady"] = "%.2f" % (steady / max(iterations, 1)
                                         / float(row["substitution"]))
