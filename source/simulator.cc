@@ -350,13 +350,17 @@ namespace liftoff
                                   : newmark.time_step,
                                 ghosted_u);
     if (writes_files() && field_output.is_due(step, is_last_step))
-      field_output.write(output_directory,
-                         discretization,
-                         foundation,
-                         ghosted_u,
-                         ghosted_v,
-                         tau,
-                         step);
+      {
+        // The velocity with ghosts only for the files that show it.
+        ghosted_v = v;
+        field_output.write(output_directory,
+                           discretization,
+                           foundation,
+                           ghosted_u,
+                           ghosted_v,
+                           tau,
+                           step);
+      }
   }
 
 
@@ -487,7 +491,6 @@ namespace liftoff
         load = next_load;
 
         newmark.advance(u_new, u, v, a);
-        ghosted_v = v;
         if (previous_weight != 0)
           {
             TimerOutput::Scope t(timer, "right hand side");

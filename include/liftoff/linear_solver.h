@@ -27,8 +27,12 @@ namespace liftoff
    * solve is one forward and back substitution. After A has changed
    * (matrix_changed()), the stored factor preconditions conjugate gradients on
    * the new A; the change, a few Gauss points' springs, is small against M /
-   * (beta dt^2), so CG needs one or two iterations. Only when it needs more
-   * than `Refactorisation threshold` iterations is A factorised anew.
+   * (beta dt^2), so CG needs one or two iterations. A is factorised anew
+   * when CG needs more than `Refactorisation threshold` iterations, and
+   * (CHOLMOD) when the work CG has spent beyond one substitution per solve
+   * since the matrix last changed adds up to the cost of a factorisation:
+   * on a small problem whose contact set seldom changes, factorising again
+   * is cheaper than CG for the rest of the run.
    *
    * `cg` builds an algebraic multigrid preconditioner (Trilinos ML) once per
    * prepare() and keeps it for the changed matrices.
