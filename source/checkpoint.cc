@@ -305,8 +305,10 @@ namespace liftoff
         unsigned int  saved_ranks = 0;
         if (found.empty())
           error = "there is no checkpoint in " + directory
-                  + "/checkpoint. A run writes one every Checkpoint/Interval "
-                    "steps and when SIGINT or SIGTERM stops it.";
+                  + "/checkpoint. A run writes one every Checkpoint/Wall "
+                    "time interval seconds or Checkpoint/Interval steps, "
+                    "after its last step and when SIGINT or SIGTERM stops "
+                    "it.";
         else if (!std::getline(in, line) || line != first_line
                  || !read_number(in, "step = ", step)
                  || !read_number(in, "ranks = ", saved_ranks)
