@@ -61,6 +61,13 @@ COLUMNS = [
     ("per_iteration_steady", "per it. w/o factor."),
     ("ratio_steady", "w/o factor./subst."),
     ("memory_mb", "peak MB/rank"),
+    ("factor", "factor"),
+    ("rhs", "rhs"),
+    ("checkpoint", "checkpoint"),
+    ("untimed", "untimed"),
+    ("subst_per_step", "subst./step"),
+    ("floor", "floor"),
+    ("ratio_floor", "per step/floor"),
 ]
 
 
@@ -91,15 +98,26 @@ def commit():
         return "unknown"
 
 
+def scene_file(scene):
+    """benchmarks/scenes/<scene>.prm, or a path to any scene (the paper's
+    examples in prm/)."""
+    if scene.endswith(".prm"):
+        return scene
+    return os.path.join(HERE, "scenes", scene + ".prm")
+
+
+def scene_name(scene):
+    return os.path.splitext(os.path.basename(scene))[0]
+
+
 def scene_text(scene, overrides, directory):
-    return scene_with_overrides(os.path.join(HERE, "scenes", scene + ".prm"),
-                                overrides, directory)
+    return scene_with_overrides(scene_file(scene), overrides, directory)
 
 
 def run_one(scene, overrides, ranks, label):
     stamp = datetime.datetime.now().strftime("%Y%m%d-%H%M%S")
     directory = os.path.join(HERE, "runs", "%s-%s-np%d-%s" %
-                             (label, scene, ranks, stamp))
+                             (label, scene_name(scene), ranks, stamp))
     os.makedirs(directory)
     prm = os.path.join(directory, "scene.prm")
     with open(prm, "w") as f:
@@ -134,6 +152,8 @@ def tabulate(directory, scene, overrides, ranks, label):
     solve = section("solve")
     contact = section("contact update")
     output = section("output")
+    rhs = section("right hand side")
+    checkpoint = section("checkpoint")
     loop = foundation + factorisation + solve + contact
     iterations = iter_mean * steps
     substitution = float(values.get("time per substitution [s]", "0"))
@@ -143,7 +163,7 @@ def tabulate(directory, scene, overrides, ranks, label):
         "date": datetime.date.today().isoformat(),
         "commit": commit(),
         "label": label,
-        "scene": scene,
+        "scene": scene_name(scene),
         "overrides": "; ".join(overrides),
         "ranks": ranks,
         "dofs": int(values["dofs"]),
@@ -159,14 +179,30 @@ def tabulate(directory, scene, overrides, ranks, label):
         "contact": "%.3f" % contact,
         "output": "%.3f" % output,
         "rest": "%.2f" % (wall - setup - loop - output),
-        "per_step": "%.4f" % ((wall - setup) / max(steps, 1)),
-        "per_iteration": "%.4f" % (loop / max(iterations, 1)),
-        "substitution": "%.4f" % substitution if substitution > 0 else "",
+        "per_step": "%.4g" % ((wall - setup) / max(steps, 1)),
+        "per_iteration": "%.4g" % (loop / max(iterations, 1)),
+        "substitution": "%.4g" % substitution if substitution > 0 else "",
         "ratio": ("%.2f" % (loop / max(iterations, 1) / substitution)
                   if substitution > 0 else ""),
         "memory_mb": "%.0f" % memory_mb,
+        # Older binaries do not name their factor: MUMPS's LU then.
+        "factor": values.get("factor", "MUMPS LU"),
+        "rhs": "%.3f" % rhs,
+        "checkpoint": "%.3f" % checkpoint,
+        "untimed": "%.2f" % (wall - sum(sections.values())),
+        "subst_per_step": "%.2f" % (float(values.get("substitutions", "0"))
+                                    / max(steps, 1)),
     }
     return row
+
+
+def set_floor(rows, floor):
+    """The floor of a scene: one substitution with the best symmetric factor
+    (CHOLMOD's), measured in this session; each row's time per step against
+    it."""
+    for row in rows:
+        row["floor"] = "%.4g" % floor
+        row["ratio_floor"] = "%.1f" % (float(row["per_step"]) / floor)
 
 
 def derived(row):
@@ -175,7 +211,7 @@ def derived(row):
     its ratio to a substitution."""
     iterations = float(row["iter_mean"]) * int(row["steps"])
     steady = sum(float(row[k]) for k in ("foundation", "solve", "contact"))
-    row["per_iteration_steady"] = "%.4f" % (steady / max(iterations, 1))
+    row["per_iteration_steady"] = "%.4g" % (steady / max(iterations, 1))
     if row.get("substitution") and float(row["substitution"]) > 0:
         row["ratio_steady"] = "%.2f" % (steady / max(iterations, 1)
                                         / float(row["substitution"]))
@@ -230,6 +266,11 @@ def main():
                         "(e.g. an older commit's, for a baseline)")
     parser.add_argument("--commit", help="commit to record with "
                         "--executable")
+    parser.add_argument("--baseline", metavar="EXECUTABLE",
+                        help="run each scene with this binary first, then "
+                        "with the built one, back to back (label "
+                        "LABEL-baseline)")
+    parser.add_argument("--baseline-commit", default="unknown")
     parser.add_argument("--tabulate", metavar="RUN_FOLDER",
                         help="do not run: tabulate this finished run of the "
                         "one scene given (with its --label, --ranks, --set)")
@@ -243,8 +284,8 @@ def main():
         if not re.match(r"^[^=/]+(/[^=/]+)+=.*$", override):
             parser.error("--set wants Section/Entry=value, got " + override)
     for scene in args.scenes:
-        if not os.path.exists(os.path.join(HERE, "scenes", scene + ".prm")):
-            parser.error("no scene benchmarks/scenes/%s.prm" % scene)
+        if not os.path.exists(scene_file(scene)):
+            parser.error("no scene " + scene_file(scene))
     if args.tabulate:
         row = derived(tabulate(args.tabulate, args.scenes[0], args.set,
                                args.ranks, args.label))
@@ -254,10 +295,22 @@ def main():
         build()
     rows = []
     for scene in args.scenes:
-        row = derived(run_one(scene, args.set, args.ranks, args.label))
-        rows.append(row)
-        print("  ".join("%s=%s" % (h, row[k]) for k, h in COLUMNS[3:]),
-              flush=True)
+        scene_rows = []
+        if args.baseline:
+            EXECUTABLE, built = os.path.abspath(args.baseline), EXECUTABLE
+            COMMIT, own = args.baseline_commit, COMMIT
+            scene_rows.append(derived(run_one(scene, args.set, args.ranks,
+                                              args.label + "-baseline")))
+            EXECUTABLE, COMMIT = built, own
+        scene_rows.append(derived(run_one(scene, args.set, args.ranks,
+                                          args.label)))
+        own = scene_rows[-1]
+        if "CHOLMOD" in own["factor"] and float(own["substitution"] or 0):
+            set_floor(scene_rows, float(own["substitution"]))
+        for row in scene_rows:
+            print("  ".join("%s=%s" % (h, row.get(k, ""))
+                            for k, h in COLUMNS[3:]), flush=True)
+        rows += scene_rows
     write_tables(rows)
     print("appended %d row(s) to %s; table in %s" %
           (len(rows), RESULTS_CSV, RESULTS_MD))

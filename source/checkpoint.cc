@@ -172,12 +172,21 @@ namespace liftoff
     prm.enter_subsection("Checkpoint");
     prm.declare_entry(
       "Interval",
-      "100",
+      "0",
       Patterns::Integer(0),
       "Write a checkpoint to <Output/Directory>/checkpoint every this many "
-      "steps and after the last one (replacing the previous checkpoint); 0 "
-      "writes one only when SIGINT or SIGTERM stops the run. `liftoff "
+      "steps (replacing the previous checkpoint); 0: not by steps. `liftoff "
       "--resume SCENE` continues from it on the same number of ranks.");
+    prm.declare_entry(
+      "Wall time interval",
+      "600",
+      Patterns::Double(0.0),
+      "Also write one when this many seconds of wall time have passed since "
+      "the last one (or the start); 0: not by time. With either interval "
+      "above 0 a checkpoint follows the last step too; with both 0 one is "
+      "written only when SIGINT or SIGTERM stops the run. Spacing by time "
+      "keeps the cost of checkpoints a small share of any run, short steps "
+      "or long.");
     prm.leave_subsection();
   }
 
@@ -186,15 +195,28 @@ namespace liftoff
   Checkpoint::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Checkpoint");
-    interval = prm.get_integer("Interval");
+    interval           = prm.get_integer("Interval");
+    wall_time_interval = prm.get_double("Wall time interval");
     prm.leave_subsection();
   }
 
 
   bool
-  Checkpoint::is_due(const unsigned int step, const bool is_last_step) const
+  Checkpoint::is_due(const unsigned int step,
+                     const bool         is_last_step,
+                     const MPI_Comm     comm) const
   {
-    return is_due_every(interval, step, is_last_step);
+    if (interval == 0 && wall_time_interval == 0)
+      return false;
+    if (is_last_step || (interval > 0 && step % interval == 0))
+      return true;
+    // Clocks differ between ranks: rank 0's decides for all.
+    const bool is_time = std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - last_written)
+                           .count()
+                         >= wall_time_interval;
+    return wall_time_interval > 0
+           && Utilities::MPI::broadcast(comm, is_time, 0);
   }
 
 
@@ -239,6 +261,7 @@ namespace liftoff
                     const std::string                          &scene,
                     const std::function<void(OutputArchive &)> &save) const
   {
+    last_written               = std::chrono::steady_clock::now();
     const std::string target   = directory + "/checkpoint";
     const std::string fresh    = target + ".new";
     const std::string previous = target + ".previous";
@@ -311,9 +334,10 @@ namespace liftoff
           found = directory + "/" + name;
       AssertThrow(!found.empty(),
                   ExcMessage("there is no checkpoint in " + directory
-                             + "/checkpoint. A run writes one every "
-                               "Checkpoint/Interval steps and when SIGINT or "
-                               "SIGTERM stops it."));
+                             + "/checkpoint. A run writes one every Checkpoint/"
+                               "Wall time interval seconds or Checkpoint/"
+                               "Interval steps, after its last step and when "
+                               "SIGINT or SIGTERM stops it."));
 
       const std::string header = found + "/" + header_name;
       std::ifstream     in(header, std::ios::binary);

@@ -53,7 +53,8 @@ namespace liftoff
                       "kept constant: in a dynamic analysis End time must "
                       "be a whole number (at least 1) of time steps, to "
                       "1e-9; any other End time is refused, no step is "
-                      "shortened.");
+                      "shortened. At least 1/sqrt(Beta 1e250) (about "
+                      "2e-125), below which M / (Beta dtau^2) overflows.");
     prm.declare_entry("End time",
                       "0.2",
                       Patterns::Double(0.0),
@@ -88,6 +89,17 @@ namespace liftoff
                 ExcMessage("Time integration/Time step must be > 0."));
     AssertThrow(end_time > 0,
                 ExcMessage("Time integration/End time must be > 0."));
+    // M / (beta dt^2) enters the effective matrix and, times u, the
+    // right-hand side: past 1e250 its products leave the range of double and
+    // the solve returns inf or nan, whatever the scene.
+    const double smallest_step = 1.0 / std::sqrt(beta * 1e250);
+    AssertThrow(time_step >= smallest_step,
+                ExcMessage("Time integration/Time step = "
+                           + Utilities::to_string(time_step)
+                           + " is so small that M / (Beta Time step^2) "
+                             "overflows double precision; it must be at "
+                             "least "
+                           + Utilities::to_string(smallest_step) + "."));
     AssertThrow(end_time / time_step < 1e8,
                 ExcMessage("Time integration/End time / Time step exceeds "
                            "1e8 steps; choose a larger Time step."));
@@ -202,13 +214,16 @@ namespace liftoff
                              LA::MPI::Vector       &a) const
   {
     // a_{n+1} = (u_{n+1} - u_n)/(beta dt^2) - v_n/(beta dt) - (1/(2beta)-1) a_n
-    LA::MPI::Vector a_new(u_new);
-    a_new.add(-1.0, u);
+    // is built in u's storage, which u_n no longer needs afterwards, so no
+    // vector is allocated; the operations are those of the formula in its
+    // order, so the rounding is too.
+    LA::MPI::Vector &a_new = u;
+    a_new.sadd(-1.0, 1.0, u_new);
     a_new *= 1.0 / (beta * time_step * time_step);
     a_new.add(-1.0 / (beta * time_step), v, -(1.0 / (2.0 * beta) - 1.0), a);
 
     v.add((1.0 - gamma) * time_step, a, gamma * time_step, a_new);
-    a = a_new;
+    a.swap(a_new);
     u = u_new;
   }
 } // namespace liftoff

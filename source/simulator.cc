@@ -569,13 +569,17 @@ namespace liftoff
                                   : newmark.time_step,
                                 ghosted_u);
     if (writes_files() && field_output.is_due(step, is_last_step))
-      field_output.write(output_directory,
-                         discretization,
-                         foundation,
-                         ghosted_u,
-                         ghosted_v,
-                         tau,
-                         step);
+      {
+        // The velocity with ghosts only for the files that show it.
+        ghosted_v = v;
+        field_output.write(output_directory,
+                           discretization,
+                           foundation,
+                           ghosted_u,
+                           ghosted_v,
+                           tau,
+                           step);
+      }
     if (!has_taken_over_output)
       take_over_output(step);
   }
@@ -637,9 +641,10 @@ namespace liftoff
     const unsigned int n_steps = newmark.n_steps();
     const double       copies  = discretization.n_symmetry_copies();
 
-    LA::MPI::Vector load, next_load, rhs, history_term, u_new, balance;
+    LA::MPI::Vector load, next_load, rhs, history_term, u_new, balance,
+      increment;
     for (auto *vector :
-         {&load, &next_load, &rhs, &history_term, &u_new, &balance})
+         {&load, &next_load, &rhs, &history_term, &u_new, &balance, &increment})
       discretization.reinit_vector(*vector);
     // Generalized-alpha weighs in the previous state's force balance.
     const double previous_weight = newmark.previous_state_weight();
@@ -700,7 +705,9 @@ namespace liftoff
             rhs.add(previous_weight, balance);
         }
         newmark.predict(u, v, a, u_new);
-        const auto result = active_set.solve(rhs, u_new, ghosted_u);
+        // The first step starts from the bilateral set: the predictor has
+        // no motion yet to extrapolate.
+        const auto result = active_set.solve(rhs, u_new, ghosted_u, step > 1);
         // Before the convergence test: a nan makes the contact set wander.
         require_finite(step, tau, "the solution", {&u_new}, {}, [&]() {
           return cause_of_non_finite_state(next_load);
@@ -719,14 +726,13 @@ namespace liftoff
 
         // Trapezoidal work of the loads, exact for Newmark's average
         // acceleration rule on linear problems.
-        LA::MPI::Vector increment(u_new);
+        increment = u_new;
         increment -= u;
         load += next_load;
         work += 0.5 * copies * (increment * load);
         load = next_load;
 
         newmark.advance(u_new, u, v, a);
-        ghosted_v = v;
         if (previous_weight != 0)
           {
             TimerOutput::Scope t(timer, "right hand side");
@@ -744,7 +750,8 @@ namespace liftoff
 
         const int signal = StopSignal::received(mpi_communicator);
         if (writes_files()
-            && (signal != 0 || checkpoint.is_due(step, step == n_steps)))
+            && (signal != 0
+                || checkpoint.is_due(step, step == n_steps, mpi_communicator)))
           write_checkpoint(step, load, balance, work);
         if (signal != 0)
           stop_for_signal(signal,
@@ -886,6 +893,7 @@ namespace liftoff
          << "active-set iterations per step, max: " << largest << '\n'
          << "steps whose active set cycled: " << cycles << '\n'
          << "factorisations: " << solver.n_preparations << '\n'
+         << "factor: " << solver.factor_name() << '\n'
          << "substitutions: " << solver.n_substitutions << '\n'
          << "time per substitution [s]: "
          << (solver.n_substitutions > 0
@@ -953,6 +961,13 @@ namespace liftoff
   Simulator::n_factorisations() const
   {
     return active_set.linear_solver().n_preparations;
+  }
+
+
+  const LinearSolver &
+  Simulator::linear_solver() const
+  {
+    return active_set.linear_solver();
   }
 
 

@@ -193,6 +193,7 @@ namespace liftoff
     const MPI_Comm comm = discretization->mpi_communicator;
     const double   threshold =
       contact_tolerance * Utilities::MPI::max(largest, comm);
+    band = threshold;
 
     unsigned long n_changed = 0;
     for (unsigned int i = 0; i < in_contact.size(); ++i)
@@ -207,6 +208,23 @@ namespace liftoff
         set_status(i, now);
       }
     return Utilities::MPI::sum(n_changed, comm);
+  }
+
+
+  unsigned long
+  TensionlessWinklerFoundation::keep_status_in_band(
+    const std::vector<unsigned char> &earlier)
+  {
+    AssertDimension(earlier.size(), in_contact.size());
+    unsigned long n_changed = 0;
+    if (model == Model::tensionless)
+      for (unsigned int i = 0; i < in_contact.size(); ++i)
+        if (std::abs(w_at_points[i]) <= band && in_contact[i] != earlier[i])
+          {
+            set_status(i, earlier[i]);
+            ++n_changed;
+          }
+    return Utilities::MPI::sum(n_changed, discretization->mpi_communicator);
   }
 
 

@@ -60,5 +60,5 @@ fill 64k "history.csv" 'history\.csv failed \(disk full' \
   '  set Cells along y = 2' 'end' "${plate[@]}" \
   'subsection Time integration' '  set Time step = 1e-4' '  set End time = 0.2' 'end' \
   "subsection Output" "  set Directory = $disk/out" '  set VTU interval = 0' 'end' \
-  'subsection Checkpoint' '  set Interval = 0' 'end'
+  'subsection Checkpoint' '  set Interval = 0' '  set Wall time interval = 0' 'end'
 finish

@@ -65,12 +65,16 @@ namespace liftoff
     void
     set_base_matrix(const LA::MPI::SparseMatrix &B);
 
-    /// Solve; `solution` holds the result (owned entries, constraints
-    /// distributed) and `ghosted_solution` the same with ghosts.
+    /// Solve; `solution` holds the initial guess on entry and the result
+    /// on exit (owned entries, constraints distributed), `ghosted_solution`
+    /// the same with ghosts. With `guess_is_prediction` (a time step's
+    /// predictor) and `Initial set = predicted`, the iteration starts from
+    /// the guess's contact set rather than the foundation's current one.
     Result
     solve(const LA::MPI::Vector &rhs,
           LA::MPI::Vector       &solution,
-          LA::MPI::Vector       &ghosted_solution);
+          LA::MPI::Vector       &ghosted_solution,
+          const bool             guess_is_prediction = false);
 
     /// The linear solver, for its counters.
     const LinearSolver &
@@ -92,6 +96,8 @@ namespace liftoff
 
     unsigned int max_iterations = 50;
     CycleRule    cycle_rule     = CycleRule::union_of_cycle;
+    /// `Initial set = predicted`.
+    bool starts_from_prediction = true;
     /// Nothing but the foundation holds the plate (a static free plate):
     /// stop when the contact set empties or the solve is singular.
     bool requires_contact = false;

@@ -11,6 +11,7 @@
 
 #include <liftoff/linear_algebra.h>
 
+#include <chrono>
 #include <functional>
 #include <string>
 
@@ -63,8 +64,11 @@ namespace liftoff
     parse_parameters(ParameterHandler &prm);
 
     /// Whether a checkpoint is written after step `step` without a signal.
+    /// Collective (the wall time is rank 0's).
     bool
-    is_due(const unsigned int step, const bool is_last_step) const;
+    is_due(const unsigned int step,
+           const bool         is_last_step,
+           const MPI_Comm     comm) const;
 
     /// The scene as "Subsection/Entry = value" lines, without the entries a
     /// resumed run may change.
@@ -98,7 +102,11 @@ namespace liftoff
          const std::function<void(InputArchive &)> &load) const;
 
   private:
-    unsigned int interval = 100;
+    unsigned int interval           = 0;
+    double       wall_time_interval = 600;
+    /// When the last checkpoint was written (or the run started).
+    mutable std::chrono::steady_clock::time_point last_written =
+      std::chrono::steady_clock::now();
     /// The folder open() found.
     std::string found;
   };

@@ -20,13 +20,19 @@ namespace liftoff
    * effective matrix of a time step plus the foundation term of the current
    * contact set.
    *
-   * `direct` factorises A once (Trilinos Amesos: MUMPS or KLU) and keeps the
-   * factor. While A is the factorised matrix, a solve is one forward and back
-   * substitution. After A has changed (matrix_changed()), the stored factor
-   * preconditions conjugate gradients on the new A; the change, a few Gauss
-   * points' springs, is small against M / (beta dt^2), so CG needs one or two
-   * iterations. Only when it needs more than `Refactorisation threshold`
-   * iterations is A factorised anew.
+   * `direct` factorises A once and keeps the factor: by default with
+   * CHOLMOD's sparse Cholesky factor L L^T (A is symmetric positive
+   * definite; on one rank), otherwise with a sparse LU of Trilinos Amesos
+   * (MUMPS or KLU, on any number of ranks). While A is the factorised matrix, a
+   * solve is one forward and back substitution. After A has changed
+   * (matrix_changed()), the stored factor preconditions conjugate gradients on
+   * the new A; the change, a few Gauss points' springs, is small against M /
+   * (beta dt^2), so CG needs one or two iterations. A is factorised anew
+   * when CG needs more than `Refactorisation threshold` iterations, and
+   * (CHOLMOD) when the work CG has spent beyond one substitution per solve
+   * since the matrix last changed adds up to the cost of a factorisation:
+   * on a small problem whose contact set seldom changes, factorising again
+   * is cheaper than CG for the rest of the run.
    *
    * `cg` builds an algebraic multigrid preconditioner (Trilinos ML) once per
    * prepare() and keeps it for the changed matrices.
@@ -46,6 +52,7 @@ namespace liftoff
     /// Section "factorisation" for factorisations and preconditioner
     /// set-ups, "solve" for the rest of a solve.
     explicit LinearSolver(TimerOutput &timer);
+    ~LinearSolver();
 
     /// Factorise A, or build its preconditioner. A must outlive the solves.
     void
@@ -60,6 +67,10 @@ namespace liftoff
     /// substitution).
     unsigned int
     solve(LA::MPI::Vector &x, const LA::MPI::Vector &b);
+
+    /// The factor in use, for the summary ("CHOLMOD Cholesky", "MUMPS LU").
+    std::string
+    factor_name() const;
 
     /// Factorisations or preconditioner set-ups so far.
     unsigned int n_preparations = 0;
@@ -100,8 +111,13 @@ namespace liftoff
       direct,
       cg
     };
-    Type         type                      = Type::direct;
-    std::string  direct_package            = "Amesos_Mumps";
+    Type type = Type::direct;
+    /// The Amesos package for the LU factor, when it is used.
+    std::string direct_package = "Amesos_Mumps";
+    /// `Direct solver package = cholmod`: factorise with CHOLMOD where it
+    /// can (one rank, a positive definite matrix).
+    bool         prefers_cholesky          = true;
+    bool         has_reported_fallback     = false;
     double       tolerance                 = 1e-12;
     unsigned int max_iterations            = 10000;
     unsigned int refactorisation_threshold = 8;
@@ -110,10 +126,16 @@ namespace liftoff
     const Discretization        *discretization = nullptr;
     const LA::MPI::SparseMatrix *matrix         = nullptr;
     /// The factor belongs to the matrix as it is now.
-    bool                                               factor_is_exact = false;
-    std::vector<double>                                prepared_values;
-    SolverControl                                      direct_control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
+    bool factor_is_exact = false;
+    /// Floating-point operations CG has spent since the last factorisation
+    /// beyond one substitution per solve (CHOLMOD only).
+    double                                          cg_excess_flops = 0;
+    std::vector<double>                             prepared_values;
+    SolverControl                                   direct_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    /// CHOLMOD's factor; kept out of this header.
+    class CholeskyFactor;
+    std::unique_ptr<CholeskyFactor>                    cholesky;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
     /// CG to the tolerance in at most `max_steps` iterations; throws

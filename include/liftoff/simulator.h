@@ -102,6 +102,9 @@ namespace liftoff
     /// Factorisations (or preconditioner set-ups) of the run.
     unsigned int
     n_factorisations() const;
+    /// The linear solver: its factor and counters.
+    const LinearSolver &
+    linear_solver() const;
     const Discretization &
     get_discretization() const;
 

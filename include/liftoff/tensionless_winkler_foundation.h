@@ -59,6 +59,13 @@ namespace liftoff
     unsigned long
     update_contact_status(const LA::MPI::Vector &ghosted_solution);
 
+    /// Give the points whose w_h lay inside the round-off band at the last
+    /// update_contact_status() the status they have in `earlier`: inside
+    /// the band the rule keeps a status, and this says which. Returns the
+    /// number of points (over all ranks) whose status changed.
+    unsigned long
+    keep_status_in_band(const std::vector<unsigned char> &earlier);
+
     /// Add the foundation stiffness K_f of the current status to `matrix`
     /// and remember that `matrix` now holds it.
     void
@@ -132,6 +139,8 @@ namespace liftoff
     std::vector<unsigned char>           in_contact;
     /// w_h at the points, kept between the two passes of a status update.
     std::vector<double> w_at_points;
+    /// The half-width of the round-off band at the last status update.
+    double band = 0;
     /// The status that the matrix given to add_to_matrix() holds, and the
     /// points whose status may differ from it.
     std::vector<unsigned char> in_matrix;

@@ -1,0 +1,78 @@
+// The symmetric factor and the LU are interchangeable: CHOLMOD's Cholesky
+// factor (the default on one rank, with its own rule for when to factorise
+// anew) must give the histories of MUMPS's LU, and of KLU's LU factorised
+// afresh at every change of the contact set, to 1e-10 on scenes with
+// lift-off: the plate of the symmetry tests (many set changes per step) and
+// the paper's Example 2 beam under its pulsating force (a set that changes
+// seldom, where CHOLMOD factorises again instead of iterating CG).
+
+#include "symmetric_scene.h"
+#include "test_tools.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace
+{
+  // The first quarter of a period of prm/example-2-beam-pulse.prm, without
+  // its output files.
+  std::string
+  pulse_scene()
+  {
+    std::ifstream     file(std::string(LIFTOFF_SOURCE_DIR)
+                       + "/prm/example-2-beam-pulse.prm");
+    std::stringstream text;
+    text << file.rdbuf();
+    AssertThrow(file, dealii::ExcMessage("Cannot read the pulse scene."));
+    return text.str()
+           + "subsection Time integration\n set End time = 0.625\nend\n"
+             "subsection Output\n set Directory =\n set VTU interval = "
+             "0\nend\n";
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  liftoff_tests::Checks                    checks;
+
+  for (const auto &[name, scene] :
+       {std::make_pair("plate",
+                       liftoff_tests::symmetric_scene("quarter", 5, 4)),
+        std::make_pair("pulse", pulse_scene())})
+    {
+      const auto solver = [&](const std::string &settings) {
+        return liftoff_tests::run_scene(scene + "subsection Linear solver\n"
+                                        + settings + "end\n");
+      };
+      const auto cholmod     = solver(" set Direct solver package = cholmod\n");
+      const auto mumps       = solver(" set Direct solver package = mumps\n");
+      const auto fresh       = solver(" set Direct solver package = klu\n"
+                                      " set Refactorisation threshold = 0\n");
+      const std::string what = std::string(name) + ": ";
+      checks.within(what + "CHOLMOD's Cholesky factor is the one used",
+                    cholmod->linear_solver().factor_name()
+                      == "CHOLMOD Cholesky",
+                    1,
+                    1);
+      checks.within(what + "MUMPS's LU is the one used",
+                    mumps->linear_solver().factor_name() == "MUMPS LU",
+                    1,
+                    1);
+      checks.less(what + "CHOLMOD vs MUMPS LU: histories",
+                  liftoff_tests::history_difference(*cholmod, *mumps),
+                  1e-10);
+      checks.less(what + "CHOLMOD vs fresh KLU factors: histories",
+                  liftoff_tests::history_difference(*cholmod, *fresh),
+                  1e-10);
+      if (std::string(name) == "pulse")
+        checks.within("pulse: CHOLMOD factorised again when CG had paid "
+                      "for it (more than one factorisation)",
+                      cholmod->n_factorisations(),
+                      2,
+                      1e9);
+    }
+  return checks.exit_code();
+}
