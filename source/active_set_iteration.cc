@@ -136,6 +136,23 @@ namespace liftoff
   }
 
 
+  double
+  ActiveSetIteration::refinement_change(const LA::MPI::Vector &x,
+                                        const LA::MPI::Vector &b)
+  {
+    // The residual, computed in double, carries round-off of the order of
+    // eps ||A|| ||x||; the correction it gives is then of the order of the
+    // error that the conditioning makes of that round-off.
+    LA::MPI::Vector residual(b), correction(b);
+    matrix.vmult(residual, x);
+    residual.sadd(-1.0, 1.0, b);
+    correction = 0;
+    solver.solve(correction, residual);
+    const double size = x.l2_norm();
+    return size > 0 ? correction.l2_norm() / size : 0.0;
+  }
+
+
   void
   ActiveSetIteration::solve_with_current_set(const LA::MPI::Vector &rhs,
                                              LA::MPI::Vector       &solution,

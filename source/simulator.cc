@@ -618,6 +618,21 @@ namespace liftoff
                            + (result.cycle_length > 0
                                 ? " (Active set/Cycle rule = stop)."
                                 : " (Active set/Maximum iterations).")));
+    // A very soft foundation under a plate with free edges leaves the
+    // rigid-body motion held by Gamma alone: the system is regular, its
+    // residual small, and its answer still round-off. Measure, don't trust.
+    const double change = active_set.refinement_change(u, load);
+    AssertThrow(change <= 1e-3,
+                ExcMessage("Static analysis: the solution is not accurate to "
+                           "0.1 %: one step of iterative refinement changes "
+                           "it by "
+                           + format_time(change)
+                           + " (relative). The system is too ill-conditioned "
+                             "for double precision, typically a very small "
+                             "Foundation/Stiffness under a thin plate "
+                             "(Plate/Thickness ratio) with free edges; use "
+                             "a stiffer foundation, support an edge or run a "
+                             "dynamic analysis."));
     const EnergyBalance none;
     EnergyBalance       e = energies(0.0);
     // Loads applied proportionally: the response is positively homogeneous

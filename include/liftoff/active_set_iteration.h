@@ -98,6 +98,13 @@ namespace liftoff
     CycleRule    cycle_rule     = CycleRule::union_of_cycle;
     /// `Initial set = predicted`.
     bool starts_from_prediction = true;
+    /// The change one step of iterative refinement makes to x, the solution
+    /// of the last solve with right-hand side b, relative to x: an estimate
+    /// of the forward error that the residual tests cannot see in a system
+    /// near the limit of double precision (collective).
+    double
+    refinement_change(const LA::MPI::Vector &x, const LA::MPI::Vector &b);
+
     /// Nothing but the foundation holds the plate (a static free plate):
     /// stop when the contact set empties or the solve is singular.
     bool requires_contact = false;
