@@ -1,6 +1,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 #include <boost/serialization/array_wrapper.hpp>
 
 #include <liftoff/checkpoint.h>
@@ -12,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 
@@ -24,8 +27,7 @@ namespace liftoff
     /// Raised whenever what a checkpoint holds or how it is laid out
     /// changes, so that an older checkpoint is refused by name rather than
     /// misread.
-    const unsigned int format         = 2;
-    const std::string  checksum_label = "crc32 of the lines above = ";
+    const std::string checksum_label = "crc32 of the lines above = ";
 
     std::string
     rank_name(const unsigned int rank)
@@ -98,6 +100,119 @@ namespace liftoff
         return false;
       std::istringstream value(line.substr(key.size()));
       return static_cast<bool>(value >> number);
+    }
+    // A run that died between the two renames of Checkpoint::write() left
+    // only the previous checkpoint.
+    std::string
+    newest_checkpoint(const std::string &directory)
+    {
+      for (const std::string name : {"checkpoint", "checkpoint.previous"})
+        if (std::filesystem::exists(directory + "/" + name + "/" + header_name))
+          return directory + "/" + name;
+      AssertThrow(false,
+                  ExcMessage("there is no checkpoint in " + directory
+                             + "/checkpoint. A run writes one every Checkpoint/"
+                               "Wall time interval seconds or Checkpoint/"
+                               "Interval steps, after its last step and when "
+                               "SIGINT or SIGTERM stops it."));
+      return "";
+    }
+
+    // The lines of a header file before its checksum line, once the format
+    // and the checksum are found right.
+    std::string
+    checked_header_text(const std::string &header)
+    {
+      std::ifstream     in(header, std::ios::binary);
+      const std::string text(std::istreambuf_iterator<char>(in), {});
+      const std::string first_line = text.substr(0, text.find('\n'));
+      const std::string format     = std::to_string(Checkpoint::format);
+      // An older liftoff's checkpoint is named as such, before the checksum
+      // (whose line format 1 did not have).
+      const std::string written_format =
+        first_line.rfind(format_line, 0) == 0
+          ? first_line.substr(format_line.size())
+          : "";
+      AssertThrow(written_format.empty() || written_format == format
+                    || written_format.find_first_not_of("0123456789")
+                         != std::string::npos,
+                  ExcMessage(
+                    header + " is of checkpoint format " + written_format
+                    + ", written by another liftoff that this one "
+                      "(format "
+                    + format + ") does not read; run the scene " + "again."));
+      // The last line is the checksum of everything before it.
+      const auto last =
+        text.size() > 1 ? text.rfind('\n', text.size() - 2) : std::string::npos;
+      const std::string body = text.substr(0, last + 1);
+      AssertThrow(last != std::string::npos && text.back() == '\n'
+                    && text.substr(last + 1) == checksum_line(body),
+                  ExcMessage(header + " is damaged (its contents do not match "
+                             + "its checksum) or not a liftoff checkpoint."));
+      AssertThrow(first_line == format_line + format,
+                  ExcMessage(header + " says <" + first_line + ">; this "
+                             + "liftoff reads format " + format + " only."));
+      return body;
+    }
+
+    struct Header
+    {
+      unsigned int         step = 0;
+      std::vector<FileSum> sums;
+      std::string          scene;
+    };
+
+    Header
+    read_header(const std::string &header)
+    {
+      const std::string  body = checked_header_text(header);
+      std::istringstream lines(body.substr(body.find('\n') + 1));
+      Header             result;
+      unsigned int       saved_ranks = 0;
+      std::string        line;
+      bool               is_header = read_number(lines, "step = ", result.step)
+                       && read_number(lines, "ranks = ", saved_ranks);
+      for (unsigned int r = 0; is_header && r < saved_ranks; ++r)
+        {
+          FileSum     sum;
+          std::string name, equals, bytes, label;
+          is_header = std::getline(lines, line).good();
+          std::istringstream entry(line);
+          entry >> name >> equals >> sum.first >> bytes >> label >> std::hex
+            >> sum.second;
+          is_header = is_header && entry && name == rank_name(r);
+          result.sums.push_back(sum);
+        }
+      is_header = is_header && std::getline(lines, line) && line == "scene:";
+      AssertThrow(is_header,
+                  ExcMessage(header + " is not a liftoff checkpoint header."));
+      result.scene.assign(std::istreambuf_iterator<char>(lines), {});
+      return result;
+    }
+
+    // Refuse a scene other than the checkpoint's, naming the first
+    // parameter that differs.
+    void
+    require_same_scene(const std::string &saved_scene,
+                       const std::string &scene,
+                       const std::string &found)
+    {
+      if (saved_scene == scene)
+        return;
+      std::istringstream a(saved_scene), b(scene);
+      std::string        saved_line, scene_line;
+      while (std::getline(a, saved_line) && std::getline(b, scene_line)
+             && saved_line == scene_line)
+        ;
+      AssertThrow(false,
+                  ExcMessage("the scene differs from the one the checkpoint "
+                             "in "
+                             + found
+                             + " was written for (only Time integration/End "
+                               "time and the Checkpoint subsection may "
+                               "change): now <"
+                             + scene_line + ">, in the checkpoint <"
+                             + saved_line + ">."));
     }
   } // namespace
 
@@ -223,33 +338,35 @@ namespace liftoff
   std::string
   Checkpoint::comparable_scene(const ParameterHandler &prm)
   {
-    std::ostringstream printed;
-    prm.print_parameters(printed, ParameterHandler::ShortPRM);
-    std::istringstream       in(printed.str());
-    std::vector<std::string> path;
-    std::string              line, scene;
-    while (std::getline(in, line))
-      {
-        const std::string text = Utilities::trim(line);
-        if (text.rfind("subsection ", 0) == 0)
-          path.push_back(Utilities::trim(text.substr(11)));
-        else if (text == "end" && !path.empty())
-          path.pop_back();
-        else if (text.rfind("set ", 0) == 0)
-          {
-            const auto  equals = text.find('=');
-            std::string name;
-            for (const auto &subsection : path)
-              name += subsection + "/";
-            name += Utilities::trim(text.substr(4, equals - 4));
-            // A resumed run may go further, and checkpoint at other steps.
-            if (name == "Time integration/End time"
-                || (!path.empty() && path[0] == "Checkpoint"))
-              continue;
-            scene +=
-              name + " = " + Utilities::trim(text.substr(equals + 1)) + "\n";
-          }
-      }
+    // ParameterHandler's own tree, read back from its JSON form: leaves are
+    // entries, every other node a subsection.
+    std::stringstream json;
+    prm.print_parameters(json, ParameterHandler::ShortJSON);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+
+    std::string scene;
+    const std::function<void(const boost::property_tree::ptree &,
+                             const std::string &)>
+      collect =
+        [&](const boost::property_tree::ptree &node, const std::string &path) {
+          for (const auto &[key, child] : node)
+            {
+              const std::string name = path + key;
+              if (name == "Time integration/End time" || name == "Checkpoint")
+                continue;
+              // ShortJSON writes an entry as "name": "value", the full
+              // form as an object with a "value".
+              if (child.empty())
+                scene += name + " = " + child.data() + "\n";
+              else if (const auto value =
+                         child.get_optional<std::string>("value"))
+                scene += name + " = " + *value + "\n";
+              else
+                collect(child, name + "/");
+            }
+        };
+    collect(tree, "");
     return scene;
   }
 
@@ -295,7 +412,7 @@ namespace liftoff
       if (!is_root)
         return;
       std::ostringstream header;
-      header << format_line << format << '\n'
+      header << format_line << Checkpoint::format << '\n'
              << "step = " << step << '\n'
              << "ranks = " << sums.size() << '\n';
       for (unsigned int r = 0; r < sums.size(); ++r)
@@ -318,109 +435,39 @@ namespace liftoff
                    const MPI_Comm     comm,
                    const std::string &scene)
   {
-    const unsigned int   n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    unsigned int         step    = 0;
-    std::vector<FileSum> sums;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    Header             header;
     found.clear();
     collective_attempt(comm, "Cannot resume", [&]() {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
-      // A run that died between the two renames of write() left only
-      // the previous checkpoint.
-      for (const std::string name : {"checkpoint", "checkpoint.previous"})
-        if (found.empty()
-            && std::filesystem::exists(directory + "/" + name + "/"
-                                       + header_name))
-          found = directory + "/" + name;
-      AssertThrow(!found.empty(),
-                  ExcMessage("there is no checkpoint in " + directory
-                             + "/checkpoint. A run writes one every Checkpoint/"
-                               "Wall time interval seconds or Checkpoint/"
-                               "Interval steps, after its last step and when "
-                               "SIGINT or SIGTERM stops it."));
-
-      const std::string header = found + "/" + header_name;
-      std::ifstream     in(header, std::ios::binary);
-      const std::string text(std::istreambuf_iterator<char>(in), {});
-      const std::string first_line = text.substr(0, text.find('\n'));
-      AssertThrow(first_line != format_line + "1",
-                  ExcMessage(header + " is of checkpoint format 1, written "
-                             + "by an older liftoff that this one (format "
-                             + std::to_string(format)
-                             + ") does not read; run the scene again."));
-      // The last line is the checksum of everything before it.
-      const auto last =
-        text.size() > 1 ? text.rfind('\n', text.size() - 2) : std::string::npos;
-      const std::string body = text.substr(0, last + 1);
-      AssertThrow(last != std::string::npos && text.back() == '\n'
-                    && text.substr(last + 1) == checksum_line(body),
-                  ExcMessage(header + " is damaged (its contents do not match "
-                             + "its checksum) or not a liftoff checkpoint."));
-      AssertThrow(first_line == format_line + std::to_string(format),
-                  ExcMessage(header + " says <" + first_line + ">; this "
-                             + "liftoff reads format " + std::to_string(format)
-                             + " only."));
-
-      std::istringstream lines(body.substr(first_line.size() + 1));
-      unsigned int       saved_ranks = 0;
-      std::string        line;
-      bool               is_header = read_number(lines, "step = ", step)
-                       && read_number(lines, "ranks = ", saved_ranks);
-      for (unsigned int r = 0; is_header && r < saved_ranks; ++r)
-        {
-          FileSum     sum;
-          std::string name, equals, bytes, label;
-          is_header = std::getline(lines, line).good();
-          std::istringstream entry(line);
-          entry >> name >> equals >> sum.first >> bytes >> label >> std::hex
-            >> sum.second;
-          is_header = is_header && entry && name == rank_name(r);
-          sums.push_back(sum);
-        }
-      is_header = is_header && std::getline(lines, line) && line == "scene:";
-      AssertThrow(is_header,
-                  ExcMessage(header + " is not a liftoff checkpoint header."));
-      const std::string saved_scene(std::istreambuf_iterator<char>(lines), {});
-      AssertThrow(saved_ranks == n_ranks,
+      found  = newest_checkpoint(directory);
+      header = read_header(found + "/" + header_name);
+      AssertThrow(header.sums.size() == n_ranks,
                   ExcMessage("the checkpoint in " + found + " was written by "
-                             + std::to_string(saved_ranks)
+                             + std::to_string(header.sums.size())
                              + " rank(s); resume it on as many (mpirun -np "
-                             + std::to_string(saved_ranks) + "), not "
+                             + std::to_string(header.sums.size()) + "), not "
                              + std::to_string(n_ranks) + "."));
-      if (saved_scene != scene)
-        {
-          // Name the first parameter that differs.
-          std::istringstream a(saved_scene), b(scene);
-          std::string        saved_line, scene_line;
-          while (std::getline(a, saved_line) && std::getline(b, scene_line)
-                 && saved_line == scene_line)
-            ;
-          AssertThrow(
-            false,
-            ExcMessage(
-              "the scene differs from the one the checkpoint in " + found
-              + " was written for (only Time integration/End time "
-                "and the Checkpoint subsection may change): now <"
-              + scene_line + ">, in the checkpoint <" + saved_line + ">."));
-        }
+      require_same_scene(header.scene, scene, found);
     });
-    found = Utilities::MPI::broadcast(comm, found, 0);
-    step  = Utilities::MPI::broadcast(comm, step, 0);
-    sums  = Utilities::MPI::broadcast(comm, sums, 0);
+    found       = Utilities::MPI::broadcast(comm, found, 0);
+    header.step = Utilities::MPI::broadcast(comm, header.step, 0);
+    header.sums = Utilities::MPI::broadcast(comm, header.sums, 0);
 
     // Every rank checks its own file before any rank reads one: a damaged
     // file must stop all ranks here, not one of them halfway through
     // restoring the state, which communicates.
     collective_attempt(comm, "Cannot resume", [&]() {
-      const std::string name  = rank_file(found, comm);
-      const FileSum     saved = sums[Utilities::MPI::this_mpi_process(comm)];
-      const FileSum     now   = sum_of_file(name);
+      const std::string name = rank_file(found, comm);
+      const FileSum saved = header.sums[Utilities::MPI::this_mpi_process(comm)];
+      const FileSum now   = sum_of_file(name);
       AssertThrow(now == saved,
                   ExcMessage("the checkpoint file " + name + " is damaged: "
                              + describe(now) + " where " + header_name
                              + " records " + describe(saved) + "."));
     });
-    return step;
+    return header.step;
   }
 
 

@@ -48,22 +48,18 @@ namespace liftoff
   void
   FieldOutput::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Output");
     prm.declare_entry("VTU interval",
                       "10",
                       Patterns::Integer(0),
                       "Write fields every this many steps (and at the last "
                       "step); 0 writes none.");
-    prm.leave_subsection();
   }
 
 
   void
   FieldOutput::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Output");
     interval = prm.get_integer("VTU interval");
-    prm.leave_subsection();
   }
 
 
@@ -157,6 +153,39 @@ namespace liftoff
                                 DataOutBase::write_pvd_record(out, records);
                               });
     });
+  }
+
+
+  void
+  FieldOutput::setup(const Discretization &disc, const std::string &folder)
+  {
+    discretization = &disc;
+    directory      = folder;
+    disc.reinit_ghosted_vector(ghosted_velocity);
+  }
+
+
+  void
+  FieldOutput::execute(const StepData &step)
+  {
+    if (directory.empty() || !is_due(step.state.step, step.is_last_step))
+      return;
+    ghosted_velocity = step.state.v;
+    write(directory,
+          *discretization,
+          step.foundation,
+          step.state.ghosted_u,
+          ghosted_velocity,
+          step.state.tau,
+          step.state.step);
+  }
+
+
+  void
+  FieldOutput::flush()
+  {
+    if (!directory.empty())
+      write_record(directory, discretization->mpi_communicator);
   }
 
 

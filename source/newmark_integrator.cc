@@ -196,6 +196,31 @@ namespace liftoff
   }
 
 
+  bool
+  NewmarkIntegrator::needs_force_balance() const
+  {
+    return previous_state_weight() != 0;
+  }
+
+
+  void
+  NewmarkIntegrator::right_hand_side(const LA::MPI::SparseMatrix &mass,
+                                     const LA::MPI::Vector       &u,
+                                     const LA::MPI::Vector       &v,
+                                     const LA::MPI::Vector       &a,
+                                     const LA::MPI::Vector       &next_load,
+                                     const LA::MPI::Vector       &balance,
+                                     LA::MPI::Vector             &h,
+                                     LA::MPI::Vector             &rhs) const
+  {
+    history_term(u, v, a, h);
+    mass.vmult(rhs, h);
+    rhs += next_load;
+    if (needs_force_balance())
+      rhs.add(previous_state_weight(), balance);
+  }
+
+
   void
   NewmarkIntegrator::predict(const LA::MPI::Vector &u,
                              const LA::MPI::Vector &v,

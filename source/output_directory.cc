@@ -26,10 +26,11 @@ namespace liftoff
 
     const std::string lock_name = "liftoff.lock";
 
-    // The names that Simulator, TimeHistory, ProfileOutput, FieldOutput and
-    // Checkpoint write, with their temporary names (write_file_atomically).
+    // The names that Simulator, RunSummary, TimeHistory, ProfileOutput,
+    // FieldOutput and Checkpoint write, with their temporary names
+    // (write_file_atomically).
     const std::regex file_names(
-      R"((used_parameters\.prm|summary\.txt|history\.csv|profiles\.csv|)"
+      R"((used_parameters\.prm|summary\.txt|summary\.json|history\.csv|profiles\.csv|)"
       R"(solution\.pvd|solution_[0-9]+\.pvtu|solution_[0-9]+\.[0-9]+\.vtu))"
       R"((\.tmp)?)");
     const std::regex checkpoint_folders(R"(checkpoint(\.new|\.previous)?)");
@@ -247,7 +248,8 @@ namespace liftoff
   {
     collective_attempt(comm, "Output/Directory = " + path, [&]() {
       if (Utilities::MPI::this_mpi_process(comm) == 0)
-        fs::remove(path + "/summary.txt");
+        for (const char *name : {"/summary.txt", "/summary.json"})
+          fs::remove(path + name);
     });
   }
 

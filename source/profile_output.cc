@@ -9,7 +9,6 @@ namespace liftoff
   void
   ProfileOutput::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Output");
     prm.declare_entry("Profile start",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 2, ","),
@@ -31,14 +30,12 @@ namespace liftoff
                       "Time integration/End time are not reached: the run "
                       "warns about them and goes on (a scene may be run "
                       "shorter for a try or resumed further).");
-    prm.leave_subsection();
   }
 
 
   void
   ProfileOutput::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Output");
     const auto a = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Profile start")));
     const auto b = Utilities::string_to_double(
@@ -48,7 +45,6 @@ namespace liftoff
     n_points = prm.get_integer("Profile points");
     times    = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Profile times")));
-    prm.leave_subsection();
     AssertThrow(n_points != 1,
                 ExcMessage("Output/Profile points must be 0 (no profile) or "
                            "at least 2."));
@@ -108,10 +104,11 @@ namespace liftoff
 
 
   void
-  ProfileOutput::write_if_due(const double           tau,
-                              const double           dt,
-                              const LA::MPI::Vector &u)
+  ProfileOutput::execute(const StepData &step)
   {
+    const double           tau = step.state.tau;
+    const double           dt  = step.time_step;
+    const LA::MPI::Vector &u   = step.state.ghosted_u;
     if (n_points == 0)
       return;
     bool is_due = (dt == 0.0);

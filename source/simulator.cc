@@ -4,6 +4,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/output_files.h>
+#include <liftoff/run_summary.h>
 #include <liftoff/scene_input.h>
 #include <liftoff/simulator.h>
 #include <liftoff/stop_signal.h>
@@ -30,25 +31,6 @@ namespace liftoff
       return text.str();
     }
 
-    // Whether initial fields vanish at every node: a plate at rest.
-    bool
-    is_at_rest(const Discretization                                  &disc,
-               const std::vector<std::unique_ptr<FunctionParser<2>>> &fields)
-    {
-      LA::MPI::Vector state;
-      disc.reinit_vector(state);
-      for (const auto &field : fields)
-        {
-          VectorTools::interpolate(disc.mapping,
-                                   disc.dof_handler,
-                                   *field,
-                                   state);
-          if (state.linfty_norm() != 0.0)
-            return false;
-        }
-      return true;
-    }
-
     // Why an active-set iteration did not settle, for error messages.
     std::string
     unsettled(const ActiveSetIteration::Result &result,
@@ -68,6 +50,7 @@ namespace liftoff
       , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , discretization(comm)
       , active_set(discretization, foundation, timer)
+      , outputs{&time_history, &profile_output, &field_output}
   {}
 
 
@@ -82,18 +65,6 @@ namespace liftoff
                       "static: equilibrium under the loads at tau = 0.");
     prm.leave_subsection();
 
-    prm.enter_subsection("Initial conditions");
-    prm.declare_entry("Displacement",
-                      "0; 0; 0",
-                      Patterns::Anything(),
-                      "w; psi_x; psi_y at tau = 0 as muParser expressions "
-                      "in x, y.");
-    prm.declare_entry("Velocity",
-                      "0; 0; 0",
-                      Patterns::Anything(),
-                      "Velocities of w; psi_x; psi_y at tau = 0, in x, y.");
-    prm.leave_subsection();
-
     prm.enter_subsection("Output");
     prm.declare_entry("Directory",
                       "output",
@@ -104,8 +75,12 @@ namespace liftoff
                       "earlier run's results, unless started with `liftoff "
                       "--overwrite`, which removes them, or `--resume`. Only "
                       "the files liftoff writes are ever touched.");
+    TimeHistory::declare_parameters(prm);
+    ProfileOutput::declare_parameters(prm);
+    FieldOutput::declare_parameters(prm);
     prm.leave_subsection();
 
+    InitialConditions::declare_parameters(prm);
     MindlinPlate::declare_parameters(prm);
     Discretization::declare_parameters(prm);
     PlateMatrices::declare_parameters(prm);
@@ -113,9 +88,6 @@ namespace liftoff
     LoadSet::declare_parameters(prm);
     NewmarkIntegrator::declare_parameters(prm);
     ActiveSetIteration::declare_parameters(prm);
-    FieldOutput::declare_parameters(prm);
-    TimeHistory::declare_parameters(prm);
-    ProfileOutput::declare_parameters(prm);
     Checkpoint::declare_parameters(prm);
   }
 
@@ -127,12 +99,12 @@ namespace liftoff
     analysis = (prm.get("Type") == "static" ? Analysis::static_analysis
                                             : Analysis::dynamic_analysis);
     prm.leave_subsection();
-    prm.enter_subsection("Initial conditions");
-    initial_displacement = prm.get("Displacement");
-    initial_velocity     = prm.get("Velocity");
-    prm.leave_subsection();
+    initial_conditions.parse_parameters(prm);
     prm.enter_subsection("Output");
     output_directory = prm.get("Directory");
+    time_history.parse_parameters(prm);
+    profile_output.parse_parameters(prm);
+    field_output.parse_parameters(prm);
     prm.leave_subsection();
 
     plate.parse_parameters(prm);
@@ -142,21 +114,23 @@ namespace liftoff
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
     active_set.parse_parameters(prm);
-    field_output.parse_parameters(prm);
-    time_history.parse_parameters(prm);
-    profile_output.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
 
-    // Initial conditions must parse before anything runs.
-    initial_fields.clear();
-    for (const auto &[name, text] :
-         {std::make_pair("Displacement", initial_displacement),
-          std::make_pair("Velocity", initial_velocity)})
-      {
-        initial_fields.push_back(parse_expression<2>(
-          std::string("Initial conditions/") + name, text, 3, "x,y", false));
-      }
+    // What the memory estimate of setup() needs to know of the solver.
+    prm.enter_subsection("Linear solver");
+    factor = prm.get("Type") == "cg"
+               ? Discretization::Factor::none
+               : (prm.get("Direct solver package") == "klu"
+                    ? Discretization::Factor::on_rank_0
+                    : Discretization::Factor::distributed);
+    prm.leave_subsection();
+    check_scene();
+  }
 
+
+  void
+  Simulator::check_scene() const
+  {
     if (analysis == Analysis::static_analysis)
       AssertThrow(discretization.has_kinematic_support()
                     || foundation.model
@@ -165,47 +139,10 @@ namespace liftoff
                              "free and Foundation/Model = none has no static "
                              "equilibrium."));
 
-    // Geometry-dependent checks need the mesh; building it writes nothing,
-    // but what it and the solver would allocate is estimated first (the
-    // direct solver's factor dominates a large scene).
-    prm.enter_subsection("Linear solver");
-    const auto factor = prm.get("Type") == "cg"
-                          ? Discretization::Factor::none
-                          : (prm.get("Direct solver package") == "klu"
-                               ? Discretization::Factor::on_rank_0
-                               : Discretization::Factor::distributed);
-    prm.leave_subsection();
-    discretization.check_memory(factor);
-    discretization.setup(plate);
-    if (analysis == Analysis::static_analysis)
-      loads.check_against(discretization, 0.0, 0);
-    else
-      {
-        newmark.check_end_time();
-        loads.check_against(discretization,
-                            newmark.time_step,
-                            newmark.n_steps());
-      }
+    if (analysis == Analysis::dynamic_analysis)
+      newmark.check_end_time();
     time_history.check_against(discretization);
     profile_output.check_against(discretization);
-
-    // Nothing to compute: most likely a load whose Magnitude was left at its
-    // default 0.
-    if (loads.is_empty())
-      AssertThrow(analysis == Analysis::dynamic_analysis
-                    && !is_at_rest(discretization, initial_fields),
-                  ExcMessage(
-                    "The scene has no load (every Loads/.../Magnitude is 0)"
-                    + std::string(analysis == Analysis::dynamic_analysis
-                                    ? " and starts at rest (Initial "
-                                      "conditions are 0)"
-                                    : "")
-                    + ", so its solution is u = 0. Give a load a "
-                      "Magnitude"
-                    + (analysis == Analysis::dynamic_analysis
-                         ? ", or the plate an initial displacement or "
-                           "velocity."
-                         : ".")));
 
     // A shortened run (a try, or a resume to a later end) may skip
     // profiles; say so rather than drop them unnoticed.
@@ -278,9 +215,8 @@ namespace liftoff
     // go last, once the PVD no longer lists them.
     output_folder->remove_summary();
     write_used_parameters();
-    time_history.flush();
-    profile_output.flush();
-    field_output.write_record(output_directory, mpi_communicator);
+    for (Output *output : outputs)
+      output->flush();
     output_folder->remove_fields_after(step);
   }
 
@@ -288,6 +224,38 @@ namespace liftoff
   void
   Simulator::setup()
   {
+    // The direct solver's factor dominates a large scene: what it and the
+    // mesh would allocate is estimated before anything is built.
+    discretization.check_memory(factor);
+    discretization.setup(plate);
+    if (analysis == Analysis::static_analysis)
+      loads.check_against(discretization, 0.0, 0);
+    else
+      loads.check_against(discretization, newmark.time_step, newmark.n_steps());
+
+    // Nothing to compute: most likely a load whose Magnitude was left at its
+    // default 0.
+    if (loads.is_empty())
+      AssertThrow(analysis == Analysis::dynamic_analysis
+                    && !initial_conditions.is_at_rest(discretization),
+                  ExcMessage(
+                    "The scene has no load (every Loads/.../Magnitude is 0)"
+                    + std::string(analysis == Analysis::dynamic_analysis
+                                    ? " and starts at rest (Initial "
+                                      "conditions are 0)"
+                                    : "")
+                    + ", so its solution is u = 0. Give a load a "
+                      "Magnitude"
+                    + (analysis == Analysis::dynamic_analysis
+                         ? ", or the plate an initial displacement or "
+                           "velocity."
+                         : ".")));
+
+    pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
+          << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
+          << discretization.degree() << "), "
+          << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
+          << std::endl;
     {
       TimerOutput::Scope t(timer, "assembly");
       matrices.assemble(discretization, plate);
@@ -295,10 +263,9 @@ namespace liftoff
     TimerOutput::Scope t(timer, "setup");
     foundation.setup(discretization);
     loads.setup(discretization);
-    for (auto *vector : {&u, &v, &a})
+    state.reinit(discretization);
+    for (auto *vector : {&next_load, &rhs, &u_next, &scratch, &scratch_2})
       discretization.reinit_vector(*vector);
-    discretization.reinit_ghosted_vector(ghosted_u);
-    discretization.reinit_ghosted_vector(ghosted_v);
   }
 
 
@@ -309,15 +276,8 @@ namespace liftoff
       return;
     // The initial fields are evaluated at the nodes only now; a nan there
     // (sqrt(x) on x < 0) would otherwise surface as a nan history.
-    set_initial_state();
-    for (const auto &[name, text, state] :
-         {std::make_tuple("Displacement", &initial_displacement, &u),
-          std::make_tuple("Velocity", &initial_velocity, &v)})
-      AssertThrow(is_finite(*state),
-                  ExcMessage(std::string("Initial conditions/") + name + " = <"
-                             + *text
-                             + "> is not a finite number at every node of "
-                               "the plate."));
+    initial_conditions.interpolate(discretization, state.u, state.v);
+    state.ghosted_u = state.u;
 
     if (!newmark.is_conditionally_stable())
       return;
@@ -379,6 +339,19 @@ namespace liftoff
   }
 
 
+  void
+  Simulator::require_finite_state(
+    const std::string                          &what,
+    const std::vector<const LA::MPI::Vector *> &vectors,
+    const std::vector<double>                  &numbers,
+    const LA::MPI::Vector                      &load)
+  {
+    require_finite(state.step, state.tau, what, vectors, numbers, [&]() {
+      return cause_of_non_finite_state(load);
+    });
+  }
+
+
   std::string
   Simulator::cause_of_non_finite_state(const LA::MPI::Vector &load)
   {
@@ -426,12 +399,8 @@ namespace liftoff
                     ExcMessage("--resume reads the checkpoint in "
                                "Output/Directory, which is empty."));
       }
-    pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
-          << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
-          << discretization.degree() << "), "
-          << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
-          << std::endl;
-    // Checks that need the matrices come before the folder is touched.
+    // Checks that need the mesh and the matrices come before the folder is
+    // touched.
     setup();
     check_before_run();
 
@@ -447,25 +416,37 @@ namespace liftoff
     } release{output_folder};
 
     if (start == Start::resume)
-      {
-        // Everything is checked before a file is touched: a refused resume
-        // leaves the output of the earlier run as it was.
-        resume_step =
-          checkpoint.open(output_directory, mpi_communicator, scene);
-        AssertThrow(resume_step <= newmark.n_steps(),
-                    ExcMessage("Cannot resume: the checkpoint is of step "
-                               + std::to_string(resume_step)
-                               + ", beyond Time integration/End time = "
-                               + format_time(newmark.end_time) + " ("
-                               + std::to_string(newmark.n_steps())
-                               + " steps)."));
-        // A killed run may have left temporary files (and checkpoint.new,
-        // which the next checkpoint replaces).
-        output_folder->remove_temporary_files();
-      }
+      resume_step = open_checkpoint();
     has_taken_over_output = (start != Start::resume);
-    time_history.setup(discretization, output_directory);
-    profile_output.setup(discretization, output_directory);
+    for (Output *output : outputs)
+      output->setup(discretization, output_directory);
+    run_analysis();
+  }
+
+
+  unsigned int
+  Simulator::open_checkpoint()
+  {
+    // Everything is checked before a file is touched: a refused resume
+    // leaves the output of the earlier run as it was.
+    const unsigned int step =
+      checkpoint.open(output_directory, mpi_communicator, scene);
+    AssertThrow(step <= newmark.n_steps(),
+                ExcMessage("Cannot resume: the checkpoint is of step "
+                           + std::to_string(step)
+                           + ", beyond Time integration/End time = "
+                           + format_time(newmark.end_time) + " ("
+                           + std::to_string(newmark.n_steps()) + " steps)."));
+    // A killed run may have left temporary files (and checkpoint.new,
+    // which the next checkpoint replaces).
+    output_folder->remove_temporary_files();
+    return step;
+  }
+
+
+  void
+  Simulator::run_analysis()
+  {
     try
       {
         if (analysis == Analysis::static_analysis)
@@ -503,85 +484,36 @@ namespace liftoff
   }
 
 
-  void
-  Simulator::set_initial_state()
-  {
-    LA::MPI::Vector *state[2] = {&u, &v};
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        VectorTools::interpolate(discretization.mapping,
-                                 discretization.dof_handler,
-                                 *initial_fields[k],
-                                 *state[k]);
-        discretization.constraints.distribute(*state[k]);
-      }
-    ghosted_u = u;
-    ghosted_v = v;
-  }
-
-
   EnergyBalance
-  Simulator::energies(const double work) const
+  Simulator::energies() const
   {
-    EnergyBalance e;
-    const double  copies = discretization.n_symmetry_copies();
-    if (time_history.wants_energies())
-      {
-        LA::MPI::Vector product(u);
-        matrices.mass.vmult(product, v);
-        e.kinetic = 0.5 * copies * (v * product);
-        matrices.stiffness.vmult(product, u);
-        e.strain     = 0.5 * copies * (u * product);
-        e.foundation = copies * foundation.energy(ghosted_u);
-      }
-    e.work = work;
-    return e;
+    if (!time_history.wants_energies())
+      return EnergyBalance{0, 0, 0, state.work};
+    return energies_of(matrices,
+                       foundation,
+                       state.u,
+                       state.ghosted_u,
+                       state.v,
+                       discretization.n_symmetry_copies(),
+                       state.work);
   }
 
 
   void
-  Simulator::record_step(const unsigned int                step,
-                         const double                      tau,
-                         const bool                        is_last_step,
-                         const ActiveSetIteration::Result &iteration,
-                         const EnergyBalance              &energy,
-                         const EnergyBalance              &initial)
+  Simulator::record(const ActiveSetIteration::Result &iteration)
   {
     TimerOutput::Scope t(timer, "output");
-    const double       contact = foundation.contact_area_fraction();
-    records.push_back({tau,
-                       iteration.iterations,
-                       iteration.cycle_length,
-                       contact,
-                       time_history.probe_values(ghosted_u),
-                       energy});
-    time_history.record(tau,
-                        records.back().probe_w,
-                        contact,
-                        iteration.iterations,
-                        iteration.cycle_length,
-                        energy,
-                        initial);
-    // A static analysis (no time step) writes its one profile.
-    profile_output.write_if_due(tau,
-                                analysis == Analysis::static_analysis
-                                  ? 0.0
-                                  : newmark.time_step,
-                                ghosted_u);
-    if (writes_files() && field_output.is_due(step, is_last_step))
-      {
-        // The velocity with ghosts only for the files that show it.
-        ghosted_v = v;
-        field_output.write(output_directory,
-                           discretization,
-                           foundation,
-                           ghosted_u,
-                           ghosted_v,
-                           tau,
-                           step);
-      }
+    const bool         is_static = analysis == Analysis::static_analysis;
+    const StepData     step{state,
+                        discretization,
+                        foundation,
+                        iteration,
+                        is_static ? 0.0 : newmark.time_step,
+                        is_static || state.step == newmark.n_steps()};
+    for (Output *output : outputs)
+      output->execute(step);
     if (!has_taken_over_output)
-      take_over_output(step);
+      take_over_output(state.step);
   }
 
 
@@ -593,14 +525,11 @@ namespace liftoff
     foundation.activate_all();
     active_set.set_base_matrix(matrices.stiffness);
 
-    LA::MPI::Vector load;
-    discretization.reinit_vector(load);
+    LA::MPI::Vector &load = state.load;
     assemble_loads(0, 0.0, load);
 
-    const auto result = active_set.solve(load, u, ghosted_u);
-    require_finite(0, 0.0, "the static solution", {&u}, {}, [&]() {
-      return cause_of_non_finite_state(load);
-    });
+    const auto result = active_set.solve(load, state.u, state.ghosted_u);
+    require_finite_state("the static solution", {&state.u}, {}, load);
     // The one "step" of a static analysis is done: a stop request ends the
     // run here, like a dynamic run after a step, with no result written.
     if (const int signal = StopSignal::received(mpi_communicator))
@@ -621,7 +550,7 @@ namespace liftoff
     // A very soft foundation under a plate with free edges leaves the
     // rigid-body motion held by Gamma alone: the system is regular, its
     // residual small, and its answer still round-off. Measure, don't trust.
-    const double change = active_set.refinement_change(u, load);
+    const double change = active_set.refinement_change(state.u, load);
     AssertThrow(change <= 1e-3,
                 ExcMessage("Static analysis: the solution is not accurate to "
                            "0.1 %: one step of iterative refinement changes "
@@ -633,16 +562,14 @@ namespace liftoff
                              "(Plate/Thickness ratio) with free edges; use "
                              "a stiffer foundation, support an edge or run a "
                              "dynamic analysis."));
-    const EnergyBalance none;
-    EnergyBalance       e = energies(0.0);
     // Loads applied proportionally: the response is positively homogeneous
     // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
-    // lift-off, and the balance column checks it.
-    e.work = 0.5 * discretization.n_symmetry_copies() * (load * u);
-    require_finite(0, 0.0, "an energy", {}, e.values(), [&]() {
-      return cause_of_non_finite_state(load);
-    });
-    record_step(0, 0.0, true, result, e, none);
+    // lift-off, and the balance column checks it against the state at
+    // rest.
+    state.work = 0.5 * discretization.n_symmetry_copies() * (load * state.u);
+    state.energies = energies();
+    require_finite_state("an energy", {}, state.energies.values(), load);
+    record(result);
     pcout << "static: " << result.iterations << " active-set iterations, "
           << "contact fraction " << foundation.contact_area_fraction()
           << std::endl;
@@ -652,199 +579,211 @@ namespace liftoff
   void
   Simulator::run_dynamic()
   {
-    const double       dt      = newmark.time_step;
-    const unsigned int n_steps = newmark.n_steps();
-    const double       copies  = discretization.n_symmetry_copies();
-
-    LA::MPI::Vector load, next_load, rhs, history_term, u_new, balance,
-      increment;
-    for (auto *vector :
-         {&load, &next_load, &rhs, &history_term, &u_new, &balance, &increment})
-      discretization.reinit_vector(*vector);
-    // Generalized-alpha weighs in the previous state's force balance.
-    const double previous_weight = newmark.previous_state_weight();
-
-    double work = 0;
     if (writes_files())
       active_set.prepare_for_checkpoints();
-
     if (resume_step == 0)
+      start_from_initial_state();
+    else
+      resume_from_checkpoint();
+
+    for (unsigned int step = state.step + 1; step <= newmark.n_steps(); ++step)
       {
-        // Initial acceleration from M a0 = F(0) - (K + K_f(u0)) u0, with
-        // the contact set of u0.
-        // check_before_run() set the initial state.
-        assemble_loads(0, 0.0, load);
-        TimerOutput::Scope t(timer, "initial acceleration");
-        foundation.update_contact_status(ghosted_u);
-        force_balance(load, balance);
-        matrices.solve_with_mass(a, balance);
-        discretization.constraints.distribute(a);
-        require_finite(0, 0.0, "the initial acceleration", {&a}, {}, [&]() {
-          return cause_of_non_finite_state(load);
-        });
-        // The first iterate is the bilateral problem.
-        foundation.activate_all();
-      }
-    {
-      // The effective matrix without the foundation is needed only to
-      // build the system matrix.
-      LA::MPI::SparseMatrix base;
-      discretization.reinit_matrix(base);
-      base.copy_from(matrices.stiffness);
-      base.add(newmark.mass_factor(), matrices.mass);
-      if (resume_step == 0)
-        active_set.set_base_matrix(base);
-      else
-        read_checkpoint(base, load, balance, work);
-    }
-    if (resume_step == 0)
-      {
-        const EnergyBalance e = energies(0.0);
-        require_finite(0, 0.0, "an energy", {}, e.values(), [&]() {
-          return cause_of_non_finite_state(load);
-        });
-        record_step(0, 0.0, n_steps == 0, {}, e, e);
-      }
-    const EnergyBalance initial = records.front().energies;
-
-    for (unsigned int step = resume_step + 1; step <= n_steps; ++step)
-      {
-        const double tau = step * dt;
-        {
-          TimerOutput::Scope t(timer, "right hand side");
-          assemble_loads(step, tau, next_load);
-          newmark.history_term(u, v, a, history_term);
-          matrices.mass.vmult(rhs, history_term);
-          rhs += next_load;
-          if (previous_weight != 0)
-            rhs.add(previous_weight, balance);
-        }
-        newmark.predict(u, v, a, u_new);
-        // The first step starts from the bilateral set: the predictor has
-        // no motion yet to extrapolate.
-        const auto result = active_set.solve(rhs, u_new, ghosted_u, step > 1);
-        // Before the convergence test: a nan makes the contact set wander.
-        require_finite(step, tau, "the solution", {&u_new}, {}, [&]() {
-          return cause_of_non_finite_state(next_load);
-        });
-        AssertThrow(result.converged,
-                    ExcMessage("The active set "
-                               + unsettled(result, active_set.max_iterations)
-                               + " at step " + std::to_string(step)
-                               + " (tau = " + format_time(tau)
-                               + (result.cycle_length > 0
-                                    ? "); Active set/Cycle rule = stop asks "
-                                      "for this error; union resolves it."
-                                    : "); raise Active set/Maximum iterations "
-                                      "or reduce Time integration/Time "
-                                      "step.")));
-
-        // Trapezoidal work of the loads, exact for Newmark's average
-        // acceleration rule on linear problems.
-        increment = u_new;
-        increment -= u;
-        load += next_load;
-        work += 0.5 * copies * (increment * load);
-        load = next_load;
-
-        newmark.advance(u_new, u, v, a);
-        if (previous_weight != 0)
-          {
-            TimerOutput::Scope t(timer, "right hand side");
-            force_balance(load, balance);
-          }
-
-        const EnergyBalance e = energies(work);
-        require_finite(step,
-                       tau,
-                       "the velocity, acceleration or an energy",
-                       {&v, &a},
-                       e.values(),
-                       [&]() { return cause_of_non_finite_state(load); });
-        record_step(step, tau, step == n_steps, result, e, initial);
-
+        assemble_right_hand_side(step);
+        const auto iteration = solve_contact_problem(step);
+        advance(step);
+        record(iteration);
         const int signal = StopSignal::received(mpi_communicator);
-        if (writes_files()
-            && (signal != 0
-                || checkpoint.is_due(step, step == n_steps, mpi_communicator)))
-          write_checkpoint(step, load, balance, work);
-        if (signal != 0)
-          stop_for_signal(signal,
-                          "after step " + std::to_string(step)
-                            + " (tau = " + format_time(tau)
-                            + "); the files written so far are complete"
-                            + (writes_files()
-                                 ? " and `liftoff --resume` continues from "
-                                   "the checkpoint of this step."
-                                 : "."));
+        write_checkpoint_if_due(signal != 0);
+        stop_if_signalled(signal);
       }
   }
 
 
   void
-  Simulator::write_checkpoint(const unsigned int     step,
-                              const LA::MPI::Vector &load,
-                              const LA::MPI::Vector &balance,
-                              const double           work)
+  Simulator::build_base_matrix(LA::MPI::SparseMatrix &base) const
   {
+    discretization.reinit_matrix(base);
+    base.copy_from(matrices.stiffness);
+    base.add(newmark.mass_factor(), matrices.mass);
+  }
+
+
+  void
+  Simulator::start_from_initial_state()
+  {
+    // check_before_run() set the initial state. The initial acceleration
+    // solves M a0 = F(0) - (K + K_f(u0)) u0 with the contact set of u0.
+    assemble_loads(0, 0.0, state.load);
+    {
+      TimerOutput::Scope t(timer, "initial acceleration");
+      foundation.update_contact_status(state.ghosted_u);
+      force_balance(state.load, state.balance);
+      matrices.solve_with_mass(state.a, state.balance);
+      discretization.constraints.distribute(state.a);
+      require_finite_state("the initial acceleration",
+                           {&state.a},
+                           {},
+                           state.load);
+    }
+    // The first iterate is the bilateral problem.
+    foundation.activate_all();
+    {
+      // The effective matrix without the foundation is needed only to
+      // build the system matrix.
+      LA::MPI::SparseMatrix base;
+      build_base_matrix(base);
+      active_set.set_base_matrix(base);
+    }
+    state.energies         = energies();
+    state.initial_energies = state.energies;
+    require_finite_state("an energy", {}, state.energies.values(), state.load);
+    record({});
+  }
+
+
+  void
+  Simulator::resume_from_checkpoint()
+  {
+    TimerOutput::Scope    t(timer, "checkpoint");
+    LA::MPI::SparseMatrix base;
+    build_base_matrix(base);
+    checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
+      serialize(archive, Checkpoint::format, &base);
+    });
+    AssertThrow(state.step == resume_step
+                  && time_history.rows().size() == resume_step + 1,
+                ExcMessage(
+                  "The checkpoint of step " + std::to_string(resume_step)
+                  + " holds step " + std::to_string(state.step) + " and "
+                  + std::to_string(time_history.rows().size()) + " rows."));
+    pcout << "resumed after step " << resume_step << std::endl;
+  }
+
+
+  void
+  Simulator::assemble_right_hand_side(const unsigned int step)
+  {
+    assemble_loads(step, step * newmark.time_step, next_load);
+    TimerOutput::Scope t(timer, "right hand side");
+    newmark.right_hand_side(matrices.mass,
+                            state.u,
+                            state.v,
+                            state.a,
+                            next_load,
+                            state.balance,
+                            scratch,
+                            rhs);
+  }
+
+
+  ActiveSetIteration::Result
+  Simulator::solve_contact_problem(const unsigned int step)
+  {
+    newmark.predict(state.u, state.v, state.a, u_next);
+    // The first step starts from the bilateral set: the predictor has no
+    // motion yet to extrapolate.
+    const auto result =
+      active_set.solve(rhs, u_next, state.ghosted_u, step > 1);
+    // Before the convergence test: a nan makes the contact set wander.
+    const double tau = step * newmark.time_step;
+    require_finite(step, tau, "the solution", {&u_next}, {}, [&]() {
+      return cause_of_non_finite_state(next_load);
+    });
+    AssertThrow(result.converged,
+                ExcMessage("The active set "
+                           + unsettled(result, active_set.max_iterations)
+                           + " at step " + std::to_string(step)
+                           + " (tau = " + format_time(tau)
+                           + (result.cycle_length > 0
+                                ? "); Active set/Cycle rule = stop asks "
+                                  "for this error; union resolves it."
+                                : "); raise Active set/Maximum iterations "
+                                  "or reduce Time integration/Time "
+                                  "step.")));
+    return result;
+  }
+
+
+  void
+  Simulator::advance(const unsigned int step)
+  {
+    state.work += work_of_step(state.u,
+                               u_next,
+                               state.load,
+                               next_load,
+                               discretization.n_symmetry_copies(),
+                               scratch,
+                               scratch_2);
+    state.load = next_load;
+    newmark.advance(u_next, state.u, state.v, state.a);
+    state.step = step;
+    state.tau  = step * newmark.time_step;
+    if (newmark.needs_force_balance())
+      {
+        TimerOutput::Scope t(timer, "right hand side");
+        force_balance(state.load, state.balance);
+      }
+    state.energies = energies();
+    require_finite_state("the velocity, acceleration or an energy",
+                         {&state.v, &state.a},
+                         state.energies.values(),
+                         state.load);
+  }
+
+
+  void
+  Simulator::write_checkpoint_if_due(const bool is_stopping)
+  {
+    if (!writes_files()
+        || !(is_stopping
+             || checkpoint.is_due(state.step,
+                                  state.step == newmark.n_steps(),
+                                  mpi_communicator)))
+      return;
     TimerOutput::Scope t(timer, "checkpoint");
-    // The time loop's whole state, bit for bit: the next step's right-hand
-    // side needs u, v, a (and the load and force balance of this step), its
-    // active-set iteration starts from the contact status and the matrix
-    // and factor as they are. The rows written so far go with them.
     checkpoint.write(output_directory,
                      mpi_communicator,
-                     step,
+                     state.step,
                      scene,
                      [&](OutputArchive &archive) {
-                       archive << work << records;
-                       for (const LA::MPI::Vector *vector :
-                            std::initializer_list<const LA::MPI::Vector *>{
-                              &u, &v, &a, &load, &balance})
-                         save_vector(archive, *vector);
-                       foundation.save(archive);
-                       active_set.save(archive);
-                       field_output.save(archive);
-                       profile_output.save(archive);
+                       serialize(archive, Checkpoint::format);
                      });
   }
 
 
   void
-  Simulator::read_checkpoint(const LA::MPI::SparseMatrix &base,
-                             LA::MPI::Vector             &load,
-                             LA::MPI::Vector             &balance,
-                             double                      &work)
+  Simulator::stop_if_signalled(const int signal)
   {
-    TimerOutput::Scope t(timer, "checkpoint");
-    checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
-      archive >> work >> records;
-      for (auto *vector : {&u, &v, &a, &load, &balance})
-        load_vector(archive, *vector);
-      foundation.load(archive);
-      active_set.load(archive, base);
-      field_output.load(archive);
-      profile_output.load(archive);
-    });
-    AssertThrow(records.size() == resume_step + 1,
-                ExcMessage("The checkpoint of step "
-                           + std::to_string(resume_step) + " holds "
-                           + std::to_string(records.size()) + " steps."));
-    ghosted_u = u;
-    ghosted_v = v;
-    // history.csv is a function of the records: its rows are recorded again
-    // as they were, and those of steps after the checkpoint are gone once
-    // the file is rewritten (take_over_output()).
-    time_history.hold();
-    for (const auto &r : records)
-      time_history.record(r.tau,
-                          r.probe_w,
-                          r.contact_fraction,
-                          r.iterations,
-                          r.cycle_length,
-                          r.energies,
-                          records.front().energies);
-    pcout << "resumed after step " << resume_step << std::endl;
+    if (signal != 0)
+      stop_for_signal(signal,
+                      "after step " + std::to_string(state.step)
+                        + " (tau = " + format_time(state.tau)
+                        + "); the files written so far are complete"
+                        + (writes_files() ? " and `liftoff --resume` continues "
+                                            "from the checkpoint of this step."
+                                          : "."));
+  }
+
+
+  template <class Archive>
+  void
+  Simulator::serialize(Archive                     &archive,
+                       const unsigned int           version,
+                       const LA::MPI::SparseMatrix *base)
+  {
+    // The time loop's whole state, bit for bit: the next step's right-hand
+    // side needs the state, its active-set iteration starts from the
+    // contact status and the matrix and factor as they are; the outputs
+    // keep what they have written.
+    archive &state;
+    transfer(archive, foundation);
+    if constexpr (Archive::is_loading::value)
+      active_set.load(archive, *base);
+    else
+      active_set.save(archive);
+    for (Output *output : outputs)
+      transfer(archive, *output);
+    (void)version;
   }
 
 
@@ -864,8 +803,8 @@ namespace liftoff
   Simulator::force_balance(const LA::MPI::Vector &load,
                            LA::MPI::Vector       &balance) const
   {
-    matrices.stiffness.vmult(balance, u);
-    foundation.add_reaction(ghosted_u, balance);
+    matrices.stiffness.vmult(balance, state.u);
+    foundation.add_reaction(state.ghosted_u, balance);
     balance.sadd(-1.0, 1.0, load);
   }
 
@@ -873,65 +812,56 @@ namespace liftoff
   void
   Simulator::write_summary(const std::string &status) const
   {
-    unsigned int total = 0, largest = 0, n = 0, cycles = 0;
-    for (const auto &r : records)
-      if (r.iterations > 0)
-        {
-          total += r.iterations;
-          largest = std::max(largest, r.iterations);
-          ++n;
-          cycles += (r.cycle_length > 0);
-        }
-    const LinearSolver            &solver = active_set.linear_solver();
+    const auto         &rows       = time_history.rows();
+    const auto          iterations = time_history.iteration_statistics();
+    const LinearSolver &solver     = active_set.linear_solver();
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
     const double peak_memory_mb =
       Utilities::MPI::max(memory.VmHWM / 1024.0, mpi_communicator);
 
-    std::ostringstream text;
-    text << "status: " << status << '\n';
+    RunSummary summary;
+    summary.add("status", status);
     if (resume_step > 0)
-      text << "resumed after step: " << resume_step
-           << " (solver counts and times below are since then)\n";
-    text << "analysis: "
-         << (analysis == Analysis::static_analysis ? "static" : "dynamic")
-         << '\n'
-         << "ranks: " << Utilities::MPI::n_mpi_processes(mpi_communicator)
-         << '\n'
-         << "cells: " << discretization.triangulation.n_global_active_cells()
-         << '\n'
-         << "degree: " << discretization.degree() << '\n'
-         << "dofs: " << discretization.dof_handler.n_dofs() << '\n'
-         << "steps: " << (records.empty() ? 0 : records.size() - 1) << '\n'
-         << "active-set iterations per step, mean: "
-         << (n > 0 ? double(total) / n : 0.0) << '\n'
-         << "active-set iterations per step, max: " << largest << '\n'
-         << "steps whose active set cycled: " << cycles << '\n'
-         << "factorisations: " << solver.n_preparations << '\n'
-         << "factor: " << solver.factor_name() << '\n'
-         << "substitutions: " << solver.n_substitutions << '\n'
-         << "time per substitution [s]: "
-         << (solver.n_substitutions > 0
-               ? solver.substitution_timer.wall_time() / solver.n_substitutions
-               : 0.0)
-         << '\n'
-         << "CG iterations: " << solver.n_cg_iterations << '\n'
-         << "peak memory per rank, max [MB]: " << peak_memory_mb << '\n';
+      summary.add("resumed after step", double(resume_step));
+    summary.add("analysis",
+                analysis == Analysis::static_analysis ? "static" : "dynamic");
+    for (const auto &[key, value] :
+         {std::make_pair(
+            "ranks", double(Utilities::MPI::n_mpi_processes(mpi_communicator))),
+          std::make_pair(
+            "cells",
+            double(discretization.triangulation.n_global_active_cells())),
+          std::make_pair("degree", double(discretization.degree())),
+          std::make_pair("dofs", double(discretization.dof_handler.n_dofs())),
+          std::make_pair("steps", double(rows.empty() ? 0 : rows.size() - 1)),
+          std::make_pair("active-set iterations per step, mean",
+                         iterations.mean),
+          std::make_pair("active-set iterations per step, max",
+                         double(iterations.max)),
+          std::make_pair("steps whose active set cycled",
+                         double(iterations.n_cycled)),
+          std::make_pair("factorisations", double(solver.n_preparations))})
+      summary.add(key, value);
+    summary.add("factor", solver.factor_name());
+    summary.add("substitutions", double(solver.n_substitutions));
+    summary.add("time per substitution [s]",
+                solver.n_substitutions > 0
+                  ? solver.substitution_timer.wall_time()
+                      / solver.n_substitutions
+                  : 0.0);
+    summary.add("CG iterations", double(solver.n_cg_iterations));
+    summary.add("peak memory per rank, max [MB]", peak_memory_mb);
+    summary.add("wall time [s]", wall_clock.wall_time());
+    RunSummary::Section sections;
+    for (const auto &[section, seconds] :
+         timer.get_summary_data(TimerOutput::OutputData::total_wall_time))
+      sections.emplace_back(section, seconds);
+    summary.add("wall time by section [s]", sections);
 
-    const auto timings =
-      timer.get_summary_data(TimerOutput::OutputData::total_wall_time);
-    text << "wall time [s]: " << wall_clock.wall_time() << '\n'
-         << "wall time by section [s]:\n";
-    for (const auto &[section, seconds] : timings)
-      text << "  " << section << ": " << seconds << '\n';
-
-    pcout << text.str();
+    pcout << summary.text();
     if (writes_files())
-      collective_attempt(mpi_communicator, "", [&]() {
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          write_file_atomically(output_directory + "/summary.txt",
-                                [&](std::ostream &out) { out << text.str(); });
-      });
+      summary.write(output_directory, mpi_communicator);
   }
 
 
@@ -947,21 +877,22 @@ namespace liftoff
   {
     const PointFunctional probe(discretization,
                                 discretization.to_modelled_part(p));
-    return Utilities::MPI::sum(probe.local_value(ghosted_u), mpi_communicator);
+    return Utilities::MPI::sum(probe.local_value(state.ghosted_u),
+                               mpi_communicator);
   }
 
 
-  const std::vector<Simulator::StepRecord> &
+  const std::vector<TimeHistory::Row> &
   Simulator::history() const
   {
-    return records;
+    return time_history.rows();
   }
 
 
   const LA::MPI::Vector &
   Simulator::solution() const
   {
-    return ghosted_u;
+    return state.ghosted_u;
   }
 
 

@@ -1,4 +1,6 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values_extractors.h>
 
 #include <liftoff/time_history.h>
 
@@ -26,7 +28,6 @@ namespace liftoff
   void
   TimeHistory::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Output");
     prm.declare_entry(
       "Probe points",
       "0, 0",
@@ -42,17 +43,14 @@ namespace liftoff
                       "Write kinetic, strain and foundation energy, the work "
                       "of the loads and the balance error to history.csv "
                       "(costs two matrix-vector products per step).");
-    prm.leave_subsection();
   }
 
 
   void
   TimeHistory::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Output");
     probe_points   = parse_points(prm.get("Probe points"));
     write_energies = prm.get_bool("Write energies");
-    prm.leave_subsection();
   }
 
 
@@ -69,30 +67,6 @@ namespace liftoff
   }
 
 
-  void
-  TimeHistory::setup(const Discretization &disc, const std::string &directory)
-  {
-    discretization = &disc;
-    probes.clear();
-    for (const auto &p : probe_points)
-      probes.emplace_back(disc, disc.to_modelled_part(p));
-
-    // No directory: keep the values in memory only (tests). The file
-    // appears with the first rows.
-    file.open(directory.empty() ? "" : directory + "/history.csv",
-              1.0,
-              disc.mpi_communicator);
-    std::ostream &out = file.stream();
-    out << "tau";
-    for (const auto &p : probe_points)
-      out << ",w(" << p[0] << ";" << p[1] << ")";
-    out << ",contact_fraction,active_set_iterations,active_set_cycle";
-    if (write_energies)
-      out << ",kinetic,strain,foundation,work,balance_error";
-    out << '\n';
-  }
-
-
   bool
   TimeHistory::wants_energies() const
   {
@@ -100,37 +74,89 @@ namespace liftoff
   }
 
 
-  std::vector<double>
-  TimeHistory::probe_values(const LA::MPI::Vector &u) const
+  void
+  TimeHistory::setup(const Discretization &disc, const std::string &directory)
   {
-    std::vector<double> values;
-    for (const auto &probe : probes)
-      values.push_back(probe.local_value(u));
-    Utilities::MPI::sum(values, discretization->mpi_communicator, values);
-    return values;
+    discretization = &disc;
+    probes.clear();
+    for (const auto &p : probe_points)
+      probes.emplace_back(disc, disc.to_modelled_part(p));
+    w_dofs = DoFTools::extract_dofs(
+      disc.dof_handler, disc.fe->component_mask(FEValuesExtractors::Scalar(0)));
+    history.clear();
+
+    // No directory: keep the rows in memory only (tests). The file
+    // appears with the first rows.
+    file.open(directory.empty() ? "" : directory + "/history.csv",
+              1.0,
+              disc.mpi_communicator);
+    write_header();
   }
 
 
   void
-  TimeHistory::record(const double               tau,
-                      const std::vector<double> &w,
-                      const double               contact_fraction,
-                      const unsigned int         iterations,
-                      const unsigned int         cycle_length,
-                      const EnergyBalance       &energies,
-                      const EnergyBalance       &initial)
+  TimeHistory::write_header()
   {
     std::ostream &out = file.stream();
-    out << std::setprecision(12) << tau;
-    for (const double value : w)
-      out << ',' << value;
-    out << ',' << contact_fraction << ',' << iterations << ',' << cycle_length;
+    out << "tau";
+    for (const auto &p : probe_points)
+      out << ",w(" << p[0] << ";" << p[1] << ")";
+    out << ",contact_fraction,max_uplift,active_set_iterations,"
+           "active_set_cycle";
     if (write_energies)
-      out << ',' << energies.kinetic << ',' << energies.strain << ','
-          << energies.foundation << ',' << energies.work << ','
-          << energies.error(initial);
+      out << ",kinetic,strain,foundation,work,balance_error";
     out << '\n';
+  }
+
+
+  TimeHistory::Row
+  TimeHistory::row_of(const StepData &step) const
+  {
+    const MPI_Comm         comm = discretization->mpi_communicator;
+    const LA::MPI::Vector &u    = step.state.ghosted_u;
+    Row                    row;
+    row.tau              = step.state.tau;
+    row.iterations       = step.iteration.iterations;
+    row.cycle_length     = step.iteration.cycle_length;
+    row.contact_fraction = step.foundation.contact_area_fraction();
+    for (const auto &probe : probes)
+      row.probe_w.push_back(probe.local_value(u));
+    Utilities::MPI::sum(row.probe_w, comm, row.probe_w);
+    double uplift = 0;
+    for (const auto i : w_dofs)
+      uplift = std::max(uplift, -u(i));
+    row.max_uplift    = Utilities::MPI::max(uplift, comm);
+    row.energies      = step.state.energies;
+    row.balance_error = row.energies.error(step.state.initial_energies);
+    return row;
+  }
+
+
+  void
+  TimeHistory::execute(const StepData &step)
+  {
+    history.push_back(row_of(step));
+    write_row(history.back());
     file.write_if_due();
+  }
+
+
+  void
+  TimeHistory::write_row(const Row &row)
+  {
+    std::ostream &out = file.stream();
+    out << std::setprecision(12) << row.tau;
+    for (const double value : row.probe_w)
+      out << ',' << value;
+    out << ',' << row.contact_fraction << ',' << row.max_uplift << ','
+        << row.iterations << ',' << row.cycle_length;
+    if (write_energies)
+      {
+        const EnergyBalance &e = row.energies;
+        out << ',' << e.kinetic << ',' << e.strain << ',' << e.foundation << ','
+            << e.work << ',' << row.balance_error;
+      }
+    out << '\n';
   }
 
 
@@ -142,8 +168,46 @@ namespace liftoff
 
 
   void
-  TimeHistory::hold()
+  TimeHistory::save(OutputArchive &archive) const
   {
+    archive << history;
+  }
+
+
+  void
+  TimeHistory::load(InputArchive &archive)
+  {
+    // history.csv is a function of the rows: they are written again as
+    // they were, and those of steps after the checkpoint are gone once the
+    // file is rewritten.
+    archive >> history;
     file.hold();
+    for (const Row &row : history)
+      write_row(row);
+  }
+
+
+  TimeHistory::IterationStatistics
+  TimeHistory::iteration_statistics() const
+  {
+    IterationStatistics statistics;
+    unsigned int        total = 0, n = 0;
+    for (const Row &row : history)
+      if (row.iterations > 0)
+        {
+          total += row.iterations;
+          statistics.max = std::max(statistics.max, row.iterations);
+          ++n;
+          statistics.n_cycled += (row.cycle_length > 0);
+        }
+    statistics.mean = (n > 0 ? double(total) / n : 0.0);
+    return statistics;
+  }
+
+
+  const std::vector<TimeHistory::Row> &
+  TimeHistory::rows() const
+  {
+    return history;
   }
 } // namespace liftoff

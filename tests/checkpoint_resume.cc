@@ -45,8 +45,8 @@ end
 
   /// Values of the two records that are not identical.
   unsigned int
-  n_differing_values(const Simulator::StepRecord &a,
-                     const Simulator::StepRecord &b)
+  n_differing_values(const liftoff::TimeHistory::Row &a,
+                     const liftoff::TimeHistory::Row &b)
   {
     unsigned int n = (a.tau != b.tau) + (a.iterations != b.iterations)
                      + (a.contact_fraction != b.contact_fraction)

@@ -74,7 +74,7 @@ done <<< "$places"
 fingerprint out > after.txt
 cmp -s before.txt after.txt; check $? "the folder is as the run left it"
 
-sed -i '1s/format 2/format 1/' out/checkpoint/checkpoint.txt
+sed -i '1s/format [0-9]*/format 1/' out/checkpoint/checkpoint.txt
 timeout -k 5 120 "$liftoff" --resume resume.prm > stdout.txt 2>&1
 status=$?
 [ "$status" -eq 1 ] && grep -q 'is of checkpoint format 1' stdout.txt

@@ -29,6 +29,30 @@ namespace liftoff
   void
   load_vector(InputArchive &archive, LA::MPI::Vector &vector);
 
+  /// save_vector() or load_vector(), as the archive goes: one list of items
+  /// in a serialize() serves both directions.
+  template <class Archive>
+  void
+  serialize_entries(Archive &archive, LA::MPI::Vector &vector)
+  {
+    if constexpr (Archive::is_saving::value)
+      save_vector(archive, vector);
+    else
+      load_vector(archive, vector);
+  }
+
+  /// part.save(archive) or part.load(archive), as the archive goes, for
+  /// the parts whose loading checks what it reads.
+  template <class Archive, class Part>
+  void
+  transfer(Archive &archive, Part &part)
+  {
+    if constexpr (Archive::is_saving::value)
+      part.save(archive);
+    else
+      part.load(archive);
+  }
+
   /// The values of this rank's rows of a matrix, bit for bit, and back;
   /// setting them requires the same sparsity pattern and row distribution.
   std::vector<double>
@@ -58,6 +82,11 @@ namespace liftoff
   class Checkpoint
   {
   public:
+    /// The layout of the archives this code writes and reads: 3 since the
+    /// outputs keep their own records (a PlateState, the foundation, the
+    /// active set, then each output).
+    static constexpr unsigned int format = 3;
+
     static void
     declare_parameters(ParameterHandler &prm);
     void

@@ -4,6 +4,7 @@
 
 #include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
+#include <liftoff/output.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 
 #include <string>
@@ -15,14 +16,15 @@ namespace liftoff
   using namespace dealii;
 
   /**
-   * Fields for ParaView: w, psi_x, psi_y, the velocity of w, the foundation
+   * Fields for ParaView: w, psi_x, psi_y, their velocities, the foundation
    * pressure and the contact status (fraction of each cell's Gauss points in
    * contact), as VTU (plus PVTU under MPI) every k steps and a PVD record
    * that is rewritten after every file so that it is always complete.
    */
-  class FieldOutput
+  class FieldOutput : public Output
   {
   public:
+    /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -47,15 +49,28 @@ namespace liftoff
     void
     write_record(const std::string &directory, const MPI_Comm comm) const;
 
-    /// The records of the PVD file; after load(), write_record() rewrites
-    /// it with them.
     void
-    save(OutputArchive &archive) const;
+    setup(const Discretization &discretization,
+          const std::string    &directory) override;
+    /// write() when the step is due and the run writes files.
     void
-    load(InputArchive &archive);
+    execute(const StepData &step) override;
+    /// write_record().
+    void
+    flush() override;
+    /// The records of the PVD file; after load(), flush() rewrites it
+    /// with them.
+    void
+    save(OutputArchive &archive) const override;
+    void
+    load(InputArchive &archive) override;
 
   private:
     unsigned int                                interval = 10;
     std::vector<std::pair<double, std::string>> records;
+    std::string                                 directory;
+    const Discretization                       *discretization = nullptr;
+    /// The velocity with ghosts, filled only for the steps written.
+    LA::MPI::Vector ghosted_velocity;
   };
 } // namespace liftoff

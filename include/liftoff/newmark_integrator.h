@@ -74,6 +74,25 @@ namespace liftoff
                  const LA::MPI::Vector &a,
                  LA::MPI::Vector       &h) const;
 
+    /// Whether right_hand_side() needs the previous state's force balance
+    /// F_n - f(u_n) (generalized-alpha); Newmark does not.
+    bool
+    needs_force_balance() const;
+
+    /// The right-hand side of a step from (u_n, v_n, a_n):
+    ///   F_{n+1} + M h_n + previous_state_weight() (F_n - f(u_n)),
+    /// `balance` = F_n - f(u_n) being read only if needs_force_balance().
+    /// `h` is scratch of the same layout.
+    void
+    right_hand_side(const LA::MPI::SparseMatrix &mass,
+                    const LA::MPI::Vector       &u,
+                    const LA::MPI::Vector       &v,
+                    const LA::MPI::Vector       &a,
+                    const LA::MPI::Vector       &next_load,
+                    const LA::MPI::Vector       &balance,
+                    LA::MPI::Vector             &h,
+                    LA::MPI::Vector             &rhs) const;
+
     /// u_n + dt v_n + dt^2/2 a_n, u_{n+1} if the acceleration stayed a_n:
     /// the initial guess for an iterative solve of the step.
     void

@@ -4,6 +4,7 @@
 
 #include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
+#include <liftoff/output.h>
 #include <liftoff/output_files.h>
 #include <liftoff/point_functional.h>
 
@@ -20,9 +21,10 @@ namespace liftoff
    * in one long-format CSV (tau, s, x, y, w) that plots grouped by tau.
    * Each requested time is written at the step nearest to it.
    */
-  class ProfileOutput
+  class ProfileOutput : public Output
   {
   public:
+    /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -37,23 +39,24 @@ namespace liftoff
     times_not_reached(const double end_time, const double dt) const;
 
     void
-    setup(const Discretization &discretization, const std::string &directory);
+    setup(const Discretization &discretization,
+          const std::string    &directory) override;
 
-    /// Write the profiles requested for times within dt/2 of tau; with
-    /// dt = 0 (a static analysis) write one profile unconditionally.
+    /// Write the profiles requested for times within dt/2 of tau; in a
+    /// static analysis (time step 0) write one profile unconditionally.
     void
-    write_if_due(const double tau, const double dt, const LA::MPI::Vector &u);
+    execute(const StepData &step) override;
 
     /// The profiles written so far and which times they were for; after
     /// load(), profiles.csv is left as it is until the next flush().
     void
-    save(OutputArchive &archive) const;
+    save(OutputArchive &archive) const override;
     void
-    load(InputArchive &archive);
+    load(InputArchive &archive) override;
 
     /// Write profiles.csv now (collective; nothing without profiles).
     void
-    flush();
+    flush() override;
 
   private:
     Point<2>                     start, end;

@@ -9,11 +9,14 @@
 #include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
 #include <liftoff/field_output.h>
+#include <liftoff/initial_conditions.h>
 #include <liftoff/load_set.h>
 #include <liftoff/mindlin_plate.h>
 #include <liftoff/newmark_integrator.h>
+#include <liftoff/output.h>
 #include <liftoff/output_directory.h>
 #include <liftoff/plate_matrices.h>
+#include <liftoff/plate_state.h>
 #include <liftoff/profile_output.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 #include <liftoff/time_history.h>
@@ -37,26 +40,6 @@ namespace liftoff
   class Simulator
   {
   public:
-    /// One row of the time history, kept in memory for tests and summaries.
-    struct StepRecord
-    {
-      double       tau;
-      unsigned int iterations;
-      /// Length of the active-set cycle resolved by the cycle rule, or 0.
-      unsigned int        cycle_length;
-      double              contact_fraction;
-      std::vector<double> probe_w;
-      EnergyBalance       energies;
-
-      template <class Archive>
-      void
-      serialize(Archive &archive, const unsigned int)
-      {
-        archive &tau &iterations &cycle_length &contact_fraction &probe_w
-          &energies;
-      }
-    };
-
     /// How a run treats its output directory. A run owns it while it runs
     /// (OutputDirectory); `fresh` refuses a directory holding an earlier
     /// run's results, `overwrite` removes them first, `resume` continues
@@ -73,13 +56,14 @@ namespace liftoff
 
     static void
     declare_parameters(ParameterHandler &prm);
-    /// Read and check everything; throws with a message naming the
-    /// offending parameter. Writes nothing.
+    /// Read and check everything that needs no mesh; throws with a message
+    /// naming the offending parameter. Builds and writes nothing, so it
+    /// may be called again with other parameters before run().
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// Run the scene, started as `start` says. `prm` is recorded with the
-    /// results and compared with the checkpoint's scene.
+    /// Build the scene and run it, started as `start` says. `prm` is
+    /// recorded with the results and compared with the checkpoint's scene.
     void
     run(const ParameterHandler &prm, const Start start = Start::fresh);
 
@@ -91,7 +75,8 @@ namespace liftoff
     double
     deflection_at(const Point<2> &p) const;
 
-    const std::vector<StepRecord> &
+    /// The rows of the time history, one per step (and tau = 0).
+    const std::vector<TimeHistory::Row> &
     history() const;
     const LA::MPI::Vector &
     solution() const;
@@ -127,14 +112,18 @@ namespace liftoff
     LoadSet                      loads;
     NewmarkIntegrator            newmark;
     ActiveSetIteration           active_set;
-    FieldOutput                  field_output;
     TimeHistory                  time_history;
     ProfileOutput                profile_output;
-    Checkpoint                   checkpoint;
+    FieldOutput                  field_output;
+    /// What is written after each step, in this order.
+    const std::vector<Output *> outputs;
+    Checkpoint                  checkpoint;
 
     Analysis    analysis          = Analysis::dynamic_analysis;
     int         stopped_by_signal = 0;
     std::string output_directory;
+    /// Where the direct solver keeps its factor, for the memory estimate.
+    Discretization::Factor factor = Discretization::Factor::distributed;
     /// The scene as Checkpoint compares it, and the step resumed from.
     std::string  scene;
     unsigned int resume_step = 0;
@@ -144,19 +133,22 @@ namespace liftoff
     std::unique_ptr<OutputDirectory> output_folder;
     /// False while a resumed run has not yet replaced the files of the run
     /// it continues (see take_over_output()).
-    bool        has_taken_over_output = true;
-    std::string initial_displacement, initial_velocity;
-    /// Parsed initial displacement and velocity.
-    std::vector<std::unique_ptr<FunctionParser<2>>> initial_fields;
+    bool              has_taken_over_output = true;
+    InitialConditions initial_conditions;
 
-    LA::MPI::Vector         u, v, a;              // owned state
-    LA::MPI::Vector         ghosted_u, ghosted_v; // with ghosts, for evaluation
-    std::vector<StepRecord> records;
+    PlateState state;
+    /// The next step's load, right-hand side and solution, and scratch.
+    LA::MPI::Vector next_load, rhs, u_next, scratch, scratch_2;
     /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
     /// estimate from below), once it was needed; 0 before.
     double largest_eigenvalue = 0;
 
-    /// Matrices, foundation, loads and state vectors; writes nothing.
+    /// The checks across parts that need no mesh (and a warning about
+    /// profile times a run does not reach).
+    void
+    check_scene() const;
+    /// Mesh, matrices, foundation, loads and state vectors, and the checks
+    /// that need the mesh; writes nothing.
     void
     setup();
     std::unique_ptr<OutputDirectory>
@@ -185,6 +177,13 @@ namespace liftoff
                    const std::vector<const LA::MPI::Vector *> &vectors,
                    const std::vector<double>                  &numbers,
                    const std::function<std::string()>         &cause);
+    /// require_finite() for the state's vectors and energies, whose
+    /// non-finite values come from the scheme or an overflow.
+    void
+    require_finite_state(const std::string                          &what,
+                         const std::vector<const LA::MPI::Vector *> &vectors,
+                         const std::vector<double>                  &numbers,
+                         const LA::MPI::Vector                      &load);
     /// Why the state may have become non-finite with finite loads: the
     /// stability limit of a conditionally stable scheme, or an overflow.
     std::string
@@ -200,36 +199,52 @@ namespace liftoff
     /// refused or killed start-up changes nothing; then it replaces them.
     void
     take_over_output(const unsigned int step);
+    /// Check the newest checkpoint against the scene; returns its step.
+    unsigned int
+    open_checkpoint();
+    /// The analysis, the end of the output and its status.
+    void
+    run_analysis();
     void
     run_static();
     void
     run_dynamic();
+
+    /// The steps of run_dynamic(), in their order.
     void
-    set_initial_state();
-    /// Everything the time loop needs to go on after `step`, and back.
+    start_from_initial_state();
     void
-    write_checkpoint(const unsigned int     step,
-                     const LA::MPI::Vector &load,
-                     const LA::MPI::Vector &balance,
-                     const double           work);
+    resume_from_checkpoint();
     void
-    read_checkpoint(const LA::MPI::SparseMatrix &base,
-                    LA::MPI::Vector             &load,
-                    LA::MPI::Vector             &balance,
-                    double                      &work);
+    assemble_right_hand_side(const unsigned int step);
+    ActiveSetIteration::Result
+    solve_contact_problem(const unsigned int step);
+    void
+    advance(const unsigned int step);
+    void
+    record(const ActiveSetIteration::Result &iteration);
+    void
+    write_checkpoint_if_due(const bool is_stopping);
+    void
+    stop_if_signalled(const int signal);
+
+    /// K + c M, the effective matrix without the foundation.
+    void
+    build_base_matrix(LA::MPI::SparseMatrix &base) const;
+    /// The whole state of the time loop, bit for bit, in one list for
+    /// both directions (a checkpoint of format `version`). Loading needs
+    /// the base matrix, which fixes the structure of the system matrix.
+    template <class Archive>
+    void
+    serialize(Archive                     &archive,
+              const unsigned int           version,
+              const LA::MPI::SparseMatrix *base = nullptr);
+    /// The state's energies (zero unless the history writes them).
     EnergyBalance
-    energies(const double work) const;
+    energies() const;
     /// F - K u - K_f(S) u for the current state u and contact set S.
     void
     force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
-    /// Everything written after a step: history row, profiles, fields.
-    void
-    record_step(const unsigned int                step,
-                const double                      tau,
-                const bool                        is_last_step,
-                const ActiveSetIteration::Result &iteration,
-                const EnergyBalance              &energy,
-                const EnergyBalance              &initial);
     void
     write_summary(const std::string &status) const;
     bool

@@ -3,10 +3,11 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/discretization.h>
+#include <liftoff/energy_balance.h>
+#include <liftoff/output.h>
 #include <liftoff/output_files.h>
 #include <liftoff/point_functional.h>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -14,93 +15,97 @@ namespace liftoff
 {
   using namespace dealii;
 
-  /// Energies of the full plate at one instant, and the work done on it.
-  struct EnergyBalance
-  {
-    double kinetic    = 0;
-    double strain     = 0;
-    double foundation = 0;
-    double work       = 0; // of the loads since tau = 0
-    /// Total energy minus the initial total minus the work: zero for an
-    /// exactly conservative discrete scheme.
-    double
-    error(const EnergyBalance &initial) const
-    {
-      return kinetic + strain + foundation
-             - (initial.kinetic + initial.strain + initial.foundation) - work;
-    }
-
-    /// The four numbers, for checks that treat them alike.
-    std::vector<double>
-    values() const
-    {
-      return {kinetic, strain, foundation, work};
-    }
-
-    template <class Archive>
-    void
-    serialize(Archive &archive, const unsigned int)
-    {
-      archive &kinetic &strain &foundation &work;
-    }
-  };
-
   /**
-   * The CSV time history a user plots: tau, w at the scene's probe points,
-   * contact area fraction, active-set iterations, the length of an
-   * active-set cycle resolved by the cycle rule (0: none) and, when asked for,
-   * the energies and their balance. The file is replaced whole (atomically) at
-   * most once a second and at the end, so a reader never sees a half-written
-   * row.
+   * The CSV time history a user plots, one row per step: tau, w at the
+   * scene's probe points, contact area fraction, the largest uplift,
+   * active-set iterations, the length of an active-set cycle resolved by the
+   * cycle rule (0: none) and, when asked for, the energies and their
+   * balance. The rows are kept (tests and the summary read them; a
+   * checkpoint saves them); the file is replaced whole (atomically) at most
+   * once a second and at the end, so a reader never sees a half-written row.
+   *
+   * A new column is a member of Row, its value in row_of(), its header and
+   * value in the two writers, and its place in Row::serialize().
    */
-  class TimeHistory
+  class TimeHistory : public Output
   {
   public:
+    struct Row
+    {
+      double       tau              = 0;
+      unsigned int iterations       = 0;
+      unsigned int cycle_length     = 0;
+      double       contact_fraction = 0;
+      /// max(0, -w) over the nodes of w: how far the plate has lifted off
+      /// its bed at the highest point (w > 0 is into the foundation).
+      double              max_uplift = 0;
+      std::vector<double> probe_w;
+      EnergyBalance       energies;
+      /// EnergyBalance::error() against the state at tau = 0.
+      double balance_error = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &tau &iterations &cycle_length &contact_fraction &max_uplift
+          &probe_w &energies &balance_error;
+      }
+    };
+
+    /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// Probes inside the plate (full plate coordinates).
+    /// Probes inside the plate (full plate coordinates); needs no mesh.
     void
     check_against(const Discretization &discretization) const;
-
-    void
-    setup(const Discretization &discretization, const std::string &directory);
 
     bool
     wants_energies() const;
 
-    /// w at the probes (collective).
-    std::vector<double>
-    probe_values(const LA::MPI::Vector &ghosted_solution) const;
-
-    /// One row; `probe_w` from probe_values().
     void
-    record(const double               tau,
-           const std::vector<double> &probe_w,
-           const double               contact_fraction,
-           const unsigned int         iterations,
-           const unsigned int         cycle_length,
-           const EnergyBalance       &energies,
-           const EnergyBalance       &initial_energies);
-
-    /// Write history.csv now (at the end of a run, also a failed one).
-    /// Collective, as is record().
+    setup(const Discretization &discretization,
+          const std::string    &directory) override;
     void
-    flush();
-
-    /// Write nothing until flush(): a resumed run records the rows of its
-    /// checkpoint again but leaves the file as it is until it has a step
-    /// of its own.
+    execute(const StepData &step) override;
     void
-    hold();
+    flush() override;
+    void
+    save(OutputArchive &archive) const override;
+    void
+    load(InputArchive &archive) override;
+
+    const std::vector<Row> &
+    rows() const;
+
+    /// Over the rows that solved something (not tau = 0 of a dynamic run).
+    struct IterationStatistics
+    {
+      double       mean     = 0;
+      unsigned int max      = 0;
+      unsigned int n_cycled = 0;
+    };
+    IterationStatistics
+    iteration_statistics() const;
 
   private:
     std::vector<Point<2>>        probe_points;
     bool                         write_energies = true;
     std::vector<PointFunctional> probes;
-    const Discretization        *discretization = nullptr;
-    GrowingTextFile              file;
+    /// This rank's degrees of freedom of w.
+    IndexSet              w_dofs;
+    const Discretization *discretization = nullptr;
+    GrowingTextFile       file;
+    std::vector<Row>      history;
+
+    Row
+    row_of(const StepData &step) const;
+    void
+    write_header();
+    void
+    write_row(const Row &row);
   };
 } // namespace liftoff

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace liftoff
+{
+  /**
+   * How a run ended and what it cost, as one list of named values written
+   * twice: summary.txt ("key: value" lines, a section's entries indented
+   * under its key) for people and summary.json for scripts, so that a
+   * script never parses the text.
+   */
+  class RunSummary
+  {
+  public:
+    using Section = std::vector<std::pair<std::string, double>>;
+    using Value   = std::variant<std::string, double, Section>;
+
+    void
+    add(const std::string &key, const Value &value);
+
+    std::string
+    text() const;
+    std::string
+    json() const;
+
+    /// summary.txt and summary.json in `directory`, each replaced
+    /// atomically, from rank 0 (collective).
+    void
+    write(const std::string &directory, const MPI_Comm comm) const;
+
+  private:
+    std::vector<std::pair<std::string, Value>> entries;
+  };
+} // namespace liftoff
