@@ -1,8 +1,19 @@
 #!/usr/bin/env bash
 # Debian 12 packages liftoff needs: deal.II 9.4 (with Trilinos, PETSc, p4est,
-# MPI), OpenMPI's launcher, CMake, a compiler, and matplotlib for the plots.
+# MPI, HDF5), OpenMPI's launcher, CMake, a compiler, and for the scripts
+# numpy, pandas and matplotlib (the study tool, the plots) and h5py (the
+# test of the HDF5 output).
+#   scripts/install-dependencies.sh           what the build and tests need
+#   scripts/install-dependencies.sh --viewer  also ParaView's pvpython and
+#                                             Xvfb for scripts/liftoff-view
+#                                             (about 1 GB; its test is
+#                                             skipped without them)
 set -euo pipefail
-packages=(libdeal.ii-dev openmpi-bin cmake g++ make python3-matplotlib)
+packages=(libdeal.ii-dev openmpi-bin cmake g++ make python3-numpy
+          python3-pandas python3-matplotlib python3-h5py)
+if [ "${1:-}" = "--viewer" ]; then
+  packages+=(python3-paraview xvfb)
+fi
 if dpkg -s "${packages[@]}" >/dev/null 2>&1; then
   exit 0
 fi

@@ -5,7 +5,12 @@
 #include <liftoff/field_output.h>
 #include <liftoff/output_files.h>
 
+#include <liftoff/version.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
+#include <sstream>
 
 namespace liftoff
 {
@@ -42,6 +47,225 @@ namespace liftoff
     private:
       const TensionlessWinklerFoundation &foundation;
     };
+
+
+    /// DataOut with its patches, names and vector ranges public, for
+    /// PlateFields.
+    class PlaneDataOut : public DataOut<2>
+    {
+    public:
+      using DataOut<2>::get_dataset_names;
+      using DataOut<2>::get_nonscalar_data_ranges;
+      using DataOut<2>::get_patches;
+    };
+
+
+    /// The fields of a PlaneDataOut with the plate placed at z = 0 in
+    /// three dimensions, and two vectors added for ParaView (Glyph,
+    /// WarpByVector): the rotation (psi_x, psi_y, 0) and the displacement
+    /// (0, 0, w), w > 0 into the foundation. deal.II takes a vector of a 2d
+    /// output to have two components, so (0, 0, w) needs the third
+    /// dimension. The scalar fields stay as they are, so that old ParaView
+    /// states keep working.
+    class PlateFields : public DataOutInterface<2, 3>
+    {
+    public:
+      explicit PlateFields(const PlaneDataOut &plane)
+          : names(plane.get_dataset_names())
+          , ranges(plane.get_nonscalar_data_ranges())
+      {
+        const auto row = [&](const std::string &name) {
+          const auto at = std::find(names.begin(), names.end(), name);
+          Assert(at != names.end(), ExcInternalError());
+          return static_cast<unsigned int>(at - names.begin());
+        };
+        const unsigned int n = names.size(), w = row("w"), psi_x = row("psi_x"),
+                           psi_y = row("psi_y");
+        for (const auto &flat : plane.get_patches())
+          {
+            DataOutBase::Patch<2, 3> patch;
+            for (unsigned int v = 0; v < GeometryInfo<2>::vertices_per_cell;
+                 ++v)
+              patch.vertices[v] =
+                Point<3>(flat.vertices[v][0], flat.vertices[v][1], 0.0);
+            patch.neighbors            = flat.neighbors;
+            patch.patch_index          = flat.patch_index;
+            patch.n_subdivisions       = flat.n_subdivisions;
+            patch.reference_cell       = flat.reference_cell;
+            patch.points_are_available = flat.points_are_available;
+            // The rows: the data sets, the two vectors, then (where the
+            // mapping gave them) the coordinates of the points.
+            const unsigned int n_points = flat.data.n_cols();
+            patch.data.reinit(n + 6 + (flat.points_are_available ? 3 : 0),
+                              n_points);
+            for (unsigned int k = 0; k < n_points; ++k)
+              {
+                for (unsigned int r = 0; r < n; ++r)
+                  patch.data(r, k) = flat.data(r, k);
+                patch.data(n, k)     = flat.data(psi_x, k);
+                patch.data(n + 1, k) = flat.data(psi_y, k);
+                patch.data(n + 5, k) = flat.data(w, k);
+                if (flat.points_are_available)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    patch.data(n + 6 + d, k) = flat.data(n + d, k);
+              }
+            patches.push_back(std::move(patch));
+          }
+        for (const std::string vector : {"rotation", "displacement"})
+          {
+            ranges.emplace_back(
+              names.size(),
+              names.size() + 2,
+              vector,
+              DataComponentInterpretation::component_is_part_of_vector);
+            names.insert(names.end(), 3, vector);
+          }
+      }
+
+    protected:
+      const std::vector<DataOutBase::Patch<2, 3>> &
+      get_patches() const override
+      {
+        return patches;
+      }
+
+      std::vector<std::string>
+      get_dataset_names() const override
+      {
+        return names;
+      }
+
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+      get_nonscalar_data_ranges() const override
+      {
+        return ranges;
+      }
+
+    private:
+      std::vector<DataOutBase::Patch<2, 3>> patches;
+      std::vector<std::string>              names;
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+        ranges;
+    };
+
+
+    /// The units of the fields, in the dimensionless variables of
+    /// doc/model.md (F0 the load scale, L the length, D the bending
+    /// stiffness, t0 the time scale).
+    const std::map<std::string, std::string> field_units = {
+      {"w", "F0*L^2/D"},
+      {"psi_x", "F0*L/D"},
+      {"psi_y", "F0*L/D"},
+      {"w_dot", "F0*L^2/(D*t0)"},
+      {"psi_x_dot", "F0*L/(D*t0)"},
+      {"psi_y_dot", "F0*L/(D*t0)"},
+      {"rotation", "F0*L/D"},
+      {"displacement", "F0*L^2/D"},
+      {"foundation_pressure", "F0/L^2"},
+      {"contact_status", "1"}};
+
+
+    /// A .vtu or .pvtu as deal.II writes it, with two additions. ParaView
+    /// takes the time of such files opened as a series (without the .pvd)
+    /// from a field-data array named TimeValue, in the .pvtu itself for a
+    /// .pvtu; deal.II names its array TIME and writes it in the pieces only.
+    /// So TimeValue is added, beside TIME in a piece and as the .pvtu's own
+    /// field data. And a comment names the version and git commit of the
+    /// liftoff that wrote the file.
+    std::string
+    with_liftoff_metadata(const std::string &vtk, const double time)
+    {
+      std::ostringstream array;
+      array.precision(17);
+      array << "\n<DataArray type=\"Float64\" Name=\"TimeValue\" "
+               "NumberOfTuples=\"1\" format=\"ascii\">"
+            << time << "</DataArray>";
+      std::string       text       = vtk;
+      const std::string field_data = "<FieldData>";
+      std::size_t       at         = text.find(field_data);
+      if (at != std::string::npos)
+        text.insert(at + field_data.size(), array.str());
+      else
+        {
+          at = text.find("<PUnstructuredGrid");
+          Assert(at != std::string::npos, ExcInternalError());
+          at = text.find('>', at) + 1;
+          text.insert(at, "\n" + field_data + array.str() + "\n</FieldData>");
+        }
+      const std::size_t line_end = text.find('\n');
+      return text.insert(line_end + 1,
+                         "<!-- liftoff " LIFTOFF_VERSION
+                         " (git " LIFTOFF_GIT_COMMIT ") -->\n");
+    }
+
+
+    /// solution_NNNNN.h5 (`stem`.h5) from the patches of data_out and
+    /// solution.xdmf naming every such file so far, which `xdmf_entries`
+    /// keeps; after a resume it is empty and is rebuilt from the PVD
+    /// `records` of the earlier outputs. Collective.
+    void
+    write_hdf5(const std::string                                 &directory,
+               const DataOutInterface<2, 3>                      &data_out,
+               const MPI_Comm                                     comm,
+               const double                                       time,
+               const std::string                                 &stem,
+               const std::vector<std::pair<double, std::string>> &records,
+               std::vector<XDMFEntry>                            &xdmf_entries)
+    {
+      // XDMF describes linear cells only: the subdivided patches are written
+      // as bilinear quadrilaterals, whatever Field cells says.
+      DataOutBase::DataOutFilter filter(
+        DataOutBase::DataOutFilterFlags(false, true));
+      data_out.write_filtered_data(filter);
+      const std::string  name = stem + ".h5";
+      const std::string  path = directory + "/" + name;
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      // write_hdf5_parallel is collective: every rank writes its part into
+      // the same temporary file, which rank 0 renames once all are done.
+      collective_attempt(comm, "Writing " + name + " failed", [&]() {
+        data_out.write_hdf5_parallel(filter, path + ".tmp", comm);
+      });
+      collective_attempt(comm, "Writing " + name + " failed", [&]() {
+        if (rank == 0
+            && std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+          throw std::runtime_error("cannot rename " + path + ".tmp");
+      });
+      // The mesh is the same at every output (no adaptivity): after a
+      // resume, the entries of the earlier outputs are those of the records
+      // with this output's sizes.
+      if (xdmf_entries.empty())
+        for (const auto &record : records)
+          xdmf_entries.push_back(data_out.create_xdmf_entry(
+            filter,
+            record.second.substr(0, record.second.rfind('.')) + ".h5",
+            record.first,
+            comm));
+      xdmf_entries.push_back(
+        data_out.create_xdmf_entry(filter, name, time, comm));
+      collective_attempt(comm, "Writing solution.xdmf failed", [&]() {
+        if (rank == 0)
+          write_file_atomically(
+            directory + "/solution.xdmf", [&](std::ostream &out) {
+              out << "<?xml version=\"1.0\" ?>\n"
+                  << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+                  << "<Xdmf Version=\"2.0\">\n"
+                  << "  <Domain>\n"
+                  << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+                     "CollectionType=\"Temporal\">\n";
+              for (const auto &entry : xdmf_entries)
+                out << entry.get_xdmf_content(3, ReferenceCells::Quadrilateral);
+              out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+            });
+      });
+    }
   } // namespace
 
 
@@ -53,13 +277,38 @@ namespace liftoff
                       Patterns::Integer(0),
                       "Write fields every this many steps (and at the last "
                       "step); 0 writes none.");
+    prm.declare_entry("Field cells",
+                      "subdivided",
+                      Patterns::Selection("subdivided|higher order"),
+                      "How the VTU files draw a cell of the mesh: "
+                      "`subdivided` into Subdivisions x Subdivisions "
+                      "bilinear cells, or `higher order`: one Lagrange cell "
+                      "of degree Subdivisions (VTK_LAGRANGE_QUADRILATERAL, "
+                      "ParaView 5.5 or later; its Nonlinear Subdivision "
+                      "Level sets how finely it is drawn).");
+    prm.declare_entry("Subdivisions",
+                      "0",
+                      Patterns::Integer(0, 16),
+                      "Subdivisions of each cell in the field files; 0 takes "
+                      "the polynomial degree, which shows a Q2 field "
+                      "exactly with higher-order cells.");
+    prm.declare_entry("HDF5 output",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write every field output as "
+                      "solution_NNNNN.h5 (one file for all ranks, MPI-IO) "
+                      "and the time series solution.xdmf, which ParaView, "
+                      "VisIt and meshio read.");
   }
 
 
   void
   FieldOutput::parse_parameters(ParameterHandler &prm)
   {
-    interval = prm.get_integer("VTU interval");
+    interval           = prm.get_integer("VTU interval");
+    higher_order_cells = prm.get("Field cells") == "higher order";
+    subdivisions       = prm.get_integer("Subdivisions");
+    writes_hdf5        = prm.get_bool("HDF5 output");
   }
 
 
@@ -79,30 +328,34 @@ namespace liftoff
                      const double                        time,
                      const unsigned int                  step)
   {
-    DataOut<2> data_out;
-    data_out.attach_dof_handler(disc.dof_handler);
-    data_out.add_data_vector(solution,
-                             std::vector<std::string>{"w", "psi_x", "psi_y"});
+    PlaneDataOut plane;
+    plane.attach_dof_handler(disc.dof_handler);
+    plane.add_data_vector(solution,
+                          std::vector<std::string>{"w", "psi_x", "psi_y"});
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       scalar(3, DataComponentInterpretation::component_is_scalar);
-    data_out.add_data_vector(velocity,
-                             std::vector<std::string>{"w_dot",
-                                                      "psi_x_dot",
-                                                      "psi_y_dot"},
-                             DataOut<2>::type_dof_data,
-                             scalar);
+    plane.add_data_vector(velocity,
+                          std::vector<std::string>{"w_dot",
+                                                   "psi_x_dot",
+                                                   "psi_y_dot"},
+                          DataOut<2>::type_dof_data,
+                          scalar);
     const FoundationPressure pressure(foundation);
-    data_out.add_data_vector(solution, pressure);
+    plane.add_data_vector(solution, pressure);
     const Vector<float> contact = foundation.contact_fraction_per_cell();
-    data_out.add_data_vector(contact, "contact_status");
+    plane.add_data_vector(contact, "contact_status");
     Vector<float> subdomain(disc.triangulation.n_active_cells());
     subdomain = disc.triangulation.locally_owned_subdomain();
-    data_out.add_data_vector(subdomain, "subdomain");
-    data_out.build_patches(disc.mapping, disc.degree());
+    plane.add_data_vector(subdomain, "subdomain");
+    plane.build_patches(disc.mapping,
+                        subdivisions > 0 ? subdivisions : disc.degree());
+    PlateFields data_out(plane);
 
     DataOutBase::VtkFlags flags;
-    flags.time  = time;
-    flags.cycle = step;
+    flags.time                     = time;
+    flags.cycle                    = step;
+    flags.write_higher_order_cells = higher_order_cells;
+    flags.physical_units           = field_units;
     data_out.set_flags(flags);
 
     // Every file goes to a temporary name first and is renamed when
@@ -121,7 +374,9 @@ namespace liftoff
     collective_attempt(comm, what, [&]() {
       write_file_atomically(directory + "/" + piece(rank),
                             [&](std::ostream &out) {
-                              data_out.write_vtu(out);
+                              std::ostringstream vtu;
+                              data_out.write_vtu(vtu);
+                              out << with_liftoff_metadata(vtu.str(), time);
                             });
     });
     const std::string master = stem + ".pvtu";
@@ -132,9 +387,13 @@ namespace liftoff
       for (unsigned int r = 0; r < n_ranks; ++r)
         pieces.push_back(piece(r));
       write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
-        data_out.write_pvtu_record(out, pieces);
+        std::ostringstream pvtu;
+        data_out.write_pvtu_record(pvtu, pieces);
+        out << with_liftoff_metadata(pvtu.str(), time);
       });
     });
+    if (writes_hdf5)
+      write_hdf5(directory, data_out, comm, time, stem, records, xdmf_entries);
     records.emplace_back(time, master);
     write_record(directory, comm);
   }

@@ -6,6 +6,7 @@
 #include <liftoff/scene_input.h>
 #include <liftoff/simulator.h>
 #include <liftoff/stop_signal.h>
+#include <liftoff/version.h>
 
 #include <fstream>
 #include <iostream>
@@ -26,7 +27,16 @@ namespace
     "                                    (same number of ranks; the end time\n"
     "                                    may be changed)\n"
     "       liftoff --parameters         print every parameter with its "
-    "default and documentation";
+    "default and documentation\n"
+    "       liftoff --version            print the version and the git commit\n"
+    "                                    it was built from\n"
+    "       liftoff --help, -h           print this text\n"
+    "\n"
+    "SIGINT (Ctrl-C) or SIGTERM ends a run after the current step with\n"
+    "complete files, a checkpoint and the exit code 128 + signal. Under\n"
+    "mpirun, signal the liftoff processes (pkill -INT -x liftoff): mpirun,\n"
+    "when signalled itself, kills them a second later and exits 1.\n"
+    "README.md and doc/ describe scenes, outputs and tools.";
 
   // deal.II spreads its messages over indented lines; one line reads
   // better and stays one line in a log.
@@ -91,7 +101,22 @@ main(int argc, char **argv)
   const MPI_Comm                           comm = MPI_COMM_WORLD;
   const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
-  if (argc == 2 && std::string(argv[1]) == "--parameters")
+  const std::string option = argc == 2 ? argv[1] : "";
+  if (option == "--help" || option == "-h")
+    {
+      if (is_root)
+        std::cout << usage << std::endl;
+      return 0;
+    }
+  if (option == "--version")
+    {
+      if (is_root)
+        std::cout << "liftoff " << LIFTOFF_VERSION << " (git "
+                  << LIFTOFF_GIT_COMMIT << "), deal.II "
+                  << DEAL_II_PACKAGE_VERSION << std::endl;
+      return 0;
+    }
+  if (option == "--parameters")
     {
       dealii::ParameterHandler prm;
       liftoff::Simulator::declare_parameters(prm);

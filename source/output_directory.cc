@@ -30,14 +30,15 @@ namespace liftoff
     // FieldOutput and Checkpoint write, with their temporary names
     // (write_file_atomically).
     const std::regex file_names(
-      R"((used_parameters\.prm|summary\.txt|summary\.json|history\.csv|profiles\.csv|)"
-      R"(solution\.pvd|solution_[0-9]+\.pvtu|solution_[0-9]+\.[0-9]+\.vtu))"
+      R"((used_parameters\.prm|summary\.txt|summary\.json|history\.csv|)"
+      R"(profiles\.csv|solution\.pvd|solution_[0-9]+\.pvtu|)"
+      R"(solution_[0-9]+\.[0-9]+\.vtu|solution\.xdmf|solution_[0-9]+\.h5))"
       R"((\.tmp)?)");
     const std::regex checkpoint_folders(R"(checkpoint(\.new|\.previous)?)");
     const std::regex
       checkpoint_files(R"((checkpoint\.txt|rank_[0-9]+\.bin)(\.tmp)?)");
     /// A field file and its step.
-    const std::regex field_file(R"(solution_([0-9]+)\.(pvtu|[0-9]+\.vtu))");
+    const std::regex field_file(R"(solution_([0-9]+)\.(pvtu|[0-9]+\.vtu|h5))");
 
     bool
     matches(const fs::directory_entry &entry, const std::regex &names)

@@ -8,6 +8,7 @@
 #include <liftoff/scene_input.h>
 #include <liftoff/simulator.h>
 #include <liftoff/stop_signal.h>
+#include <liftoff/version.h>
 
 #include <algorithm>
 #include <cmath>
@@ -822,6 +823,9 @@ namespace liftoff
 
     RunSummary summary;
     summary.add("status", status);
+    summary.add("liftoff",
+                std::string(LIFTOFF_VERSION) + " (git " + LIFTOFF_GIT_COMMIT
+                  + ")");
     if (resume_step > 0)
       summary.add("resumed after step", double(resume_step));
     summary.add("analysis",

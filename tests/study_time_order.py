@@ -62,13 +62,24 @@ def check(ok, what):
 def study(liftoff, tool, work, name, extra):
     """Run the study; the rows of its study.csv."""
     output = os.path.join(work, name)
-    run = subprocess.run([sys.executable, tool, os.path.join(work, "s.prm"),
+    # The tool runs by its shebang (Debian's python3, with numpy and
+    # pandas), as a user runs it.
+    run = subprocess.run([tool, os.path.join(work, "s.prm"),
                           "--executable", liftoff, "--time-steps", STEPS,
-                          "--qoi", PROBE, "--no-plot", "--output", output]
+                          "--qoi", PROBE, "--no-plot", "--output", output,
+                          "--jobs", "2"]
                          + extra, capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stdout + run.stderr)
         return None
+    # The plan up front, then "k of N" for every run, with the time so far.
+    lines = run.stdout.splitlines()
+    check(lines[0].startswith("liftoff-study: 4 runs (4 time steps); 2 at "
+                              "a time (--jobs 2, 1 rank per run)")
+          and all(any(line.startswith("[%d of 4] " % k) and "elapsed" in line
+                      for line in lines) for k in range(1, 5)),
+          "%s: the plan, then runs 1 to 4 of 4 with the time so far"
+          % name)
     with open(os.path.join(output, "study.csv")) as f:
         return list(csv.DictReader(f))
 
@@ -104,7 +115,7 @@ def main():
                   % (name, ", ".join("%.3g" % e for e in errors)))
 
         output = os.path.join(work, "refused")
-        run = subprocess.run([sys.executable, tool, os.path.join(work, "s.prm"),
+        run = subprocess.run([tool, os.path.join(work, "s.prm"),
                               "--executable", liftoff, "--time-steps",
                               "5e-4,1e-3", "--no-plot", "--output", output],
                              capture_output=True, text=True)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/checkpoint.h>
@@ -66,11 +67,17 @@ namespace liftoff
     load(InputArchive &archive) override;
 
   private:
-    unsigned int                                interval = 10;
+    unsigned int                                interval           = 10;
+    bool                                        higher_order_cells = false;
+    unsigned int                                subdivisions       = 0;
+    bool                                        writes_hdf5        = false;
     std::vector<std::pair<double, std::string>> records;
     std::string                                 directory;
     const Discretization                       *discretization = nullptr;
     /// The velocity with ghosts, filled only for the steps written.
     LA::MPI::Vector ghosted_velocity;
+    /// The entries of solution.xdmf (HDF5 output); rebuilt from `records`
+    /// after a resume.
+    std::vector<XDMFEntry> xdmf_entries;
   };
 } // namespace liftoff

@@ -21,7 +21,8 @@ namespace liftoff
    *
    * liftoff's entries are the files it writes (used_parameters.prm,
    * summary.txt, history.csv, profiles.csv, solution.pvd,
-   * solution_NNNNN.pvtu, solution_NNNNN.RRRR.vtu, and within the folders
+   * solution_NNNNN.pvtu, solution_NNNNN.RRRR.vtu, solution.xdmf,
+   * solution_NNNNN.h5, and within the folders
    * checkpoint, checkpoint.new and checkpoint.previous checkpoint.txt and
    * rank_RRRR.bin) and the temporary `<name>.tmp` of each. Nothing else in
    * the folder is ever counted, removed or overwritten.

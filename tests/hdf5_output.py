@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""HDF5 + XDMF output read back with h5py, against the run's other outputs.
+
+    hdf5_output.py OUTPUT_DIRECTORY
+
+solution.xdmf names one solution_NNNNN.h5 per output, at the times of
+solution.pvd; in each, w at the node (0, 0) equals history.csv's probe
+w(0;0) at that time (to single precision: the fields are stored as float),
+the displacement vector is (0, 0, w) and the rotation (psi_x, psi_y, 0) at
+every node, and the mesh is the plate's meshed part in the plane z = 0.
+Exit 77 without h5py (Debian: python3-h5py).
+"""
+
+import csv
+import os
+import re
+import sys
+
+try:
+    import h5py
+    import numpy as np
+except ImportError as e:
+    print("skipped: %s" % e)
+    sys.exit(77)
+
+failures = 0
+
+
+def check(ok, what):
+    global failures
+    print("%s %s" % ("PASS" if ok else "FAIL", what))
+    if not ok:
+        failures += 1
+
+
+def main():
+    out = sys.argv[1]
+    with open(os.path.join(out, "solution.xdmf")) as f:
+        xdmf = f.read()
+    with open(os.path.join(out, "solution.pvd")) as f:
+        pvd_times = [float(t) for t in re.findall(r'timestep="([^"]+)"',
+                                                  f.read())]
+    times = [float(t) for t in re.findall(r'<Time Value="([^"]+)"', xdmf)]
+    files = sorted(set(re.findall(r"(solution_[0-9]+\.h5):/nodes", xdmf)))
+    check(len(times) >= 2 and np.allclose(times, pvd_times, rtol=1e-12)
+          and len(files) == len(times),
+          "solution.xdmf: %d outputs at the times of solution.pvd, one .h5 "
+          "each" % len(times))
+    with open(os.path.join(out, "history.csv")) as f:
+        history = {round(float(r["tau"]), 9): float(r["w(0;0)"])
+                   for r in csv.DictReader(f)}
+    for name, tau in zip(files, times):
+        with h5py.File(os.path.join(out, name), "r") as h5:
+            nodes = h5["nodes"][:]
+            w = h5["w"][:, 0]
+            displacement = h5["displacement"][:]
+            rotation = h5["rotation"][:]
+            psi = np.stack([h5["psi_x"][:, 0], h5["psi_y"][:, 0]], axis=1)
+        at_origin = np.flatnonzero(np.linalg.norm(nodes[:, :2], axis=1)
+                                   < 1e-12)
+        probe = history[round(tau, 9)]
+        check(len(at_origin) >= 1
+              and np.all(np.abs(w[at_origin] - probe)
+                         <= 1e-6 * max(abs(probe), 1e-30) + 1e-12),
+              "%s (tau = %g): w at (0, 0) is %s, history.csv %.9g"
+              % (name, tau, w[at_origin], probe))
+        check(np.all(displacement[:, :2] == 0)
+              and np.array_equal(displacement[:, 2], w)
+              and np.array_equal(rotation[:, :2], psi)
+              and np.all(rotation[:, 2] == 0),
+              "%s: displacement = (0, 0, w), rotation = (psi_x, psi_y, 0) "
+              "at all %d nodes" % (name, len(w)))
+        check(nodes.shape[1] == 3 and np.all(nodes[:, 2] == 0)
+              and nodes[:, 0].min() == 0 and nodes[:, 0].max() == 0.5
+              and nodes[:, 1].min() == 0 and nodes[:, 1].max() == 0.5,
+              "%s: the quarter [0, 0.5]^2 at z = 0" % name)
+    print("%d check(s) failed" % failures)
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
