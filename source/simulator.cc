@@ -427,8 +427,8 @@ namespace liftoff
                                "Output/Directory, which is empty."));
       }
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
-          << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
-          << discretization.degree() << "), "
+          << " cells, " << discretization.dof_handler.n_dofs() << " dofs ("
+          << discretization.element_name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
           << std::endl;
     // Checks that need the matrices come before the folder is touched.
@@ -901,6 +901,7 @@ namespace liftoff
          << "cells: " << discretization.triangulation.n_global_active_cells()
          << '\n'
          << "degree: " << discretization.degree() << '\n'
+         << "element: " << discretization.element_name() << '\n'
          << "dofs: " << discretization.dof_handler.n_dofs() << '\n'
          << "steps: " << (records.empty() ? 0 : records.size() - 1) << '\n'
          << "active-set iterations per step, mean: "
