@@ -62,14 +62,21 @@ main(int argc, char **argv)
 
           const std::string name =
             treatment + ", " + std::to_string(n) + " cells/side";
-          checks.less("S2 " + name + ": |w - Navier| / w", error, 2e-2);
-          checks.less("S2 " + name + ": |w_S2 - w_Q2| / w", difference, 2e-2);
-          checks.less("S2 " + name + ": |psi - Navier| / psi", psi_error, 2e-2);
+          // Measured: errors 7e-3 (full) and 1e-3 (reduced) on 4 cells and
+          // order 4 (like Q2's point values), S2 - Q2 3e-3, 1.5e-4, 9e-6.
+          const double scale = std::pow(4.0 / n, 4);
+          checks.less("S2 " + name + ": |w - Navier| / w", error, 2e-2 * scale);
+          checks.less("S2 " + name + ": |w_S2 - w_Q2| / w",
+                      difference,
+                      1e-2 * scale);
+          checks.less("S2 " + name + ": |psi - Navier| / psi",
+                      psi_error,
+                      2e-2 * scale);
           if (k > 0)
             checks.within("S2 " + name + ": order of the centre deflection",
                           liftoff_tests::observed_order(previous, error),
-                          1.8,
-                          5.0);
+                          3.5,
+                          4.6);
           previous = error;
         }
     }
