@@ -72,6 +72,10 @@ main(int argc, char **argv)
           checks.less("S2 " + name + ": |psi - Navier| / psi",
                       psi_error,
                       2e-2 * scale);
+          // A different element: an S2 run that is Q2 in disguise fails.
+          checks.less("S2 " + name + ": S2 and Q2 differ (|w_S2 - w_Q2| / w)",
+                      1e-8,
+                      difference);
           if (k > 0)
             checks.within("S2 " + name + ": order of the centre deflection",
                           liftoff_tests::observed_order(previous, error),
