@@ -38,6 +38,10 @@ VARIANTS = [
     (1, "ex1-q1-60", BEAM, ["Discretization/Cells along x=60"], "60 Q1"),
     (1, "ex1-q2-20", BEAM, ["Discretization/Cells along x=20",
                             "Discretization/Polynomial degree=2"], "20 Q2"),
+    # The paper's 20 eight-node elements (its Fig. 3d).
+    (1, "ex1-s2-20", BEAM, ["Discretization/Cells along x=20",
+                            "Discretization/Polynomial degree=2",
+                            "Discretization/Element=serendipity"], "20 S2"),
     (1, "ex1-dt-0.025e-2", BEAM, ["Time integration/Time step=2.5e-4"],
      "dtau = 0.025e-2"),
     (1, "ex1-dt-0.2e-2", BEAM, ["Time integration/Time step=2e-3"],
