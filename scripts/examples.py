@@ -38,6 +38,10 @@ VARIANTS = [
     (1, "ex1-q1-60", BEAM, ["Discretization/Cells along x=60"], "60 Q1"),
     (1, "ex1-q2-20", BEAM, ["Discretization/Cells along x=20",
                             "Discretization/Polynomial degree=2"], "20 Q2"),
+    # The paper's 20 eight-node elements (its Fig. 3d).
+    (1, "ex1-s2-20", BEAM, ["Discretization/Cells along x=20",
+                            "Discretization/Polynomial degree=2",
+                            "Discretization/Element=serendipity"], "20 S2"),
     (1, "ex1-dt-0.025e-2", BEAM, ["Time integration/Time step=2.5e-4"],
      "dtau = 0.025e-2"),
     (1, "ex1-dt-0.2e-2", BEAM, ["Time integration/Time step=2e-3"],
@@ -70,6 +74,18 @@ VARIANTS = [
     (3, "ex3-q2-8", PLATE, ["Discretization/Cells along x=8",
                             "Discretization/Cells along y=8"], "8x8 Q2"),
     (3, "ex3-q2-16", PLATE, [], "16x16 Q2"),
+    # The paper's eight-node element (serendipity), full integration as the
+    # paper used for Example 3, and reduced integration for comparison.
+    (3, "ex3-s2-8", PLATE, ["Discretization/Cells along x=8",
+                            "Discretization/Cells along y=8",
+                            "Discretization/Element=serendipity"], "8x8 S2"),
+    (3, "ex3-s2-16", PLATE, ["Discretization/Element=serendipity"],
+     "16x16 S2"),
+    (3, "ex3-s2-8-reduced", PLATE, ["Discretization/Cells along x=8",
+                                    "Discretization/Cells along y=8",
+                                    "Discretization/Element=serendipity",
+                                    "Discretization/Shear integration=reduced"],
+     "8x8 S2, reduced"),
     (4, "ex4-reduced", SUPPORTED, [], "15x15 Q1, reduced"),
     (4, "ex4-full", SUPPORTED, ["Discretization/Shear integration=full"],
      "15x15 Q1, full"),
@@ -80,6 +96,24 @@ VARIANTS = [
                                      "Discretization/Polynomial degree=2",
                                      "Discretization/Shear integration=mitc"],
      "30x30 Q2, MITC (reference)"),
+    # Eight- and nine-node elements on the paper's 15 x 15 mesh, reduced
+    # integration as the paper used; the eight-node element fully
+    # integrated; and 8 x 8 eight-node cells, about the unknowns of 15 x 15
+    # Q1.
+    (4, "ex4-s2-15-reduced", SUPPORTED, ["Discretization/Polynomial degree=2",
+                                         "Discretization/Element=serendipity"],
+     "15x15 S2, reduced"),
+    (4, "ex4-q2-15-reduced", SUPPORTED, ["Discretization/Polynomial degree=2"],
+     "15x15 Q2, reduced"),
+    (4, "ex4-s2-15-full", SUPPORTED, ["Discretization/Polynomial degree=2",
+                                      "Discretization/Element=serendipity",
+                                      "Discretization/Shear integration=full"],
+     "15x15 S2, full"),
+    (4, "ex4-s2-8-reduced", SUPPORTED, ["Discretization/Cells along x=8",
+                                        "Discretization/Cells along y=8",
+                                        "Discretization/Polynomial degree=2",
+                                        "Discretization/Element=serendipity"],
+     "8x8 S2, reduced"),
 ]
 
 
@@ -243,6 +277,35 @@ def plot_example_3(output):
     save(fig, "example-3.png")
 
 
+def plot_serendipity(output):
+    """The eight-node (S2) against the nine-node (Q2) element, Examples 3
+    and 4: the probes in time."""
+    panels = [("ex3", ["ex3-q2-16", "ex3-q2-8", "ex3-s2-16", "ex3-s2-8",
+                       "ex3-s2-8-reduced"],
+               [("w(0;0)", "centre"), ("w(0.5;0)", "edge mid-point")]),
+              ("ex4", ["ex4-reference", "ex4-q2-15-reduced",
+                       "ex4-s2-15-reduced", "ex4-s2-8-reduced",
+                       "ex4-s2-15-full", "ex4-reduced"],
+               [("w(0.2;0)", "node E = (0.2, 0)"), ("w(0;0)", "centre")])]
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
+    for row, (prefix, names, probes) in zip(axes, panels):
+        for name in names:
+            rows = history(output, name)
+            for ax, (key, _) in zip(row, probes):
+                ax.plot(column(rows, "tau"), column(rows, key),
+                        label=label_of(name), lw=1,
+                        ls="--" if "S2" in label_of(name) else "-")
+        for ax, (_, where) in zip(row, probes):
+            ax.axhline(0, color="grey", lw=0.6)
+            ax.set_title("Example %s: v at the %s" % (prefix[-1], where),
+                         fontsize=10)
+            ax.set_xlabel("tau")
+            ax.set_ylabel("v")
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=7)
+    save(fig, "examples-serendipity.png")
+
+
 def plot_example_4(output):
     names = ["ex4-reduced", "ex4-full", "ex4-mitc", "ex4-reference"]
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
@@ -344,6 +407,8 @@ def main():
              4: plot_example_4}
     for e in examples:
         plots[e](args.output)
+    if 3 in examples and 4 in examples:
+        plot_serendipity(args.output)
     report(variants, args.output)
 
 

@@ -6,6 +6,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/discretization.h>
+#include <liftoff/fe_serendipity.h>
 
 #include <sys/resource.h>
 
@@ -133,7 +134,17 @@ namespace liftoff
     prm.declare_entry("Polynomial degree",
                       "1",
                       Patterns::Integer(1, 6),
-                      "Degree p of FE_Q(p) used for w, psi_x and psi_y.");
+                      "Degree p of FE_Q(p) used for w, psi_x and psi_y "
+                      "(2 with Element = serendipity).");
+    prm.declare_entry(
+      "Element",
+      "lagrange",
+      Patterns::Selection("lagrange|serendipity"),
+      "Finite element for w, psi_x and psi_y: lagrange, FE_Q(p) with "
+      "(p+1)^2 nodes per cell (p = 2: the nine-node element); serendipity, "
+      "the paper's eight-node quadrilateral (vertices and edge mid-points, "
+      "no centre node), only with Polynomial degree = 2 and Shear "
+      "integration = full or reduced (doc/model.md).");
     prm.leave_subsection();
 
     prm.enter_subsection("Boundary conditions");
@@ -162,6 +173,25 @@ namespace liftoff
     n_cells_y     = prm.get_integer("Cells along y");
     n_refinements = prm.get_integer("Global refinements");
     fe_degree     = prm.get_integer("Polynomial degree");
+
+    is_serendipity = (prm.get("Element") == "serendipity");
+    if (is_serendipity)
+      {
+        AssertThrow(fe_degree == 2,
+                    ExcMessage("Discretization/Element = serendipity is the "
+                               "eight-node element of degree 2: it needs "
+                               "Discretization/Polynomial degree = 2, not "
+                               + std::to_string(fe_degree) + "."));
+        // The assumed strains of Shear integration = mitc are tied at the
+        // points of the nine-node element's strain space; the eight-node
+        // element would need its own scheme (MITC8), which liftoff lacks.
+        const std::string shear = prm.get("Shear integration");
+        AssertThrow(shear != "mitc",
+                    ExcMessage("Discretization/Element = serendipity works "
+                               "with Discretization/Shear integration = full "
+                               "or reduced, not mitc (its tying points "
+                               "belong to the nine-node Lagrange element)."));
+      }
     prm.leave_subsection();
 
     prm.enter_subsection("Boundary conditions");
@@ -297,7 +327,10 @@ namespace liftoff
           }
     triangulation.refine_global(n_refinements);
 
-    fe = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), n_components);
+    if (is_serendipity)
+      fe = std::make_unique<FESystem<2>>(FE_Serendipity(), n_components);
+    else
+      fe = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), n_components);
     dof_handler.distribute_dofs(*fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
@@ -369,6 +402,13 @@ namespace liftoff
   Discretization::degree() const
   {
     return fe_degree;
+  }
+
+
+  std::string
+  Discretization::element_name() const
+  {
+    return is_serendipity ? "S2" : "Q" + std::to_string(fe_degree);
   }
 
 

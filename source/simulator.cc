@@ -253,8 +253,8 @@ namespace liftoff
                          : ".")));
 
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
-          << " cells, " << discretization.dof_handler.n_dofs() << " dofs (Q"
-          << discretization.degree() << "), "
+          << " cells, " << discretization.dof_handler.n_dofs() << " dofs ("
+          << discretization.element_name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
           << std::endl;
     {
@@ -830,23 +830,18 @@ namespace liftoff
       summary.add("resumed after step", double(resume_step));
     summary.add("analysis",
                 analysis == Analysis::static_analysis ? "static" : "dynamic");
-    for (const auto &[key, value] :
-         {std::make_pair(
-            "ranks", double(Utilities::MPI::n_mpi_processes(mpi_communicator))),
-          std::make_pair(
-            "cells",
-            double(discretization.triangulation.n_global_active_cells())),
-          std::make_pair("degree", double(discretization.degree())),
-          std::make_pair("dofs", double(discretization.dof_handler.n_dofs())),
-          std::make_pair("steps", double(rows.empty() ? 0 : rows.size() - 1)),
-          std::make_pair("active-set iterations per step, mean",
-                         iterations.mean),
-          std::make_pair("active-set iterations per step, max",
-                         double(iterations.max)),
-          std::make_pair("steps whose active set cycled",
-                         double(iterations.n_cycled)),
-          std::make_pair("factorisations", double(solver.n_preparations))})
-      summary.add(key, value);
+    summary.add("ranks",
+                double(Utilities::MPI::n_mpi_processes(mpi_communicator)));
+    summary.add("cells",
+                double(discretization.triangulation.n_global_active_cells()));
+    summary.add("degree", double(discretization.degree()));
+    summary.add("element", discretization.element_name());
+    summary.add("dofs", double(discretization.dof_handler.n_dofs()));
+    summary.add("steps", double(rows.empty() ? 0 : rows.size() - 1));
+    summary.add("active-set iterations per step, mean", iterations.mean);
+    summary.add("active-set iterations per step, max", double(iterations.max));
+    summary.add("steps whose active set cycled", double(iterations.n_cycled));
+    summary.add("factorisations", double(solver.n_preparations));
     summary.add("factor", solver.factor_name());
     summary.add("substitutions", double(solver.n_substitutions));
     summary.add("time per substitution [s]",

@@ -122,7 +122,8 @@ namespace navier
              const unsigned int cells_full, // cells per side on the full plate
              const bool         quarter,
              const double       thickness_ratio,
-             const std::string &shear_integration)
+             const std::string &shear_integration,
+             const std::string &element = "lagrange")
   {
     std::ostringstream scene;
     scene << std::setprecision(17) << "subsection Analysis\n"
@@ -142,6 +143,7 @@ namespace navier
           << "  set Cells along y = " << cells << "\n"
           << "  set Polynomial degree = " << degree << "\n"
           << "  set Shear integration = " << shear_integration << "\n"
+          << "  set Element = " << element << "\n"
           << "end\n"
           << "subsection Loads\n"
           << "  subsection Pressure 1\n"

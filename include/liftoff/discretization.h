@@ -41,9 +41,9 @@ namespace liftoff
 
   /**
    * The mesh, the finite element (w, psi_x, psi_y) in
-   * FESystem(FE_Q(p), 3), the DoFHandler and the kinematic constraints of the
-   * edges and symmetry planes, on a distributed triangulation so that the
-   * same code runs serially and under MPI (step-40).
+   * FESystem(FE_Q(p), 3) or FESystem(FE_Serendipity, 3), the DoFHandler and the
+   * kinematic constraints of the edges and symmetry planes, on a distributed
+   * triangulation so that the same code runs serially and under MPI (step-40).
    */
   class Discretization
   {
@@ -108,6 +108,9 @@ namespace liftoff
 
     unsigned int
     degree() const;
+    /// "Q<p>" (Lagrange) or "S2" (serendipity), for logs and summaries.
+    std::string
+    element_name() const;
     Symmetry
     symmetry() const;
     /// How many copies of the modelled part make the plate (1, 2 or 4).
@@ -162,6 +165,9 @@ namespace liftoff
     unsigned int                 n_refinements = 0;
     std::array<EdgeCondition, 4> edges;
     DynamicSparsityPattern       sparsity_pattern;
+
+    /// FE_Serendipity (degree 2) instead of FE_Q(fe_degree).
+    bool is_serendipity = false;
 
     void
     make_constraints();
