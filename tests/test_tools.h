@@ -4,6 +4,7 @@
 // the same Simulator the executable uses, and report checks as lines
 // "PASS/FAIL <what>: <value> (limit <limit>)" with a non-zero exit on failure.
 
+#include <deal.II/base/convergence_table.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -15,6 +16,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace liftoff_tests
 {
@@ -169,10 +171,33 @@ namespace liftoff_tests
     return difference / scale;
   }
 
-  /// Observed order of convergence between two errors at ratio h1/h2 = 2.
-  inline double
-  observed_order(const double coarse_error, const double fine_error)
+  /**
+   * deal.II's ConvergenceTable, whose observed orders can also be read back
+   * for checks: add one row per run (add_value), then orders() of each error
+   * column, then write_text().
+   */
+  class OrderTable : public ConvergenceTable
   {
-    return std::log2(coarse_error / fine_error);
-  }
+  public:
+    /// Observed orders of the error column `key` between successive rows,
+    /// from ConvergenceTable's reduction_rate_log2: with `reference` (cells
+    /// along a side) the rate in that column's growth, without it one
+    /// halving (of h or dt) per row. Entry k - 1 is the order from row k - 1
+    /// to row k.
+    std::vector<double>
+    orders(const std::string &key, const std::string &reference = "")
+    {
+      if (reference.empty())
+        evaluate_convergence_rates(key, reduction_rate_log2);
+      else
+        evaluate_convergence_rates(key, reference, reduction_rate_log2, 1);
+      // The column ConvergenceTable adds for these rates; its first row
+      // holds "-".
+      const auto         &rates = columns.at(key + "...red.rate.log2").entries;
+      std::vector<double> result;
+      for (unsigned int k = 1; k < rates.size(); ++k)
+        result.push_back(rates[k].get_numeric_value());
+      return result;
+    }
+  };
 } // namespace liftoff_tests
