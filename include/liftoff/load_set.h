@@ -3,10 +3,8 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/parsed_function.h>
 
 #include <liftoff/discretization.h>
-#include <liftoff/point_functional.h>
 
 #include <array>
 #include <functional>
@@ -29,8 +27,9 @@ namespace liftoff
    * a symmetry plane carries its share.
    *
    * Whatever does not change in time is assembled once: the load vector at
-   * time tau is sum_k h_k(tau) b_k, and only pressures whose intensity
-   * names tau are integrated again at every step.
+   * time tau is sum_k h_k(tau) b_k. Only pressures and line loads whose
+   * intensity names tau (and the body force of set_body_force()) are
+   * integrated again at every step.
    */
   class LoadSet
   {
