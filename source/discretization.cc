@@ -6,6 +6,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/discretization.h>
+#include <liftoff/selection.h>
 
 #include <sys/resource.h>
 
@@ -22,20 +23,20 @@ namespace liftoff
 
   namespace
   {
-    const char *edge_condition_names =
-      "free|hard simply supported|soft simply supported|clamped";
+    const Selection<EdgeCondition> edge_conditions = {
+      {"free", EdgeCondition::free},
+      {"hard simply supported", EdgeCondition::hard_simply_supported},
+      {"soft simply supported", EdgeCondition::soft_simply_supported},
+      {"clamped", EdgeCondition::clamped}};
 
-    EdgeCondition
-    parse_edge_condition(const std::string &name)
-    {
-      if (name == "free")
-        return EdgeCondition::free;
-      if (name == "hard simply supported")
-        return EdgeCondition::hard_simply_supported;
-      if (name == "soft simply supported")
-        return EdgeCondition::soft_simply_supported;
-      return EdgeCondition::clamped;
-    }
+    const Selection<Symmetry> symmetries = {{"full", Symmetry::full},
+                                            {"half", Symmetry::half},
+                                            {"quarter", Symmetry::quarter}};
+
+    using Treatment                       = TransverseShearStrain::Treatment;
+    const Selection<Treatment> treatments = {{"full", Treatment::full},
+                                             {"reduced", Treatment::reduced},
+                                             {"mitc", Treatment::mitc}};
 
     // What the memory estimate charges, fitted to the peak memory of runs
     // of 3e3 to 5e5 unknowns with p = 1, 2, 3 on one rank
@@ -102,6 +103,7 @@ namespace liftoff
       : mpi_communicator(comm)
       , triangulation(comm)
       , dof_handler(triangulation)
+      , cache(triangulation, mapping)
   {
     edges.fill(EdgeCondition::free);
   }
@@ -113,7 +115,7 @@ namespace liftoff
     prm.enter_subsection("Discretization");
     prm.declare_entry("Symmetry",
                       "full",
-                      Patterns::Selection("full|half|quarter"),
+                      symmetries.pattern(),
                       "Which part of the plate is meshed: full; half "
                       "(x >= 0, symmetry plane x = 0); quarter (x >= 0, "
                       "y >= 0). The scene always describes the full plate "
@@ -134,13 +136,22 @@ namespace liftoff
                       "1",
                       Patterns::Integer(1, 6),
                       "Degree p of FE_Q(p) used for w, psi_x and psi_y.");
+    prm.declare_entry("Shear integration",
+                      "mitc",
+                      treatments.pattern(),
+                      "Treatment of the transverse shear term: full, "
+                      "(p+1)^2 Gauss points, locks as the plate gets thin; "
+                      "reduced, p^2 points, gives free plates spurious "
+                      "zero-energy modes; mitc, assumed natural shear "
+                      "strains (MITC4 for p = 1, MITC9 for p = 2), neither "
+                      "locks nor has spurious modes (doc/thin-plates.md).");
     prm.leave_subsection();
 
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : edge_names)
       prm.declare_entry(name,
                         "free",
-                        Patterns::Selection(edge_condition_names),
+                        edge_conditions.pattern(),
                         "Condition on this edge of the full plate. Left: "
                         "x = -1/2, Right: x = 1/2, Bottom: y = -mu/2, "
                         "Top: y = mu/2. Hard simple support fixes w and the "
@@ -154,19 +165,19 @@ namespace liftoff
   {
     prm.enter_subsection("Discretization");
     const std::string symmetry_name = prm.get("Symmetry");
-    modelled_part =
-      (symmetry_name == "full"
-         ? Symmetry::full
-         : (symmetry_name == "half" ? Symmetry::half : Symmetry::quarter));
+    modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
     n_cells_x     = prm.get_integer("Cells along x");
     n_cells_y     = prm.get_integer("Cells along y");
     n_refinements = prm.get_integer("Global refinements");
     fe_degree     = prm.get_integer("Polynomial degree");
+    shear_treatment = treatments.parse(prm.get("Shear integration"),
+                                       "Discretization/Shear integration");
     prm.leave_subsection();
 
     prm.enter_subsection("Boundary conditions");
     for (unsigned int e = 0; e < 4; ++e)
-      edges[e] = parse_edge_condition(prm.get(edge_names[e]));
+      edges[e] = edge_conditions.parse(prm.get(edge_names[e]),
+                                       "Boundary conditions/" + edge_names[e]);
     prm.leave_subsection();
 
     // A symmetric model is only right for a symmetric plate.
@@ -372,6 +383,20 @@ namespace liftoff
   }
 
 
+  const GridTools::Cache<2> &
+  Discretization::grid_cache() const
+  {
+    return cache;
+  }
+
+
+  TransverseShearStrain::Treatment
+  Discretization::shear_integration() const
+  {
+    return shear_treatment;
+  }
+
+
   Symmetry
   Discretization::symmetry() const
   {
@@ -398,13 +423,6 @@ namespace liftoff
       default:
         return {0, 1};
       }
-  }
-
-
-  EdgeCondition
-  Discretization::edge_condition(const unsigned int edge) const
-  {
-    return edges[edge];
   }
 
 

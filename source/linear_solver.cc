@@ -2,6 +2,7 @@
 #include <deal.II/lac/solver_cg.h>
 
 #include <liftoff/linear_solver.h>
+#include <liftoff/selection.h>
 
 #include <Epetra_Comm.h>
 #include <Epetra_CrsMatrix.h>
@@ -157,20 +158,31 @@ namespace liftoff
   };
 
 
+  namespace
+  {
+    const Selection<LinearSolver::Type> types =
+      {{"direct", LinearSolver::Type::direct}, {"cg", LinearSolver::Type::cg}};
+    const Selection<LinearSolver::Package> packages = {
+      {"cholmod", LinearSolver::Package::cholmod},
+      {"mumps", LinearSolver::Package::mumps},
+      {"klu", LinearSolver::Package::klu}};
+  } // namespace
+
+
   void
   LinearSolver::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Type",
                       "direct",
-                      Patterns::Selection("direct|cg"),
+                      types.pattern(),
                       "direct: sparse LU, factorised once and then used to "
                       "precondition CG on the changed matrices; cg: "
                       "conjugate gradients with algebraic multigrid.");
     prm.declare_entry(
       "Direct solver package",
       "cholmod",
-      Patterns::Selection("cholmod|mumps|klu"),
+      packages.pattern(),
       "Factorisation for Type = direct. cholmod: CHOLMOD's sparse Cholesky "
       "factor (SuiteSparse), the fastest on one rank; it is serial, so on "
       "several ranks, or for a matrix that is not positive definite, MUMPS's "
@@ -200,10 +212,9 @@ namespace liftoff
   LinearSolver::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type = (prm.get("Type") == "direct" ? Type::direct : Type::cg);
-    const std::string package = prm.get("Direct solver package");
-    prefers_cholesky          = (package == "cholmod");
-    direct_package = (package == "klu" ? "Amesos_Klu" : "Amesos_Mumps");
+    type    = types.parse(prm.get("Type"), "Linear solver/Type");
+    package = packages.parse(prm.get("Direct solver package"),
+                             "Linear solver/Direct solver package");
     refactorisation_threshold = prm.get_integer("Refactorisation threshold");
     tolerance                 = prm.get_double("Tolerance");
     max_iterations            = prm.get_integer("Maximum iterations");
@@ -230,8 +241,18 @@ namespace liftoff
     if (cholesky)
       return "CHOLMOD Cholesky";
     if (direct)
-      return direct_package == "Amesos_Klu" ? "KLU LU" : "MUMPS LU";
+      return package == Package::klu ? "KLU LU" : "MUMPS LU";
     return type == Type::cg ? "none (CG + AMG)" : "none";
+  }
+
+
+  Discretization::Factor
+  LinearSolver::factor_placement() const
+  {
+    if (type == Type::cg)
+      return Discretization::Factor::none;
+    return package == Package::klu ? Discretization::Factor::on_rank_0
+                                   : Discretization::Factor::distributed;
   }
 
 
@@ -255,7 +276,8 @@ namespace liftoff
         // The number of ranks is the same on all of them, and so is the
         // test of positive definiteness (one rank), so every rank takes the
         // same branch.
-        if (prefers_cholesky && A.trilinos_matrix().Comm().NumProc() == 1)
+        if (package == Package::cholmod
+            && A.trilinos_matrix().Comm().NumProc() == 1)
           {
             cholesky = std::make_unique<CholeskyFactor>();
             if (cholesky->factorise(A.trilinos_matrix()))
@@ -271,8 +293,8 @@ namespace liftoff
         direct_control.set_max_steps(1);
         direct = std::make_unique<TrilinosWrappers::SolverDirect>(
           direct_control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         direct_package));
+          TrilinosWrappers::SolverDirect::AdditionalData(
+            false, package == Package::klu ? "Amesos_Klu" : "Amesos_Mumps"));
         direct->initialize(A);
       }
     else

@@ -3,12 +3,13 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/load_set.h>
+#include <liftoff/point_functional.h>
 #include <liftoff/scene_input.h>
+#include <liftoff/selection.h>
 
 #include <cmath>
 #include <functional>
 #include <iomanip>
-#include <map>
 #include <regex>
 #include <sstream>
 
@@ -36,6 +37,13 @@ namespace liftoff
       q[axis]    = -q[axis];
       return q;
     }
+
+    // Edges of the full plate, by their boundary ids.
+    const Selection<unsigned int> plate_edges = {
+      {"Left", Discretization::left_edge},
+      {"Right", Discretization::right_edge},
+      {"Bottom", Discretization::bottom_edge},
+      {"Top", Discretization::top_edge}};
 
     bool
     nearly_equal(const double a, const double b)
@@ -110,7 +118,7 @@ namespace liftoff
                           "Force per unit length; 0 switches the load off.");
         prm.declare_entry("Edge",
                           "Right",
-                          Patterns::Selection("Left|Right|Bottom|Top"),
+                          plate_edges.pattern(),
                           "Edge of the full plate that carries the load.");
         prm.declare_entry("Intensity",
                           "1",
@@ -179,10 +187,8 @@ namespace liftoff
                 }
               else
                 {
-                  const std::string edge = prm.get("Edge");
-                  for (unsigned int e = 0; e < 4; ++e)
-                    if (Discretization::edge_names[e] == edge)
-                      load.edge = e;
+                  load.edge =
+                    plate_edges.parse(prm.get("Edge"), load.name + "/Edge");
                 }
             }
           if (load.magnitude != 0.0)

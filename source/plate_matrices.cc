@@ -5,41 +5,12 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <liftoff/plate_matrices.h>
+#include <liftoff/transverse_shear_strain.h>
 
 #include <cmath>
 
 namespace liftoff
 {
-  void
-  PlateMatrices::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Discretization");
-    prm.declare_entry("Shear integration",
-                      "mitc",
-                      Patterns::Selection("full|reduced|mitc"),
-                      "Treatment of the transverse shear term: full, "
-                      "(p+1)^2 Gauss points, locks as the plate gets thin; "
-                      "reduced, p^2 points, gives free plates spurious "
-                      "zero-energy modes; mitc, assumed natural shear "
-                      "strains (MITC4 for p = 1, MITC9 for p = 2), neither "
-                      "locks nor has spurious modes (doc/thin-plates.md).");
-    prm.leave_subsection();
-  }
-
-
-  void
-  PlateMatrices::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Discretization");
-    const std::string treatment = prm.get("Shear integration");
-    shear_integration =
-      (treatment == "full"      ? TransverseShearStrain::Treatment::full
-       : treatment == "reduced" ? TransverseShearStrain::Treatment::reduced
-                                : TransverseShearStrain::Treatment::mitc);
-    prm.leave_subsection();
-  }
-
-
   void
   PlateMatrices::assemble(const Discretization &disc, const MindlinPlate &plate)
   {
@@ -54,7 +25,9 @@ namespace liftoff
                           fe,
                           full_rule,
                           update_values | update_gradients | update_JxW_values);
-    TransverseShearStrain shear_strain(disc.mapping, fe, shear_integration);
+    TransverseShearStrain shear_strain(disc.mapping,
+                                       fe,
+                                       disc.shear_integration());
 
     const FEValuesExtractors::Scalar w(0), psi_x(1), psi_y(2);
     const double                     nu       = plate.poisson_ratio;

@@ -108,11 +108,11 @@ namespace liftoff
 
     MindlinPlate::declare_parameters(prm);
     Discretization::declare_parameters(prm);
-    PlateMatrices::declare_parameters(prm);
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
     NewmarkIntegrator::declare_parameters(prm);
     ActiveSetIteration::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
@@ -137,11 +137,11 @@ namespace liftoff
 
     plate.parse_parameters(prm);
     discretization.parse_parameters(prm);
-    matrices.parse_parameters(prm);
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
     active_set.parse_parameters(prm);
+    active_set.linear_solver().parse_parameters(prm);
     field_output.parse_parameters(prm);
     time_history.parse_parameters(prm);
     profile_output.parse_parameters(prm);
@@ -168,14 +168,7 @@ namespace liftoff
     // Geometry-dependent checks need the mesh; building it writes nothing,
     // but what it and the solver would allocate is estimated first (the
     // direct solver's factor dominates a large scene).
-    prm.enter_subsection("Linear solver");
-    const auto factor = prm.get("Type") == "cg"
-                          ? Discretization::Factor::none
-                          : (prm.get("Direct solver package") == "klu"
-                               ? Discretization::Factor::on_rank_0
-                               : Discretization::Factor::distributed);
-    prm.leave_subsection();
-    discretization.check_memory(factor);
+    discretization.check_memory(active_set.linear_solver().factor_placement());
     discretization.setup(plate);
     if (analysis == Analysis::static_analysis)
       loads.check_against(discretization, 0.0, 0);

@@ -47,7 +47,6 @@ namespace
     ParameterHandler prm;
     liftoff::MindlinPlate::declare_parameters(prm);
     liftoff::Discretization::declare_parameters(prm);
-    liftoff::PlateMatrices::declare_parameters(prm);
     std::istringstream scene(
       liftoff_tests::square_plate(thickness_ratio, 0.3, 5.0 / 6.0)
       + "subsection Discretization\n"
@@ -63,7 +62,6 @@ namespace
     discretization.parse_parameters(prm);
     discretization.setup(plate);
     liftoff::PlateMatrices matrices;
-    matrices.parse_parameters(prm);
     matrices.assemble(discretization, plate);
 
     const unsigned int       n = discretization.dof_handler.n_dofs();
