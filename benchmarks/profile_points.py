@@ -10,39 +10,33 @@ and to write one profile.
 """
 
 import argparse
+import os
 import subprocess
+import sys
 import tempfile
 import time
 
-SCENE = """
-subsection Discretization
-  set Cells along x     = 100
-  set Cells along y     = 100
-  set Polynomial degree = 1
-end
-subsection Loads
-  subsection Point load 1
-    set Magnitude = 1
-  end
-end
-subsection Time integration
-  set Time step = 1e-3
-  set End time  = 1e-3
-end
-subsection Output
-  set Directory      = {directory}
-  set VTU interval   = 0
-  set Profile start  = -0.5, -0.5
-  set Profile end    = 0.5, 0.5
-  set Profile points = {n_points}
-  set Profile times  = 1e-3
-end
-"""
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__))), "scripts"))
+from liftoff_runs import override_text  # noqa: E402
+
+SCENE = ["Discretization/Cells along x=100",
+         "Discretization/Cells along y=100",
+         "Discretization/Polynomial degree=1",
+         "Loads/Point load 1/Magnitude=1",
+         "Time integration/Time step=1e-3",
+         "Time integration/End time=1e-3",
+         "Output/VTU interval=0",
+         "Output/Profile start=-0.5, -0.5",
+         "Output/Profile end=0.5, 0.5",
+         "Output/Profile times=1e-3"]
 
 
 def wall_time(executable, n_points, ranks):
     with tempfile.TemporaryDirectory() as folder:
-        scene = SCENE.format(directory=folder + "/out", n_points=n_points)
+        scene = override_text(SCENE + [
+            "Output/Directory=" + folder + "/out",
+            "Output/Profile points=%d" % n_points])
         command = [executable, "-"]
         if ranks > 1:
             command = ["mpirun", "--allow-run-as-root", "--oversubscribe",
