@@ -15,9 +15,8 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
-  const std::string scene = liftoff_tests::symmetric_scene("quarter", 5, 4);
+  liftoff_tests::Checks checks(argc, argv);
+  const std::string     scene = liftoff_tests::symmetric_scene("quarter", 5, 4);
 
   const auto solver = [&](const std::string &settings) {
     return liftoff_tests::run_scene(scene + "subsection Linear solver\n"

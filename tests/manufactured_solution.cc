@@ -447,8 +447,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
+  liftoff_tests::Checks checks(argc, argv);
   std::cout << std::scientific << std::setprecision(4);
   std::cout << "S = " << S << ", I = " << I << ", Gamma = " << gamma_foundation
             << ", nu = " << poisson_ratio << std::endl;

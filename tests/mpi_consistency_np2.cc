@@ -13,12 +13,9 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
-  const unsigned int                       rank =
+  liftoff_tests::Checks checks(argc, argv, 2);
+  const unsigned int    rank =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-              dealii::ExcMessage("Run this test on two ranks."));
 
   const std::string scene    = liftoff_tests::symmetric_scene("full", 10, 8);
   const auto        parallel = liftoff_tests::run_scene(scene);

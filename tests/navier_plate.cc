@@ -23,8 +23,7 @@ using namespace navier;
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
+  liftoff_tests::Checks checks(argc, argv);
   std::cout << std::scientific << std::setprecision(4);
 
   // --- The reference itself -------------------------------------------

@@ -81,10 +81,9 @@ end
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
-  const double                             omega = std::sqrt(gamma_f);
-  const auto                               exact = [&](const double tau) {
+  liftoff_tests::Checks checks(argc, argv);
+  const double          omega = std::sqrt(gamma_f);
+  const auto            exact = [&](const double tau) {
     return q / gamma_f * (1 - std::cos(omega * tau));
   };
 

@@ -68,8 +68,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks            checks;
+  liftoff_tests::Checks checks(argc, argv);
 
   // Only to show that the checks can fail: "bilateral" as the argument runs
   // the same scenes with springs that pull (see the comment at the top).

@@ -30,8 +30,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks            checks;
+  liftoff_tests::Checks checks(argc, argv);
 
   liftoff_tests::TimoshenkoBeamOnFoundation beam(S, Gamma);
   beam.solve(half_length, F);

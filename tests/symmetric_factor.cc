@@ -35,8 +35,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
+  liftoff_tests::Checks checks(argc, argv);
 
   for (const auto &[name, scene] :
        {std::make_pair("plate",

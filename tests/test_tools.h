@@ -46,6 +46,40 @@ namespace liftoff_tests
     return simulator;
   }
 
+  /// prm text that sets one entry, named by its path ("Time integration/End
+  /// time"); numbers with every digit they have.
+  template <typename Value>
+  inline std::string
+  set(const std::string &path, const Value &value)
+  {
+    const std::vector<std::string> names =
+      Utilities::split_string_list(path, '/');
+    std::ostringstream text;
+    text << std::setprecision(17);
+    for (unsigned int k = 0; k + 1 < names.size(); ++k)
+      text << "subsection " << names[k] << "\n";
+    text << "  set " << names.back() << " = " << value << "\n";
+    for (unsigned int k = 0; k + 1 < names.size(); ++k)
+      text << "end\n";
+    return text.str();
+  }
+
+  /// prm text: the small dynamic scene of several tests, a quarter of the
+  /// default square plate on 6 x 6 Q2 cells under a unit force suddenly
+  /// applied at its centre, 40 steps of 5e-4 (the contact set moves in
+  /// every step).
+  inline std::string
+  small_plate_scene()
+  {
+    return set("Discretization/Symmetry", "quarter")
+           + set("Discretization/Cells along x", 6)
+           + set("Discretization/Cells along y", 6)
+           + set("Discretization/Polynomial degree", 2)
+           + set("Loads/Point load 1/Magnitude", 1)
+           + set("Time integration/Time step", 5e-4)
+           + set("Time integration/End time", 0.02);
+  }
+
   /// prm text: a square plate of the given section.
   inline std::string
   square_plate(const double thickness_ratio,
@@ -72,9 +106,24 @@ namespace liftoff_tests
     return text + "end\n";
   }
 
+  /**
+   * The checks of a test program, and what every test's main() starts
+   * with: constructing them starts MPI (one thread per rank) for the life
+   * of the program, and a test written for `n_ranks` ranks (0: any number)
+   * refuses to run on another number.
+   */
   class Checks
   {
   public:
+    Checks(int &argc, char **&argv, const unsigned int n_ranks = 0)
+        : mpi(argc, argv, 1)
+    {
+      AssertThrow(
+        n_ranks == 0
+          || Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == n_ranks,
+        ExcMessage("Run this test on " + std::to_string(n_ranks) + " ranks."));
+    }
+
     /// Pass if value < limit (NaN fails).
     void
     less(const std::string &what, const double value, const double limit)
@@ -110,7 +159,8 @@ namespace liftoff_tests
     }
 
   private:
-    int failures = 0;
+    Utilities::MPI::MPI_InitFinalize mpi;
+    int                              failures = 0;
 
     static bool
     is_root()
