@@ -68,6 +68,9 @@ COLUMNS = [
     ("subst_per_step", "subst./step"),
     ("floor", "floor"),
     ("ratio_floor", "per step/floor"),
+    ("updated_columns", "updated columns"),
+    ("probe_difference", "probes vs ref."),
+    ("contact_difference", "contact vs ref."),
 ]
 
 
@@ -147,7 +150,8 @@ def tabulate(directory, scene, overrides, ranks, label):
     iter_mean = float(values["active-set iterations per step, mean"])
     wall = float(values["wall time [s]"])
     setup = section("setup", "assembly", "initial acceleration")
-    foundation = section("foundation assembly", "foundation update")
+    foundation = section("foundation assembly", "foundation update",
+                         "factor update")
     factorisation = section("factorisation", "preconditioner")
     solve = section("solve")
     contact = section("contact update")
@@ -192,8 +196,38 @@ def tabulate(directory, scene, overrides, ranks, label):
         "untimed": "%.2f" % (wall - sum(sections.values())),
         "subst_per_step": "%.2f" % (float(values.get("substitutions", "0"))
                                     / max(steps, 1)),
+        "updated_columns": values.get("factor updates, columns", ""),
+        "directory": directory,
     }
     return row
+
+
+def read_history(directory):
+    with open(os.path.join(directory, "history.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+def compare_histories(rows, reference):
+    """Each row's probe histories against those of the reference run: the
+    largest difference over the steps relative to the largest |value| of
+    the reference's probe; and the largest difference of the contact
+    fractions."""
+    ref = read_history(reference["directory"])
+    probes = [k for k in ref[0] if k.startswith("w(")]
+    for row in rows:
+        own = read_history(row["directory"])
+        if len(own) != len(ref):
+            row["probe_difference"] = "%d vs %d rows" % (len(own), len(ref))
+            continue
+        worst = 0.0
+        for k in probes:
+            scale = max(abs(float(r[k])) for r in ref) or 1.0
+            worst = max(worst, max(abs(float(a[k]) - float(b[k]))
+                                   for a, b in zip(own, ref)) / scale)
+        row["probe_difference"] = "%.2g" % worst
+        row["contact_difference"] = "%.2g" % max(
+            abs(float(a["contact_fraction"]) - float(b["contact_fraction"]))
+            for a, b in zip(own, ref))
 
 
 def set_floor(rows, floor):
@@ -227,7 +261,8 @@ def write_tables(new_rows):
             rows = list(csv.DictReader(f))
     rows = [derived(r) for r in rows + new_rows]
     with open(RESULTS_CSV, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=[k for k, _ in COLUMNS])
+        writer = csv.DictWriter(f, fieldnames=[k for k, _ in COLUMNS],
+                                extrasaction="ignore")
         writer.writeheader()
         writer.writerows(rows)
     lines = ["# Benchmark results",
@@ -266,11 +301,18 @@ def main():
                         "(e.g. an older commit's, for a baseline)")
     parser.add_argument("--commit", help="commit to record with "
                         "--executable")
-    parser.add_argument("--baseline", metavar="EXECUTABLE",
+    parser.add_argument("--baseline", metavar="EXECUTABLE", action="append",
+                        default=[],
                         help="run each scene with this binary first, then "
                         "with the built one, back to back (label "
-                        "LABEL-baseline)")
-    parser.add_argument("--baseline-commit", default="unknown")
+                        "LABEL-baseline, or LABEL-baseline-COMMIT when "
+                        "repeated); the first is the reference of the "
+                        "history comparison")
+    parser.add_argument("--baseline-commit", action="append", default=[])
+    parser.add_argument("--repeat", type=int, default=1,
+                        help="run everything this many times, interleaved "
+                        "(baselines and new binary of a scene back to back); "
+                        "prints the spread of the time per step")
     parser.add_argument("--tabulate", metavar="RUN_FOLDER",
                         help="do not run: tabulate this finished run of the "
                         "one scene given (with its --label, --ranks, --set)")
@@ -293,24 +335,39 @@ def main():
         return 0
     if not args.no_build:
         build()
+    commits = args.baseline_commit + ["unknown"] * len(args.baseline)
+    baselines = list(zip(args.baseline, commits))
     rows = []
-    for scene in args.scenes:
-        scene_rows = []
-        if args.baseline:
-            EXECUTABLE, built = os.path.abspath(args.baseline), EXECUTABLE
-            COMMIT, own = args.baseline_commit, COMMIT
+    for _ in range(args.repeat):
+        for scene in args.scenes:
+            scene_rows = []
+            for executable, baseline_commit in baselines:
+                EXECUTABLE, built = os.path.abspath(executable), EXECUTABLE
+                COMMIT, own = baseline_commit, COMMIT
+                label = args.label + "-baseline" + (
+                    "-" + baseline_commit if len(baselines) > 1 else "")
+                scene_rows.append(derived(run_one(scene, args.set,
+                                                  args.ranks, label)))
+                EXECUTABLE, COMMIT = built, own
             scene_rows.append(derived(run_one(scene, args.set, args.ranks,
-                                              args.label + "-baseline")))
-            EXECUTABLE, COMMIT = built, own
-        scene_rows.append(derived(run_one(scene, args.set, args.ranks,
-                                          args.label)))
-        own = scene_rows[-1]
-        if "CHOLMOD" in own["factor"] and float(own["substitution"] or 0):
-            set_floor(scene_rows, float(own["substitution"]))
-        for row in scene_rows:
-            print("  ".join("%s=%s" % (h, row.get(k, ""))
-                            for k, h in COLUMNS[3:]), flush=True)
-        rows += scene_rows
+                                              args.label)))
+            own = scene_rows[-1]
+            if "CHOLMOD" in own["factor"] and float(own["substitution"] or 0):
+                set_floor(scene_rows, float(own["substitution"]))
+            compare_histories(scene_rows, scene_rows[0])
+            for row in scene_rows:
+                print("  ".join("%s=%s" % (h, row.get(k, ""))
+                                for k, h in COLUMNS[3:]), flush=True)
+            rows += scene_rows
+    if args.repeat > 1:
+        print("time per step over %d repetitions (min, median, max):"
+              % args.repeat)
+        for key in sorted({(r["scene"], r["label"]) for r in rows}):
+            times = sorted(float(r["per_step"]) for r in rows
+                           if (r["scene"], r["label"]) == key)
+            print("  %s %s: %.4g, %.4g, %.4g (spread %.0f %%)" % (
+                key + (times[0], times[len(times) // 2], times[-1],
+                       100 * (times[-1] / times[0] - 1))))
     write_tables(rows)
     print("appended %d row(s) to %s; table in %s" %
           (len(rows), RESULTS_CSV, RESULTS_MD))

@@ -1,9 +1,23 @@
 #include <liftoff/active_set_iteration.h>
+#include <liftoff/selection.h>
 
 #include <cmath>
 
 namespace liftoff
 {
+  namespace
+  {
+    using CycleRule                        = ActiveSetIteration::CycleRule;
+    const Selection<CycleRule> cycle_rules = {{"union",
+                                               CycleRule::union_of_cycle},
+                                              {"stop", CycleRule::stop},
+                                              {"none", CycleRule::none}};
+    // Whether the iteration starts from the prediction's contact set.
+    const Selection<bool> initial_sets = {{"predicted", true},
+                                          {"previous", false}};
+  } // namespace
+
+
   void
   ActiveSetIteration::declare_parameters(ParameterHandler &prm)
   {
@@ -16,7 +30,7 @@ namespace liftoff
     prm.declare_entry(
       "Cycle rule",
       "union",
-      Patterns::Selection("union|stop|none"),
+      cycle_rules.pattern(),
       "When the contact set of a step returns to a set it had before "
       "(a cycle that would never settle): union, solve once more with every "
       "Gauss point in contact that was in contact in any set of the cycle "
@@ -26,7 +40,7 @@ namespace liftoff
     prm.declare_entry(
       "Initial set",
       "predicted",
-      Patterns::Selection("predicted|previous"),
+      initial_sets.pattern(),
       "The contact set a time step's iteration starts from. predicted: "
       "the set of the Newmark predictor u + dt v + dt^2/2 a (the points it "
       "presses into the foundation); previous: the set the previous step "
@@ -35,7 +49,6 @@ namespace liftoff
       "keep the previous step's status, so both reach the same sets; the "
       "prediction mostly needs fewer iterations.");
     prm.leave_subsection();
-    LinearSolver::declare_parameters(prm);
   }
 
 
@@ -43,19 +56,24 @@ namespace liftoff
   ActiveSetIteration::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Active set");
-    max_iterations         = prm.get_integer("Maximum iterations");
-    const std::string rule = prm.get("Cycle rule");
-    cycle_rule             = (rule == "union"  ? CycleRule::union_of_cycle
-                              : rule == "stop" ? CycleRule::stop
-                                               : CycleRule::none);
-    starts_from_prediction = (prm.get("Initial set") == "predicted");
+    max_iterations = prm.get_integer("Maximum iterations");
+    cycle_rule =
+      cycle_rules.parse(prm.get("Cycle rule"), "Active set/Cycle rule");
+    starts_from_prediction =
+      initial_sets.parse(prm.get("Initial set"), "Active set/Initial set");
     prm.leave_subsection();
-    solver.parse_parameters(prm);
   }
 
 
   const LinearSolver &
   ActiveSetIteration::linear_solver() const
+  {
+    return solver;
+  }
+
+
+  LinearSolver &
+  ActiveSetIteration::linear_solver()
   {
     return solver;
   }

@@ -8,7 +8,6 @@
 #include <liftoff/checkpoint.h>
 #include <liftoff/output_files.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <zlib.h>
 
 #include <cstdint>
@@ -242,16 +241,10 @@ namespace liftoff
   std::vector<double>
   matrix_values(const LA::MPI::SparseMatrix &A)
   {
-    const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
-    std::vector<double>     values;
-    values.reserve(matrix.NumMyNonzeros());
-    for (int row = 0; row < matrix.NumMyRows(); ++row)
-      {
-        int     n          = 0;
-        double *row_values = nullptr;
-        matrix.ExtractMyRowView(row, n, row_values);
-        values.insert(values.end(), row_values, row_values + n);
-      }
+    std::vector<double> values;
+    values.reserve(A.trilinos_matrix().NumMyNonzeros());
+    for (const auto &entry : A)
+      values.push_back(entry.value());
     return values;
   }
 
@@ -259,25 +252,17 @@ namespace liftoff
   void
   set_matrix_values(const std::vector<double> &values, LA::MPI::SparseMatrix &A)
   {
-    // The wrapper hands out only a const Epetra matrix; its rows are
-    // overwritten in place, which keeps the structure and needs no
-    // communication.
-    auto &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
-    AssertThrow(values.size() == std::size_t(matrix.NumMyNonzeros()),
-                ExcMessage("The checkpoint holds "
-                           + std::to_string(values.size())
-                           + " matrix entries where this rank has "
-                           + std::to_string(matrix.NumMyNonzeros())
-                           + ": it was written for another mesh."));
+    const std::size_t n = A.trilinos_matrix().NumMyNonzeros();
+    AssertThrow(values.size() == n,
+                ExcMessage(
+                  "The checkpoint holds " + std::to_string(values.size())
+                  + " matrix entries where this rank has " + std::to_string(n)
+                  + ": it was written for another mesh."));
+    // The same order as matrix_values() walks.
     auto next = values.begin();
-    for (int row = 0; row < matrix.NumMyRows(); ++row)
-      {
-        int     n          = 0;
-        double *row_values = nullptr;
-        matrix.ExtractMyRowView(row, n, row_values);
-        std::copy(next, next + n, row_values);
-        next += n;
-      }
+    for (auto entry = A.begin(); entry != A.end(); ++entry)
+      entry->value() = *next++;
+    A.compress(VectorOperation::insert);
   }
 
 

@@ -7,6 +7,7 @@
 
 #include <liftoff/discretization.h>
 #include <liftoff/fe_serendipity.h>
+#include <liftoff/selection.h>
 
 #include <sys/resource.h>
 
@@ -23,20 +24,23 @@ namespace liftoff
 
   namespace
   {
-    const char *edge_condition_names =
-      "free|hard simply supported|soft simply supported|clamped";
+    const Selection<EdgeCondition> edge_conditions = {
+      {"free", EdgeCondition::free},
+      {"hard simply supported", EdgeCondition::hard_simply_supported},
+      {"soft simply supported", EdgeCondition::soft_simply_supported},
+      {"clamped", EdgeCondition::clamped}};
 
-    EdgeCondition
-    parse_edge_condition(const std::string &name)
-    {
-      if (name == "free")
-        return EdgeCondition::free;
-      if (name == "hard simply supported")
-        return EdgeCondition::hard_simply_supported;
-      if (name == "soft simply supported")
-        return EdgeCondition::soft_simply_supported;
-      return EdgeCondition::clamped;
-    }
+    const Selection<Symmetry> symmetries = {{"full", Symmetry::full},
+                                            {"half", Symmetry::half},
+                                            {"quarter", Symmetry::quarter}};
+
+    using Treatment = TransverseShearStrain::Treatment;
+    // true: FE_Serendipity.
+    const Selection<bool>      elements   = {{"lagrange", false},
+                                             {"serendipity", true}};
+    const Selection<Treatment> treatments = {{"full", Treatment::full},
+                                             {"reduced", Treatment::reduced},
+                                             {"mitc", Treatment::mitc}};
 
     // What the memory estimate charges, fitted to the peak memory of runs
     // of 3e3 to 5e5 unknowns with p = 1, 2, 3 on one rank
@@ -103,6 +107,7 @@ namespace liftoff
       : mpi_communicator(comm)
       , triangulation(comm)
       , dof_handler(triangulation)
+      , cache(triangulation, mapping)
   {
     edges.fill(EdgeCondition::free);
   }
@@ -114,7 +119,7 @@ namespace liftoff
     prm.enter_subsection("Discretization");
     prm.declare_entry("Symmetry",
                       "full",
-                      Patterns::Selection("full|half|quarter"),
+                      symmetries.pattern(),
                       "Which part of the plate is meshed: full; half "
                       "(x >= 0, symmetry plane x = 0); quarter (x >= 0, "
                       "y >= 0). The scene always describes the full plate "
@@ -139,19 +144,28 @@ namespace liftoff
     prm.declare_entry(
       "Element",
       "lagrange",
-      Patterns::Selection("lagrange|serendipity"),
+      elements.pattern(),
       "Finite element for w, psi_x and psi_y: lagrange, FE_Q(p) with "
       "(p+1)^2 nodes per cell (p = 2: the nine-node element); serendipity, "
       "the paper's eight-node quadrilateral (vertices and edge mid-points, "
       "no centre node), only with Polynomial degree = 2 and Shear "
       "integration = full or reduced (doc/model.md).");
+    prm.declare_entry("Shear integration",
+                      "mitc",
+                      treatments.pattern(),
+                      "Treatment of the transverse shear term: full, "
+                      "(p+1)^2 Gauss points, locks as the plate gets thin; "
+                      "reduced, p^2 points, gives free plates spurious "
+                      "zero-energy modes; mitc, assumed natural shear "
+                      "strains (MITC4 for p = 1, MITC9 for p = 2), neither "
+                      "locks nor has spurious modes (doc/thin-plates.md).");
     prm.leave_subsection();
 
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : edge_names)
       prm.declare_entry(name,
                         "free",
-                        Patterns::Selection(edge_condition_names),
+                        edge_conditions.pattern(),
                         "Condition on this edge of the full plate. Left: "
                         "x = -1/2, Right: x = 1/2, Bottom: y = -mu/2, "
                         "Top: y = mu/2. Hard simple support fixes w and the "
@@ -165,16 +179,16 @@ namespace liftoff
   {
     prm.enter_subsection("Discretization");
     const std::string symmetry_name = prm.get("Symmetry");
-    modelled_part =
-      (symmetry_name == "full"
-         ? Symmetry::full
-         : (symmetry_name == "half" ? Symmetry::half : Symmetry::quarter));
+    modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
     n_cells_x     = prm.get_integer("Cells along x");
     n_cells_y     = prm.get_integer("Cells along y");
     n_refinements = prm.get_integer("Global refinements");
     fe_degree     = prm.get_integer("Polynomial degree");
+    shear_treatment = treatments.parse(prm.get("Shear integration"),
+                                       "Discretization/Shear integration");
 
-    is_serendipity = (prm.get("Element") == "serendipity");
+    is_serendipity =
+      elements.parse(prm.get("Element"), "Discretization/Element");
     if (is_serendipity)
       {
         AssertThrow(fe_degree == 2,
@@ -185,8 +199,7 @@ namespace liftoff
         // The assumed strains of Shear integration = mitc are tied at the
         // points of the nine-node element's strain space; the eight-node
         // element would need its own scheme (MITC8), which liftoff lacks.
-        const std::string shear = prm.get("Shear integration");
-        AssertThrow(shear != "mitc",
+        AssertThrow(shear_treatment != TransverseShearStrain::Treatment::mitc,
                     ExcMessage("Discretization/Element = serendipity works "
                                "with Discretization/Shear integration = full "
                                "or reduced, not mitc (its tying points "
@@ -196,7 +209,8 @@ namespace liftoff
 
     prm.enter_subsection("Boundary conditions");
     for (unsigned int e = 0; e < 4; ++e)
-      edges[e] = parse_edge_condition(prm.get(edge_names[e]));
+      edges[e] = edge_conditions.parse(prm.get(edge_names[e]),
+                                       "Boundary conditions/" + edge_names[e]);
     prm.leave_subsection();
 
     // A symmetric model is only right for a symmetric plate.
@@ -412,6 +426,20 @@ namespace liftoff
   }
 
 
+  const GridTools::Cache<2> &
+  Discretization::grid_cache() const
+  {
+    return cache;
+  }
+
+
+  TransverseShearStrain::Treatment
+  Discretization::shear_integration() const
+  {
+    return shear_treatment;
+  }
+
+
   Symmetry
   Discretization::symmetry() const
   {
@@ -438,13 +466,6 @@ namespace liftoff
       default:
         return {0, 1};
       }
-  }
-
-
-  EdgeCondition
-  Discretization::edge_condition(const unsigned int edge) const
-  {
-    return edges[edge];
   }
 
 

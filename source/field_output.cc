@@ -266,6 +266,48 @@ namespace liftoff
             });
       });
     }
+    // Every file goes to a temporary name first and is renamed when
+    // complete, and the record naming the pieces is written only after every
+    // rank has renamed its piece: a viewer never finds a half-written file.
+    // Returns the name of the record (the .pvtu).
+    std::string
+    write_vtu_pieces(const std::string &directory,
+                     const PlateFields &data_out,
+                     const MPI_Comm     comm,
+                     const double       time,
+                     const std::string &stem)
+    {
+      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const auto         piece   = [&](const unsigned int r) {
+        return stem + "." + Utilities::int_to_string(r, 4) + ".vtu";
+      };
+      // A failure on one rank stops all of them here (this is also the
+      // barrier before the record), not in a later collective call.
+      const std::string what = "Writing " + stem + " failed";
+      collective_attempt(comm, what, [&]() {
+        write_file_atomically(directory + "/" + piece(rank),
+                              [&](std::ostream &out) {
+                                std::ostringstream vtu;
+                                data_out.write_vtu(vtu);
+                                out << with_liftoff_metadata(vtu.str(), time);
+                              });
+      });
+      const std::string master = stem + ".pvtu";
+      collective_attempt(comm, what, [&]() {
+        if (rank != 0)
+          return;
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(piece(r));
+        write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
+          std::ostringstream pvtu;
+          data_out.write_pvtu_record(pvtu, pieces);
+          out << with_liftoff_metadata(pvtu.str(), time);
+        });
+      });
+      return master;
+    }
   } // namespace
 
 
@@ -358,40 +400,10 @@ namespace liftoff
     flags.physical_units           = field_units;
     data_out.set_flags(flags);
 
-    // Every file goes to a temporary name first and is renamed when
-    // complete, and the record naming the pieces is written only after every
-    // rank has renamed its piece: a viewer never finds a half-written file.
-    const MPI_Comm     comm    = disc.mpi_communicator;
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const std::string  stem  = "solution_" + Utilities::int_to_string(step, 5);
-    const auto         piece = [&](const unsigned int r) {
-      return stem + "." + Utilities::int_to_string(r, 4) + ".vtu";
-    };
-    // A failure on one rank stops all of them here (this is also the
-    // barrier before the record), not in a later collective call.
-    const std::string what = "Writing " + stem + " failed";
-    collective_attempt(comm, what, [&]() {
-      write_file_atomically(directory + "/" + piece(rank),
-                            [&](std::ostream &out) {
-                              std::ostringstream vtu;
-                              data_out.write_vtu(vtu);
-                              out << with_liftoff_metadata(vtu.str(), time);
-                            });
-    });
-    const std::string master = stem + ".pvtu";
-    collective_attempt(comm, what, [&]() {
-      if (rank != 0)
-        return;
-      std::vector<std::string> pieces;
-      for (unsigned int r = 0; r < n_ranks; ++r)
-        pieces.push_back(piece(r));
-      write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
-        std::ostringstream pvtu;
-        data_out.write_pvtu_record(pvtu, pieces);
-        out << with_liftoff_metadata(pvtu.str(), time);
-      });
-    });
+    const MPI_Comm    comm = disc.mpi_communicator;
+    const std::string stem = "solution_" + Utilities::int_to_string(step, 5);
+    const std::string master =
+      write_vtu_pieces(directory, data_out, comm, time, stem);
     if (writes_hdf5)
       write_hdf5(directory, data_out, comm, time, stem, records, xdmf_entries);
     records.emplace_back(time, master);

@@ -2,6 +2,7 @@
 #include <deal.II/lac/solver_cg.h>
 
 #include <liftoff/linear_solver.h>
+#include <liftoff/selection.h>
 
 #include <Epetra_Comm.h>
 #include <Epetra_CrsMatrix.h>
@@ -44,7 +45,7 @@ namespace liftoff
     /// Factorise A (all rows on this rank). Returns false if A is not
     /// positive definite (or CHOLMOD fails otherwise).
     bool
-    factorise(const Epetra_CrsMatrix &A)
+    factorize(const Epetra_CrsMatrix &A)
     {
       n                   = A.NumMyRows();
       n_entries_of_matrix = A.NumMyNonzeros();
@@ -93,7 +94,7 @@ namespace liftoff
         }
       cholmod_free_factor(&factor, &common);
       factor                   = cholmod_analyze(lower, &common);
-      const bool is_factorised = factor != nullptr
+      const bool is_factorized = factor != nullptr
                                  && cholmod_factorize(lower, factor, &common)
                                  && common.status == CHOLMOD_OK;
       cholmod_free_sparse(&lower, &common);
@@ -101,10 +102,10 @@ namespace liftoff
       // one to compute, the simplicial form the faster one to substitute
       // with: with the reference BLAS of Debian, 2.2 against 2.9 ms on the
       // benchmark S and 105 against 143 ms on M (doc/performance.md).
-      if (is_factorised && factor->is_super)
+      if (is_factorized && factor->is_super)
         cholmod_change_factor(
           CHOLMOD_REAL, true, false, true, true, factor, &common);
-      return is_factorised && common.status == CHOLMOD_OK;
+      return is_factorized && common.status == CHOLMOD_OK;
     }
 
     /// The cost of a factorisation and of one forward and back substitution
@@ -116,7 +117,7 @@ namespace liftoff
     /// benchmark S (12 675; 35 by the count): 150 operations per entry of
     /// A for the rest fits both within 20 %.
     double
-    factorisation_cost() const
+    factorization_cost() const
     {
       return common.fl + 150.0 * n_entries_of_matrix;
     }
@@ -157,20 +158,31 @@ namespace liftoff
   };
 
 
+  namespace
+  {
+    const Selection<LinearSolver::Type> types =
+      {{"direct", LinearSolver::Type::direct}, {"cg", LinearSolver::Type::cg}};
+    const Selection<LinearSolver::Package> packages = {
+      {"cholmod", LinearSolver::Package::cholmod},
+      {"mumps", LinearSolver::Package::mumps},
+      {"klu", LinearSolver::Package::klu}};
+  } // namespace
+
+
   void
   LinearSolver::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Type",
                       "direct",
-                      Patterns::Selection("direct|cg"),
+                      types.pattern(),
                       "direct: sparse LU, factorised once and then used to "
                       "precondition CG on the changed matrices; cg: "
                       "conjugate gradients with algebraic multigrid.");
     prm.declare_entry(
       "Direct solver package",
       "cholmod",
-      Patterns::Selection("cholmod|mumps|klu"),
+      packages.pattern(),
       "Factorisation for Type = direct. cholmod: CHOLMOD's sparse Cholesky "
       "factor (SuiteSparse), the fastest on one rank; it is serial, so on "
       "several ranks, or for a matrix that is not positive definite, MUMPS's "
@@ -200,11 +212,10 @@ namespace liftoff
   LinearSolver::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type = (prm.get("Type") == "direct" ? Type::direct : Type::cg);
-    const std::string package = prm.get("Direct solver package");
-    prefers_cholesky          = (package == "cholmod");
-    direct_package = (package == "klu" ? "Amesos_Klu" : "Amesos_Mumps");
-    refactorisation_threshold = prm.get_integer("Refactorisation threshold");
+    type    = types.parse(prm.get("Type"), "Linear solver/Type");
+    package = packages.parse(prm.get("Direct solver package"),
+                             "Linear solver/Direct solver package");
+    refactorization_threshold = prm.get_integer("Refactorisation threshold");
     tolerance                 = prm.get_double("Tolerance");
     max_iterations            = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
@@ -230,8 +241,18 @@ namespace liftoff
     if (cholesky)
       return "CHOLMOD Cholesky";
     if (direct)
-      return direct_package == "Amesos_Klu" ? "KLU LU" : "MUMPS LU";
+      return package == Package::klu ? "KLU LU" : "MUMPS LU";
     return type == Type::cg ? "none (CG + AMG)" : "none";
+  }
+
+
+  Discretization::Factor
+  LinearSolver::factor_placement() const
+  {
+    if (type == Type::cg)
+      return Discretization::Factor::none;
+    return package == Package::klu ? Discretization::Factor::on_rank_0
+                                   : Discretization::Factor::distributed;
   }
 
 
@@ -255,10 +276,11 @@ namespace liftoff
         // The number of ranks is the same on all of them, and so is the
         // test of positive definiteness (one rank), so every rank takes the
         // same branch.
-        if (prefers_cholesky && A.trilinos_matrix().Comm().NumProc() == 1)
+        if (package == Package::cholmod
+            && A.trilinos_matrix().Comm().NumProc() == 1)
           {
             cholesky = std::make_unique<CholeskyFactor>();
-            if (cholesky->factorise(A.trilinos_matrix()))
+            if (cholesky->factorize(A.trilinos_matrix()))
               return;
             cholesky.reset();
             if (!has_reported_fallback)
@@ -271,8 +293,8 @@ namespace liftoff
         direct_control.set_max_steps(1);
         direct = std::make_unique<TrilinosWrappers::SolverDirect>(
           direct_control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         direct_package));
+          TrilinosWrappers::SolverDirect::AdditionalData(
+            false, package == Package::klu ? "Amesos_Klu" : "Amesos_Mumps"));
         direct->initialize(A);
       }
     else
@@ -362,15 +384,15 @@ namespace liftoff
     // every run and a resumed run repeats it. Only CHOLMOD reports the
     // counts.
     if (!factor_is_exact && cholesky
-        && cg_excess_flops >= cholesky->factorisation_cost())
+        && cg_excess_flops >= cholesky->factorization_cost())
       prepare(*matrix, *discretization);
-    if (!factor_is_exact && refactorisation_threshold > 0)
+    if (!factor_is_exact && refactorization_threshold > 0)
       {
         TimerOutput::Scope t(timer, "solve");
         try
           {
             const unsigned int n =
-              conjugate_gradients(x, b, refactorisation_threshold);
+              conjugate_gradients(x, b, refactorization_threshold);
             if (cholesky)
               cg_excess_flops +=
                 (n - 1.0) * cholesky->substitution_flops()

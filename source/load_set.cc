@@ -3,12 +3,13 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/load_set.h>
+#include <liftoff/point_functional.h>
 #include <liftoff/scene_input.h>
+#include <liftoff/selection.h>
 
 #include <cmath>
 #include <functional>
 #include <iomanip>
-#include <map>
 #include <regex>
 #include <sstream>
 
@@ -37,6 +38,13 @@ namespace liftoff
       return q;
     }
 
+    // Edges of the full plate, by their boundary ids.
+    const Selection<unsigned int> plate_edges = {
+      {"Left", Discretization::left_edge},
+      {"Right", Discretization::right_edge},
+      {"Bottom", Discretization::bottom_edge},
+      {"Top", Discretization::top_edge}};
+
     bool
     nearly_equal(const double a, const double b)
     {
@@ -44,6 +52,44 @@ namespace liftoff
              <= 1e-10 * std::max(1.0, std::abs(a) + std::abs(b));
     }
 
+    // Every load has a Magnitude (whose unit depends on its kind) and a
+    // Time history; `declare_own` adds the entries of its kind.
+    void
+    declare_load(ParameterHandler            &prm,
+                 const std::string           &section,
+                 const std::string           &unit,
+                 const std::function<void()> &declare_own)
+    {
+      prm.enter_subsection(section);
+      prm.declare_entry("Magnitude",
+                        "0",
+                        Patterns::Double(),
+                        unit + "; 0 switches the load off.");
+      declare_own();
+      prm.declare_entry(
+        "Time history",
+        "1",
+        Patterns::Anything(),
+        "h(tau), a muParser expression in tau (dimensionless time); the load "
+        "is Magnitude * h(tau). Examples: 1 (suddenly applied), tau (linear "
+        "ramp), sin(2*pi*tau/2.5) (pulsating), if(tau<0.1,1,0) (pulse).");
+      prm.leave_subsection();
+    }
+    // Whether rectangle b is rectangle a mirrored normal to `axis`.
+    bool
+    is_mirrored_rectangle(const BoundingBox<2> &a,
+                          const BoundingBox<2> &b,
+                          const unsigned int    axis)
+    {
+      const Point<2> lo = a.get_boundary_points().first;
+      const Point<2> hi = a.get_boundary_points().second;
+      // Mirroring swaps the roles of the corners along the axis.
+      Point<2> image_lo = lo, image_hi = hi;
+      image_lo[axis] = -hi[axis];
+      image_hi[axis] = -lo[axis];
+      return (image_lo - b.get_boundary_points().first).norm() <= 1e-12
+             && (image_hi - b.get_boundary_points().second).norm() <= 1e-12;
+    }
   } // namespace
 
 
@@ -58,71 +104,96 @@ namespace liftoff
   void
   LoadSet::declare_parameters(ParameterHandler &prm)
   {
-    const std::string history_doc =
-      "h(tau), a muParser expression in tau (dimensionless time); the load "
-      "is Magnitude * h(tau). Examples: 1 (suddenly applied), tau (linear "
-      "ramp), sin(2*pi*tau/2.5) (pulsating), if(tau<0.1,1,0) (pulse).";
     prm.enter_subsection("Loads");
     for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
       {
-        prm.enter_subsection(subsection_name("Point load", i));
-        prm.declare_entry("Magnitude",
-                          "0",
-                          Patterns::Double(),
-                          "Force in units of F0; 0 switches the load off.");
-        prm.declare_entry("Position",
-                          "0, 0",
-                          Patterns::List(Patterns::Double(), 2, 2, ","),
-                          "x, y on the full plate (any point, not only "
-                          "nodes).");
-        prm.declare_entry("Time history",
-                          "1",
-                          Patterns::Anything(),
-                          history_doc);
-        prm.leave_subsection();
-
-        prm.enter_subsection(subsection_name("Pressure", i));
-        prm.declare_entry("Magnitude",
-                          "0",
-                          Patterns::Double(),
-                          "Pressure scale; 0 switches the load off.");
-        prm.declare_entry("Region",
-                          "whole plate",
-                          Patterns::Anything(),
-                          "'whole plate' or 'x_min, x_max, y_min, y_max' on "
-                          "the full plate. Rectangles that follow cell "
-                          "edges are integrated exactly.");
-        prm.declare_entry("Intensity",
-                          "1",
-                          Patterns::Anything(),
-                          "f(x, y, tau), muParser; the pressure is "
-                          "Magnitude * f * h(tau).");
-        prm.declare_entry("Time history",
-                          "1",
-                          Patterns::Anything(),
-                          history_doc);
-        prm.leave_subsection();
-
-        prm.enter_subsection(subsection_name("Line load", i));
-        prm.declare_entry("Magnitude",
-                          "0",
-                          Patterns::Double(),
-                          "Force per unit length; 0 switches the load off.");
-        prm.declare_entry("Edge",
-                          "Right",
-                          Patterns::Selection("Left|Right|Bottom|Top"),
-                          "Edge of the full plate that carries the load.");
-        prm.declare_entry("Intensity",
-                          "1",
-                          Patterns::Anything(),
-                          "f(x, y, tau) along the edge, muParser.");
-        prm.declare_entry("Time history",
-                          "1",
-                          Patterns::Anything(),
-                          history_doc);
-        prm.leave_subsection();
+        declare_load(
+          prm, subsection_name("Point load", i), "Force in units of F0", [&]() {
+            prm.declare_entry("Position",
+                              "0, 0",
+                              Patterns::List(Patterns::Double(), 2, 2, ","),
+                              "x, y on the full plate (any point, not only "
+                              "nodes).");
+          });
+        declare_load(
+          prm, subsection_name("Pressure", i), "Pressure scale", [&]() {
+            prm.declare_entry(
+              "Region",
+              "whole plate",
+              Patterns::Anything(),
+              "'whole plate' or 'x_min, x_max, y_min, y_max' on "
+              "the full plate. Rectangles that follow cell "
+              "edges are integrated exactly.");
+            prm.declare_entry("Intensity",
+                              "1",
+                              Patterns::Anything(),
+                              "f(x, y, tau), muParser; the pressure is "
+                              "Magnitude * f * h(tau).");
+          });
+        declare_load(prm,
+                     subsection_name("Line load", i),
+                     "Force per unit length",
+                     [&]() {
+                       prm.declare_entry("Edge",
+                                         "Right",
+                                         plate_edges.pattern(),
+                                         "Edge of the full plate that carries "
+                                         "the load.");
+                       prm.declare_entry("Intensity",
+                                         "1",
+                                         Patterns::Anything(),
+                                         "f(x, y, tau) along the edge, "
+                                         "muParser.");
+                     });
       }
     prm.leave_subsection();
+  }
+
+
+  LoadSet::Load
+  LoadSet::read_load(ParameterHandler  &prm,
+                     const Kind         kind,
+                     const std::string &section) const
+  {
+    // Regions are checked against the plate once the plate is known; here
+    // only their form.
+    const BoundingBox<2> unbounded(
+      std::make_pair(Point<2>(-1e300, -1e300), Point<2>(1e300, 1e300)));
+    Load load;
+    load.kind      = kind;
+    load.name      = "Loads/" + section;
+    load.magnitude = prm.get_double("Magnitude");
+    // A load that is off (Magnitude 0) is checked all the same: a
+    // broken expression is an error whether or not it is used yet.
+    load.history_expression = prm.get("Time history");
+    load.history            = parse_expression<1>(
+      load.name + "/Time history", load.history_expression, 1, "tau", false);
+    if (kind == Kind::point)
+      {
+        const auto xy = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Position"), ','));
+        load.position = Point<2>(xy[0], xy[1]);
+      }
+    else
+      {
+        load.intensity_expression = prm.get("Intensity");
+        load.intensity = parse_expression<2>(load.name + "/Intensity",
+                                             load.intensity_expression,
+                                             1,
+                                             "x,y,tau",
+                                             true);
+        load.intensity_depends_on_time = names_tau(load.intensity_expression);
+        if (kind == Kind::pressure)
+          {
+            load.region = prm.get("Region");
+            region_of(load, unbounded);
+          }
+        else
+          {
+            load.edge = plate_edges.parse(prm.get("Edge"), load.name + "/Edge");
+          }
+      }
+    return load;
   }
 
 
@@ -135,56 +206,12 @@ namespace liftoff
       {{Kind::point, "Point load"},
        {Kind::pressure, "Pressure"},
        {Kind::line, "Line load"}}};
-    // Regions are checked against the plate once the plate is known; here
-    // only their form.
-    const BoundingBox<2> unbounded(
-      std::make_pair(Point<2>(-1e300, -1e300), Point<2>(1e300, 1e300)));
     for (const auto &[kind, kind_name] : kinds)
       for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
         {
           const std::string section = subsection_name(kind_name, i);
           prm.enter_subsection(section);
-          Load load;
-          load.kind      = kind;
-          load.name      = "Loads/" + section;
-          load.magnitude = prm.get_double("Magnitude");
-          // A load that is off (Magnitude 0) is checked all the same: a
-          // broken expression is an error whether or not it is used yet.
-          load.history_expression = prm.get("Time history");
-          load.history = parse_expression<1>(load.name + "/Time history",
-                                             load.history_expression,
-                                             1,
-                                             "tau",
-                                             false);
-          if (kind == Kind::point)
-            {
-              const auto xy = Utilities::string_to_double(
-                Utilities::split_string_list(prm.get("Position"), ','));
-              load.position = Point<2>(xy[0], xy[1]);
-            }
-          else
-            {
-              load.intensity_expression = prm.get("Intensity");
-              load.intensity = parse_expression<2>(load.name + "/Intensity",
-                                                   load.intensity_expression,
-                                                   1,
-                                                   "x,y,tau",
-                                                   true);
-              load.intensity_depends_on_time =
-                names_tau(load.intensity_expression);
-              if (kind == Kind::pressure)
-                {
-                  load.region = prm.get("Region");
-                  region_of(load, unbounded);
-                }
-              else
-                {
-                  const std::string edge = prm.get("Edge");
-                  for (unsigned int e = 0; e < 4; ++e)
-                    if (Discretization::edge_names[e] == edge)
-                      load.edge = e;
-                }
-            }
+          Load load = read_load(prm, kind, section);
           if (load.magnitude != 0.0)
             loads.push_back(std::move(load));
           prm.leave_subsection();
@@ -352,16 +379,8 @@ namespace liftoff
         break;
       case Kind::pressure:
         {
-          const BoundingBox<2> a  = region_of(load, plate);
-          const BoundingBox<2> b  = region_of(other, plate);
-          const Point<2>       lo = a.get_boundary_points().first;
-          const Point<2>       hi = a.get_boundary_points().second;
-          // Mirroring swaps the roles of the corners along the axis.
-          Point<2> image_lo = lo, image_hi = hi;
-          image_lo[axis] = -hi[axis];
-          image_hi[axis] = -lo[axis];
-          if ((image_lo - b.get_boundary_points().first).norm() > 1e-12
-              || (image_hi - b.get_boundary_points().second).norm() > 1e-12)
+          const BoundingBox<2> a = region_of(load, plate);
+          if (!is_mirrored_rectangle(a, region_of(other, plate), axis))
             return false;
           acts_at = [a](const Point<2> &p) { return a.point_inside(p, 1e-12); };
           break;
@@ -393,19 +412,34 @@ namespace liftoff
     if (load.kind == Kind::point)
       return true;
 
+    return have_mirrored_intensities(
+      load, other, axis, *candidates, acts_at, times, disc.mpi_communicator);
+  }
+
+
+  bool
+  LoadSet::have_mirrored_intensities(
+    const Load                                  &load,
+    const Load                                  &other,
+    const unsigned int                           axis,
+    const std::vector<Point<2>>                 &candidates,
+    const std::function<bool(const Point<2> &)> &acts_at,
+    const std::vector<double>                   &times,
+    const MPI_Comm                               comm)
+  {
     // Intensities at every quadrature point the load covers, at every step
     // time if either names tau (otherwise once).
     const bool time_dependent =
       load.intensity_depends_on_time || other.intensity_depends_on_time;
     const auto   n_times  = time_dependent ? times.size() : 1;
     unsigned int is_image = 1;
-    for (const auto &p : *candidates)
+    for (const auto &p : candidates)
       if (acts_at(p))
         for (unsigned int k = 0; k < n_times && is_image; ++k)
           is_image =
             nearly_equal(load.intensity_at(p, times[k]),
                          other.intensity_at(mirrored(p, axis), times[k]));
-    return Utilities::MPI::min(is_image, disc.mpi_communicator) == 1;
+    return Utilities::MPI::min(is_image, comm) == 1;
   }
 
 

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <iterator>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -26,6 +27,8 @@ namespace
     "                                    checkpoint in its output directory\n"
     "                                    (same number of ranks; the end time\n"
     "                                    may be changed)\n"
+    "       liftoff --quiet ...          no progress line (also -q; with\n"
+    "                                    any of the above)\n"
     "       liftoff --parameters         print every parameter with its "
     "default and documentation\n"
     "       liftoff --version            print the version and the git commit\n"
@@ -124,22 +127,33 @@ main(int argc, char **argv)
         prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
       return 0;
     }
-  using Start           = liftoff::Simulator::Start;
-  Start      start      = Start::fresh;
-  const bool has_option = (argc == 3);
-  if (has_option && std::string(argv[1]) == "--resume")
-    start = Start::resume;
-  else if (has_option && std::string(argv[1]) == "--overwrite")
-    start = Start::overwrite;
-  if (argc != 2 + (start != Start::fresh)
-      || std::string(argv[argc - 1]).rfind("--", 0) == 0)
+  using Start                    = liftoff::Simulator::Start;
+  Start                    start = Start::fresh;
+  bool                     quiet = false, is_usage_error = false;
+  std::vector<std::string> scenes;
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string argument = argv[i];
+      if (argument == "--resume" || argument == "--overwrite")
+        {
+          is_usage_error |= (start != Start::fresh);
+          start = argument == "--resume" ? Start::resume : Start::overwrite;
+        }
+      else if (argument == "--quiet" || argument == "-q")
+        quiet = true;
+      else if (argument.size() > 1 && argument[0] == '-')
+        is_usage_error = true;
+      else
+        scenes.push_back(argument);
+    }
+  if (is_usage_error || scenes.size() != 1)
     {
       if (is_root)
         std::cerr << usage << std::endl;
       return 2;
     }
 
-  const std::string scene_name = argv[argc - 1];
+  const std::string scene_name = scenes.front();
 
   // SIGINT / SIGTERM end the run after the current step with complete
   // files and the exit code 128 + signal.
@@ -151,7 +165,7 @@ main(int argc, char **argv)
   std::exception_ptr failure;
   {
     dealii::ParameterHandler prm;
-    liftoff::Simulator       simulator(comm);
+    liftoff::Simulator       simulator(comm, true, !quiet);
     try
       {
         liftoff::Simulator::declare_parameters(prm);

@@ -1,4 +1,5 @@
 #include <liftoff/newmark_integrator.h>
+#include <liftoff/selection.h>
 
 #include <cmath>
 #include <iomanip>
@@ -7,6 +8,14 @@
 
 namespace liftoff
 {
+  namespace
+  {
+    // true: generalized-alpha.
+    const Selection<bool> schemes = {{"newmark", false},
+                                     {"generalized-alpha", true}};
+  } // namespace
+
+
   void
   NewmarkIntegrator::declare_parameters(ParameterHandler &prm)
   {
@@ -33,7 +42,7 @@ namespace liftoff
     prm.declare_entry(
       "Scheme",
       "newmark",
-      Patterns::Selection("newmark|generalized-alpha"),
+      schemes.pattern(),
       "newmark: Beta and Gamma as given. generalized-alpha: the scheme of "
       "Chung and Hulbert (1993), which damps frequencies far above 1/dtau "
       "(spectral radius at infinite frequency: Spectral radius) and keeps "
@@ -72,7 +81,7 @@ namespace liftoff
     gamma   = prm.get_double("Gamma");
     alpha_m = 0;
     alpha_f = 0;
-    if (prm.get("Scheme") == "generalized-alpha")
+    if (schemes.parse(prm.get("Scheme"), "Time integration/Scheme"))
       {
         const double rho = prm.get_double("Spectral radius");
         alpha_m          = (2 * rho - 1) / (rho + 1);

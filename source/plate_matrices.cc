@@ -5,39 +5,76 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <liftoff/plate_matrices.h>
+#include <liftoff/transverse_shear_strain.h>
 
 #include <cmath>
 
 namespace liftoff
 {
-  void
-  PlateMatrices::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Discretization");
-    prm.declare_entry("Shear integration",
-                      "mitc",
-                      Patterns::Selection("full|reduced|mitc"),
-                      "Treatment of the transverse shear term: full, "
-                      "(p+1)^2 Gauss points, locks as the plate gets thin; "
-                      "reduced, p^2 points, gives free plates spurious "
-                      "zero-energy modes; mitc, assumed natural shear "
-                      "strains (MITC4 for p = 1, MITC9 for p = 2), neither "
-                      "locks nor has spurious modes (doc/thin-plates.md).");
-    prm.leave_subsection();
-  }
+    // Bending (psi only) and inertia of one cell at the full Gauss rule of
+    // fe_values, added to the cell matrices.
+    void
+    add_bending_and_inertia(const FEValues<2>  &fe_values,
+                            const MindlinPlate &plate,
+                            FullMatrix<double> &cell_stiffness,
+                            FullMatrix<double> &cell_mass)
+    {
+      const FEValuesExtractors::Scalar w(0), psi_x(1), psi_y(2);
+      const double                     nu       = plate.poisson_ratio;
+      const double                     twisting = plate.twisting_stiffness();
+      const double                     rotary   = plate.rotary_inertia();
+      const unsigned int               n_dofs   = cell_stiffness.m();
+      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+        {
+          const double dx = fe_values.JxW(q);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              const Tensor<1, 2> gx_i    = fe_values[psi_x].gradient(i, q);
+              const Tensor<1, 2> gy_i    = fe_values[psi_y].gradient(i, q);
+              const double       twist_i = gx_i[1] + gy_i[0];
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                {
+                  const Tensor<1, 2> gx_j    = fe_values[psi_x].gradient(j, q);
+                  const Tensor<1, 2> gy_j    = fe_values[psi_y].gradient(j, q);
+                  const double       twist_j = gx_j[1] + gy_j[0];
+                  cell_stiffness(i, j) +=
+                    (gx_i[0] * gx_j[0] + gy_i[1] * gy_j[1]
+                     + nu * (gx_i[0] * gy_j[1] + gy_i[1] * gx_j[0])
+                     + twisting * twist_i * twist_j)
+                    * dx;
+                  cell_mass(i, j) +=
+                    (fe_values[w].value(i, q) * fe_values[w].value(j, q)
+                     + rotary
+                         * (fe_values[psi_x].value(i, q)
+                              * fe_values[psi_x].value(j, q)
+                            + fe_values[psi_y].value(i, q)
+                                * fe_values[psi_y].value(j, q)))
+                    * dx;
+                }
+            }
+        }
+    }
 
-
-  void
-  PlateMatrices::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Discretization");
-    const std::string treatment = prm.get("Shear integration");
-    shear_integration =
-      (treatment == "full"      ? TransverseShearStrain::Treatment::full
-       : treatment == "reduced" ? TransverseShearStrain::Treatment::reduced
-                                : TransverseShearStrain::Treatment::mitc);
-    prm.leave_subsection();
-  }
+    // The transverse shear energy of one cell with the strains of the
+    // scene's treatment.
+    void
+    add_shear(const TransverseShearStrain &shear_strain,
+              const double                 shear,
+              FullMatrix<double>          &cell_stiffness)
+    {
+      const unsigned int n_dofs = cell_stiffness.m();
+      for (unsigned int q = 0; q < shear_strain.n_points(); ++q)
+        {
+          const double dx = shear_strain.JxW(q);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              cell_stiffness(i, j) += shear * shear_strain.strain(i, q)
+                                      * shear_strain.strain(j, q) * dx;
+        }
+    }
+  } // namespace
 
 
   void
@@ -54,13 +91,11 @@ namespace liftoff
                           fe,
                           full_rule,
                           update_values | update_gradients | update_JxW_values);
-    TransverseShearStrain shear_strain(disc.mapping, fe, shear_integration);
+    TransverseShearStrain shear_strain(disc.mapping,
+                                       fe,
+                                       disc.shear_integration());
 
-    const FEValuesExtractors::Scalar w(0), psi_x(1), psi_y(2);
-    const double                     nu       = plate.poisson_ratio;
-    const double                     twisting = plate.twisting_stiffness();
-    const double                     shear    = plate.shear_stiffness();
-    const double                     rotary   = plate.rotary_inertia();
+    const double shear = plate.shear_stiffness();
 
     FullMatrix<double>                   cell_stiffness(n_dofs, n_dofs);
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
@@ -74,44 +109,8 @@ namespace liftoff
           fe_values.reinit(cell);
           shear_strain.reinit(cell);
 
-          for (unsigned int q = 0; q < full_rule.size(); ++q)
-            {
-              const double dx = fe_values.JxW(q);
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  const Tensor<1, 2> gx_i    = fe_values[psi_x].gradient(i, q);
-                  const Tensor<1, 2> gy_i    = fe_values[psi_y].gradient(i, q);
-                  const double       twist_i = gx_i[1] + gy_i[0];
-                  for (unsigned int j = 0; j < n_dofs; ++j)
-                    {
-                      const Tensor<1, 2> gx_j = fe_values[psi_x].gradient(j, q);
-                      const Tensor<1, 2> gy_j = fe_values[psi_y].gradient(j, q);
-                      const double       twist_j = gx_j[1] + gy_j[0];
-                      cell_stiffness(i, j) +=
-                        (gx_i[0] * gx_j[0] + gy_i[1] * gy_j[1]
-                         + nu * (gx_i[0] * gy_j[1] + gy_i[1] * gx_j[0])
-                         + twisting * twist_i * twist_j)
-                        * dx;
-                      cell_mass(i, j) +=
-                        (fe_values[w].value(i, q) * fe_values[w].value(j, q)
-                         + rotary
-                             * (fe_values[psi_x].value(i, q)
-                                  * fe_values[psi_x].value(j, q)
-                                + fe_values[psi_y].value(i, q)
-                                    * fe_values[psi_y].value(j, q)))
-                        * dx;
-                    }
-                }
-            }
-
-          for (unsigned int q = 0; q < shear_strain.n_points(); ++q)
-            {
-              const double dx = shear_strain.JxW(q);
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                for (unsigned int j = 0; j < n_dofs; ++j)
-                  cell_stiffness(i, j) += shear * shear_strain.strain(i, q)
-                                          * shear_strain.strain(j, q) * dx;
-            }
+          add_bending_and_inertia(fe_values, plate, cell_stiffness, cell_mass);
+          add_shear(shear_strain, shear, cell_stiffness);
 
           cell->get_dof_indices(dof_indices);
           disc.constraints.distribute_local_to_global(cell_stiffness,

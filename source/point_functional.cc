@@ -1,11 +1,20 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <liftoff/point_functional.h>
 
 namespace liftoff
 {
+  namespace
+  {
+    // How far outside a cell, in its unit coordinates, a point still counts
+    // as inside: round-off of points on cell edges and the plate's edges.
+    constexpr double tolerance = 1e-10;
+  } // namespace
+
+
   PointFunctional::PointFunctional(const Discretization &discretization,
                                    const Point<2>       &point,
                                    const unsigned int    component)
@@ -14,24 +23,33 @@ namespace liftoff
     const auto    &fe          = *discretization.fe;
     const MPI_Comm comm        = discretization.mpi_communicator;
 
-    typename DoFHandler<2>::active_cell_iterator found;
-    Point<2>                                     unit_point;
-    bool                                         is_found = false;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          if (!cell->bounding_box().point_inside(point, 1e-10))
-            continue;
-          const Point<2> candidate =
-            discretization.mapping.transform_real_to_unit_cell(cell, point);
-          if (GeometryInfo<2>::is_inside_unit_cell(candidate, 1e-10))
-            {
-              found      = cell;
-              unit_point = GeometryInfo<2>::project_to_unit_cell(candidate);
-              is_found   = true;
-              break;
-            }
-        }
+    // The search trees find a cell around the point; a point on an edge or
+    // a vertex lies in its neighbours too, some of them perhaps of other
+    // ranks. Of this rank's cells that hold it, take the first in the order
+    // of the active cells.
+    const auto first = GridTools::find_active_cell_around_point(
+      discretization.grid_cache(),
+      point,
+      typename Triangulation<2>::active_cell_iterator(),
+      {},
+      tolerance);
+    typename Triangulation<2>::active_cell_iterator found;
+    bool                                            is_found = false;
+    if (first.first.state() == IteratorState::valid)
+      for (const auto &[cell, unit] :
+           GridTools::find_all_active_cells_around_point(
+             discretization.mapping,
+             discretization.triangulation,
+             point,
+             tolerance,
+             first))
+        if (cell->is_locally_owned()
+            && (!is_found
+                || cell->active_cell_index() < found->active_cell_index()))
+          {
+            found    = cell;
+            is_found = true;
+          }
 
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -44,13 +62,20 @@ namespace liftoff
     if (holder != my_rank)
       return;
 
+    const Point<2> unit_point = GeometryInfo<2>::project_to_unit_cell(
+      discretization.mapping.transform_real_to_unit_cell(found, point));
+    const typename DoFHandler<2>::active_cell_iterator cell(
+      &discretization.triangulation,
+      found->level(),
+      found->index(),
+      &dof_handler);
     FEValues<2> fe_values(discretization.mapping,
                           fe,
                           Quadrature<2>(unit_point),
                           update_values);
-    fe_values.reinit(found);
+    fe_values.reinit(cell);
     dof_indices.resize(fe.n_dofs_per_cell());
-    found->get_dof_indices(dof_indices);
+    cell->get_dof_indices(dof_indices);
     weights.reinit(fe.n_dofs_per_cell());
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == component)

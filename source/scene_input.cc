@@ -5,7 +5,6 @@
 #include <liftoff/output_files.h>
 #include <liftoff/scene_input.h>
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>

@@ -6,24 +6,26 @@
 #include <liftoff/output_files.h>
 #include <liftoff/run_summary.h>
 #include <liftoff/scene_input.h>
+#include <liftoff/selection.h>
 #include <liftoff/simulator.h>
 #include <liftoff/stop_signal.h>
 #include <liftoff/version.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iomanip>
-#include <numeric>
 #include <sstream>
-#include <tuple>
 
 namespace liftoff
 {
   namespace
   {
+    using Analysis                     = Simulator::Analysis;
+    const Selection<Analysis> analyses = {
+      {"dynamic", Analysis::dynamic_analysis},
+      {"static", Analysis::static_analysis}};
+
     std::string
     format_time(const double tau)
     {
@@ -45,14 +47,20 @@ namespace liftoff
     }
   } // namespace
 
-  Simulator::Simulator(const MPI_Comm comm, const bool verbose)
+  Simulator::Simulator(const MPI_Comm comm,
+                       const bool     verbose,
+                       const bool     show_progress)
       : mpi_communicator(comm)
       , pcout(std::cout, verbose && Utilities::MPI::this_mpi_process(comm) == 0)
       , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , discretization(comm)
       , active_set(discretization, foundation, timer)
-      , outputs{&time_history, &profile_output, &field_output}
-  {}
+      , progress_line(comm, std::cout)
+  {
+    outputs = {&time_history, &profile_output, &field_output};
+    if (verbose && show_progress)
+      outputs.push_back(&progress_line);
+  }
 
 
   void
@@ -61,7 +69,7 @@ namespace liftoff
     prm.enter_subsection("Analysis");
     prm.declare_entry("Type",
                       "dynamic",
-                      Patterns::Selection("dynamic|static"),
+                      analyses.pattern(),
                       "dynamic: Newmark time integration to the end time; "
                       "static: equilibrium under the loads at tau = 0.");
     prm.leave_subsection();
@@ -84,11 +92,11 @@ namespace liftoff
     InitialConditions::declare_parameters(prm);
     MindlinPlate::declare_parameters(prm);
     Discretization::declare_parameters(prm);
-    PlateMatrices::declare_parameters(prm);
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
     NewmarkIntegrator::declare_parameters(prm);
     ActiveSetIteration::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
     Checkpoint::declare_parameters(prm);
   }
 
@@ -97,8 +105,7 @@ namespace liftoff
   Simulator::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Analysis");
-    analysis = (prm.get("Type") == "static" ? Analysis::static_analysis
-                                            : Analysis::dynamic_analysis);
+    analysis = analyses.parse(prm.get("Type"), "Analysis/Type");
     prm.leave_subsection();
     initial_conditions.parse_parameters(prm);
     prm.enter_subsection("Output");
@@ -110,21 +117,13 @@ namespace liftoff
 
     plate.parse_parameters(prm);
     discretization.parse_parameters(prm);
-    matrices.parse_parameters(prm);
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
     active_set.parse_parameters(prm);
+    active_set.linear_solver().parse_parameters(prm);
     checkpoint.parse_parameters(prm);
 
-    // What the memory estimate of setup() needs to know of the solver.
-    prm.enter_subsection("Linear solver");
-    factor = prm.get("Type") == "cg"
-               ? Discretization::Factor::none
-               : (prm.get("Direct solver package") == "klu"
-                    ? Discretization::Factor::on_rank_0
-                    : Discretization::Factor::distributed);
-    prm.leave_subsection();
     check_scene();
   }
 
@@ -227,7 +226,7 @@ namespace liftoff
   {
     // The direct solver's factor dominates a large scene: what it and the
     // mesh would allocate is estimated before anything is built.
-    discretization.check_memory(factor);
+    discretization.check_memory(active_set.linear_solver().factor_placement());
     discretization.setup(plate);
     if (analysis == Analysis::static_analysis)
       loads.check_against(discretization, 0.0, 0);
@@ -456,7 +455,8 @@ namespace liftoff
           run_dynamic();
         if (!has_taken_over_output)
           take_over_output(resume_step);
-        time_history.flush();
+        for (Output *output : outputs)
+          output->flush();
       }
     catch (...)
       {
@@ -474,7 +474,8 @@ namespace liftoff
         };
         if (has_taken_over_output)
           {
-            attempt([&]() { time_history.flush(); });
+            for (Output *output : outputs)
+              attempt([&]() { output->flush(); });
             attempt([&]() {
               write_summary(stopped_by_signal != 0 ? "interrupted" : "failed");
             });
@@ -509,7 +510,9 @@ namespace liftoff
                         discretization,
                         foundation,
                         iteration,
+                        foundation.contact_area_fraction(),
                         is_static ? 0.0 : newmark.time_step,
+                        is_static ? 0 : newmark.n_steps(),
                         is_static || state.step == newmark.n_steps()};
     for (Output *output : outputs)
       output->execute(step);
@@ -903,7 +906,7 @@ namespace liftoff
 
 
   unsigned int
-  Simulator::n_factorisations() const
+  Simulator::n_factorizations() const
   {
     return active_set.linear_solver().n_preparations;
   }

@@ -5,17 +5,27 @@
 
 #include <algorithm>
 
+#include <liftoff/selection.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 
 namespace liftoff
 {
+  namespace
+  {
+    using Model                        = TensionlessWinklerFoundation::Model;
+    const Selection<Model> model_names = {{"tensionless", Model::tensionless},
+                                          {"bilateral", Model::bilateral},
+                                          {"none", Model::none}};
+  } // namespace
+
+
   void
   TensionlessWinklerFoundation::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Foundation");
     prm.declare_entry("Model",
                       "tensionless",
-                      Patterns::Selection("tensionless|bilateral|none"),
+                      model_names.pattern(),
                       "tensionless: springs act only where w > 0; bilateral: "
                       "linear springs of both signs (for checks); none: no "
                       "foundation.");
@@ -47,12 +57,9 @@ namespace liftoff
   TensionlessWinklerFoundation::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Foundation");
-    const std::string name = prm.get("Model");
-    model                  = (name == "tensionless"
-                                ? Model::tensionless
-                                : (name == "bilateral" ? Model::bilateral : Model::none));
-    stiffness              = prm.get_double("Stiffness");
-    contact_tolerance      = prm.get_double("Contact tolerance");
+    model             = model_names.parse(prm.get("Model"), "Foundation/Model");
+    stiffness         = prm.get_double("Stiffness");
+    contact_tolerance = prm.get_double("Contact tolerance");
     prm.leave_subsection();
     AssertThrow(model == Model::none || stiffness > 0,
                 ExcMessage("Foundation/Stiffness (Gamma) must be > 0, or set "

@@ -118,7 +118,7 @@ namespace liftoff
     row.tau              = step.state.tau;
     row.iterations       = step.iteration.iterations;
     row.cycle_length     = step.iteration.cycle_length;
-    row.contact_fraction = step.foundation.contact_area_fraction();
+    row.contact_fraction = step.contact_fraction;
     for (const auto &probe : probes)
       row.probe_w.push_back(probe.local_value(u));
     Utilities::MPI::sum(row.probe_w, comm, row.probe_w);

@@ -19,29 +19,8 @@ namespace
 {
   using liftoff::Simulator;
 
-  const std::string plate_scene = R"(
-subsection Discretization
-  set Symmetry = quarter
-  set Cells along x = 6
-  set Cells along y = 6
-  set Polynomial degree = 2
-end
-subsection Loads
-  subsection Point load 1
-    set Magnitude = 1
-  end
-end
-subsection Time integration
-  set Time step = 5e-4
-  set End time = 0.02
-end
-)";
-
-  std::string
-  set(const std::string &subsection, const std::string &entry)
-  {
-    return "subsection " + subsection + "\n  set " + entry + "\nend\n";
-  }
+  using liftoff_tests::set;
+  const std::string plate_scene = liftoff_tests::small_plate_scene();
 
   /// Values of the two records that are not identical.
   unsigned int
@@ -95,9 +74,8 @@ end
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
-  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  liftoff_tests::Checks checks(argc, argv);
+  const MPI_Comm        comm = MPI_COMM_WORLD;
   const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
   const std::string  ranks   = " (" + std::to_string(n_ranks) + " rank(s))";
@@ -111,21 +89,21 @@ main(int argc, char **argv)
       directory = name;
     }
   directory = dealii::Utilities::MPI::broadcast(comm, directory, 0);
-  const std::string output = set("Output", "Directory = " + directory);
+  const std::string output = set("Output/Directory", directory);
 
   // MUMPS on several ranks schedules its work dynamically, and two runs
   // without a stop already differ in the last bits; KLU factorises on one
   // rank and repeats itself. The exact comparisons use KLU on several ranks,
   // and MUMPS there is held to a tolerance.
   const std::string exact_solver =
-    n_ranks > 1 ? set("Linear solver", "Direct solver package = klu") : "";
+    n_ranks > 1 ? set("Linear solver/Direct solver package", "klu") : "";
   const std::vector<std::pair<std::string, std::string>> variants = {
     {"MUMPS", ""},
     {"Newmark", exact_solver},
     {"generalized-alpha, refactorising",
-     exact_solver + set("Time integration", "Scheme = generalized-alpha")
-       + set("Time integration", "Spectral radius = 0.8")
-       + set("Linear solver", "Refactorisation threshold = 1")}};
+     exact_solver + set("Time integration/Scheme", "generalized-alpha")
+       + set("Time integration/Spectral radius", 0.8)
+       + set("Linear solver/Refactorisation threshold", 1)}};
   for (const auto &[name, options] : variants)
     {
       const bool exact = (name != "MUMPS");
@@ -135,8 +113,8 @@ main(int argc, char **argv)
       const auto        reference = liftoff_tests::run_scene(scene);
       // Each variant replaces the previous one's files.
       liftoff_tests::run_scene(scene + output
-                                 + set("Time integration", "End time = 0.01")
-                                 + set("Checkpoint", "Interval = 20"),
+                                 + set("Time integration/End time", 0.01)
+                                 + set("Checkpoint/Interval", 20),
                                nullptr,
                                comm,
                                Simulator::Start::overwrite);
@@ -182,12 +160,12 @@ main(int argc, char **argv)
   // before it and (on two ranks) one rank.
   const std::string last = plate_scene + variants.back().second + output;
   checks.less("resume with Foundation/Stiffness changed is refused",
-              !is_refused(last + set("Foundation", "Stiffness = 2"),
+              !is_refused(last + set("Foundation/Stiffness", 2),
                           "now <Foundation/Stiffness = 2>",
                           comm),
               0.5);
   checks.less("resume with End time before the checkpoint is refused",
-              !is_refused(last + set("Time integration", "End time = 0.005"),
+              !is_refused(last + set("Time integration/End time", 0.005),
                           "beyond Time integration/End time",
                           comm),
               0.5);

@@ -71,11 +71,8 @@ end
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
-  AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-              dealii::ExcMessage("Run this test on two ranks."));
-  const bool is_root =
+  liftoff_tests::Checks checks(argc, argv, 2);
+  const bool            is_root =
     (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
 
   for (const std::string tolerance : {"1e-9", "0"})

@@ -21,37 +21,12 @@ namespace
         const std::string &analysis  = "dynamic",
         const double       stiffness = 200)
   {
-    return R"(
-subsection Analysis
-  set Type = )"
-           + analysis + R"(
-end
-subsection Plate
-  set Thickness ratio = 0.05
-end
-subsection Foundation
-  set Model = )"
-           + foundation + R"(
-  set Stiffness = )"
-           + std::to_string(stiffness) + R"(
-end
-subsection Discretization
-  set Symmetry = quarter
-  set Cells along x = 6
-  set Cells along y = 6
-  set Polynomial degree = 2
-end
-subsection Loads
-  subsection Point load 1
-    set Magnitude = 1
-  end
-end
-subsection Time integration
-  set Time step = )"
-           + std::to_string(dt) + R"(
-  set End time = 0.2
-end
-)";
+    using liftoff_tests::set;
+    return liftoff_tests::small_plate_scene() + set("Analysis/Type", analysis)
+           + set("Foundation/Model", foundation)
+           + set("Foundation/Stiffness", stiffness)
+           + set("Time integration/Time step", dt)
+           + set("Time integration/End time", 0.2);
   }
 
   /// max |balance error| / max |work| over the history.
@@ -74,8 +49,7 @@ end
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
+  liftoff_tests::Checks checks(argc, argv);
 
   checks.less("bilateral: max |energy balance error| / max work",
               relative_balance_error(

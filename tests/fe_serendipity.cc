@@ -401,8 +401,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks            checks;
+  liftoff_tests::Checks checks(argc, argv);
   check_shape_functions(checks);
   check_interpolation(checks);
   check_patch_test(checks);

@@ -62,8 +62,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks            checks;
+  liftoff_tests::Checks checks(argc, argv, 2);
 
   ParameterHandler prm;
   liftoff::MindlinPlate::declare_parameters(prm);

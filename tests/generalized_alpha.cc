@@ -72,8 +72,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
+  liftoff_tests::Checks checks(argc, argv);
 
   for (const double rho : {1.0, 0.8, 0.3, 0.0})
     for (const double omega_dt : {0.3, 30.0})

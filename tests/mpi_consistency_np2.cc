@@ -63,10 +63,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
-  AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-              dealii::ExcMessage("Run this test on two ranks."));
+  liftoff_tests::Checks checks(argc, argv, 2);
 
   // 10 x 8 cells: 11 x 9 vertices, 10 x 9 + 8 x 11 edges and 80 cells,
   // three fields on each node (S2 has none inside the cells).

@@ -10,6 +10,7 @@
 
 #include "navier_plate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -22,8 +23,7 @@ using namespace navier;
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
+  liftoff_tests::Checks checks(argc, argv);
   std::cout << std::scientific << std::setprecision(4);
 
   // --- The reference itself -------------------------------------------
@@ -77,37 +77,20 @@ main(int argc, char **argv)
 
   for (const auto &s : series)
     {
-      std::cout << "p = " << s.degree << ": cells/side  w(0,0)  rel.error  "
-                << "order  |  psi_x(1/2,0) rel.error  order" << std::endl;
-      double previous_w = 0, previous_psi = 0;
-      bool   monotone = true;
-      double last_w = 0, last_psi = 0, last_order = 0;
-      for (unsigned int k = 0; k < s.cells.size(); ++k)
+      liftoff_tests::OrderTable table;
+      std::vector<double>       w_errors, psi_errors;
+      for (const unsigned int n : s.cells)
         {
-          const unsigned int n = s.cells[k];
           const Result full    = run_navier(s.degree, n, false, delta, "full");
           const Result quarter = run_navier(s.degree, n, true, delta, "full");
-          const double error_w = std::abs(full.w_centre - ref.centre_deflection)
-                                 / ref.centre_deflection;
-          const double error_psi = std::abs(full.psi_edge - ref.edge_rotation)
-                                   / std::abs(ref.edge_rotation);
-          std::cout << "        " << std::setw(4) << n << "  "
-                    << std::setprecision(10) << full.w_centre
-                    << std::setprecision(4) << "  " << error_w;
-          if (k > 0)
-            {
-              last_order = liftoff_tests::observed_order(previous_w, error_w);
-              std::cout << "  " << std::fixed << std::setprecision(2)
-                        << last_order << std::scientific
-                        << std::setprecision(4);
-              monotone = monotone && (error_w < previous_w);
-            }
-          std::cout << "  |  " << error_psi;
-          if (k > 0)
-            std::cout << "  " << std::fixed << std::setprecision(2)
-                      << liftoff_tests::observed_order(previous_psi, error_psi)
-                      << std::scientific << std::setprecision(4);
-          std::cout << std::endl;
+          w_errors.push_back(std::abs(full.w_centre - ref.centre_deflection)
+                             / ref.centre_deflection);
+          psi_errors.push_back(std::abs(full.psi_edge - ref.edge_rotation)
+                               / std::abs(ref.edge_rotation));
+          table.add_value("cells/side", n);
+          table.add_value("w(0,0)", full.w_centre);
+          table.add_value("rel.error w", w_errors.back());
+          table.add_value("rel.error psi_x(1/2,0)", psi_errors.back());
 
           // A quarter model with the same mesh size is the same discrete
           // problem restricted by symmetry: the results agree to round-off.
@@ -123,24 +106,36 @@ main(int argc, char **argv)
                       std::abs(quarter.psi_edge - full.psi_edge)
                         / std::abs(ref.edge_rotation),
                       1e-9);
-          previous_w   = error_w;
-          previous_psi = error_psi;
-          last_w       = error_w;
-          last_psi     = error_psi;
         }
+      const std::vector<double> w_orders =
+        table.orders("rel.error w", "cells/side");
+      table.orders("rel.error psi_x(1/2,0)", "cells/side");
+      table.set_precision("w(0,0)", 10);
+      for (const std::string key : {"rel.error w", "rel.error psi_x(1/2,0)"})
+        table.set_scientific(key, true);
+      std::cout << "p = " << s.degree << ":" << std::endl;
+      table.write_text(std::cout);
+      // No refinement whose error is not below the coarser one's.
+      const bool monotone =
+        std::adjacent_find(w_errors.begin(),
+                           w_errors.end(),
+                           [](const double coarse, const double fine) {
+                             return !(fine < coarse);
+                           })
+        == w_errors.end();
       const std::string name = "p = " + std::to_string(s.degree);
       checks.less(name + ": centre error falls on every refinement",
                   monotone ? 0.0 : 1.0,
                   0.5);
       checks.less(name + ": finest relative error of w(0,0)",
-                  last_w,
+                  w_errors.back(),
                   s.finest_limit);
       checks.within(name + ": order of the last refinement, w(0,0)",
-                    last_order,
+                    w_orders.back(),
                     s.min_order,
                     2.0 * s.degree + 0.3);
       checks.less(name + ": finest relative error of psi_x(1/2,0)",
-                  last_psi,
+                  psi_errors.back(),
                   10 * s.finest_limit);
     }
 

@@ -30,8 +30,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks            checks;
+  liftoff_tests::Checks checks(argc, argv);
 
   liftoff_tests::TimoshenkoBeamOnFoundation beam(S, Gamma);
   beam.solve(half_length, F);
@@ -43,7 +42,8 @@ main(int argc, char **argv)
   const std::vector<unsigned int> meshes = {8, 16, 32, 64};
   for (const unsigned int p : {1u, 2u})
     {
-      std::vector<double> errors;
+      std::vector<double>       errors;
+      liftoff_tests::OrderTable table;
       for (const unsigned int n : meshes)
         {
           const auto simulator = liftoff_tests::run_scene(
@@ -55,6 +55,8 @@ main(int argc, char **argv)
           // difference on the edge y = mu/2 (none if the FE strip is
           // y-independent).
           errors.push_back(samples.relative_l2_error(w_h));
+          table.add_value("cells", n);
+          table.add_value("L2 error w", errors.back());
           double edge_difference = 0;
           for (const double x : samples.x)
             edge_difference =
@@ -70,11 +72,14 @@ main(int argc, char **argv)
                       errors.back(),
                       0.1);
         }
+      const std::vector<double> orders = table.orders("L2 error w", "cells");
+      table.set_scientific("L2 error w", true);
+      std::cout << "Q" << p << ":" << std::endl;
+      table.write_text(std::cout);
       for (unsigned int i = 1; i < errors.size(); ++i)
         {
-          const double order =
-            liftoff_tests::observed_order(errors[i - 1], errors[i]);
-          const std::string name = "Q" + std::to_string(p) + ": order "
+          const double      order = orders[i - 1];
+          const std::string name  = "Q" + std::to_string(p) + ": order "
                                    + std::to_string(meshes[i - 1]) + " -> "
                                    + std::to_string(meshes[i]) + " cells";
           // The asymptotic rate is p + 1; the last pair must be close to it.

@@ -94,8 +94,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Checks                           checks;
+  Checks checks(argc, argv);
 
   // Uniform pressure: w = q / Gamma at every point.
   const std::string uniform =

@@ -14,8 +14,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks                    checks;
+  liftoff_tests::Checks checks(argc, argv);
   using liftoff_tests::run_scene;
   using liftoff_tests::symmetric_scene;
 

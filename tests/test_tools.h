@@ -4,6 +4,7 @@
 // the same Simulator the executable uses, and report checks as lines
 // "PASS/FAIL <what>: <value> (limit <limit>)" with a non-zero exit on failure.
 
+#include <deal.II/base/convergence_table.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -15,6 +16,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace liftoff_tests
 {
@@ -44,6 +46,40 @@ namespace liftoff_tests
     return simulator;
   }
 
+  /// prm text that sets one entry, named by its path ("Time integration/End
+  /// time"); numbers with every digit they have.
+  template <typename Value>
+  inline std::string
+  set(const std::string &path, const Value &value)
+  {
+    const std::vector<std::string> names =
+      Utilities::split_string_list(path, '/');
+    std::ostringstream text;
+    text << std::setprecision(17);
+    for (unsigned int k = 0; k + 1 < names.size(); ++k)
+      text << "subsection " << names[k] << "\n";
+    text << "  set " << names.back() << " = " << value << "\n";
+    for (unsigned int k = 0; k + 1 < names.size(); ++k)
+      text << "end\n";
+    return text.str();
+  }
+
+  /// prm text: the small dynamic scene of several tests, a quarter of the
+  /// default square plate on 6 x 6 Q2 cells under a unit force suddenly
+  /// applied at its centre, 40 steps of 5e-4 (the contact set moves in
+  /// every step).
+  inline std::string
+  small_plate_scene()
+  {
+    return set("Discretization/Symmetry", "quarter")
+           + set("Discretization/Cells along x", 6)
+           + set("Discretization/Cells along y", 6)
+           + set("Discretization/Polynomial degree", 2)
+           + set("Loads/Point load 1/Magnitude", 1)
+           + set("Time integration/Time step", 5e-4)
+           + set("Time integration/End time", 0.02);
+  }
+
   /// prm text: a square plate of the given section.
   inline std::string
   square_plate(const double thickness_ratio,
@@ -70,9 +106,24 @@ namespace liftoff_tests
     return text + "end\n";
   }
 
+  /**
+   * The checks of a test program, and what every test's main() starts
+   * with: constructing them starts MPI (one thread per rank) for the life
+   * of the program, and a test written for `n_ranks` ranks (0: any number)
+   * refuses to run on another number.
+   */
   class Checks
   {
   public:
+    Checks(int &argc, char **&argv, const unsigned int n_ranks = 0)
+        : mpi(argc, argv, 1)
+    {
+      AssertThrow(
+        n_ranks == 0
+          || Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == n_ranks,
+        ExcMessage("Run this test on " + std::to_string(n_ranks) + " ranks."));
+    }
+
     /// Pass if value < limit (NaN fails).
     void
     less(const std::string &what, const double value, const double limit)
@@ -108,7 +159,8 @@ namespace liftoff_tests
     }
 
   private:
-    int failures = 0;
+    Utilities::MPI::MPI_InitFinalize mpi;
+    int                              failures = 0;
 
     static bool
     is_root()
@@ -169,10 +221,33 @@ namespace liftoff_tests
     return difference / scale;
   }
 
-  /// Observed order of convergence between two errors at ratio h1/h2 = 2.
-  inline double
-  observed_order(const double coarse_error, const double fine_error)
+  /**
+   * deal.II's ConvergenceTable, whose observed orders can also be read back
+   * for checks: add one row per run (add_value), then orders() of each error
+   * column, then write_text().
+   */
+  class OrderTable : public ConvergenceTable
   {
-    return std::log2(coarse_error / fine_error);
-  }
+  public:
+    /// Observed orders of the error column `key` between successive rows,
+    /// from ConvergenceTable's reduction_rate_log2: with `reference` (cells
+    /// along a side) the rate in that column's growth, without it one
+    /// halving (of h or dt) per row. Entry k - 1 is the order from row k - 1
+    /// to row k.
+    std::vector<double>
+    orders(const std::string &key, const std::string &reference = "")
+    {
+      if (reference.empty())
+        evaluate_convergence_rates(key, reduction_rate_log2);
+      else
+        evaluate_convergence_rates(key, reference, reduction_rate_log2, 1);
+      // The column ConvergenceTable adds for these rates; its first row
+      // holds "-".
+      const auto         &rates = columns.at(key + "...red.rate.log2").entries;
+      std::vector<double> result;
+      for (unsigned int k = 1; k < rates.size(); ++k)
+        result.push_back(rates[k].get_numeric_value());
+      return result;
+    }
+  };
 } // namespace liftoff_tests

@@ -48,7 +48,6 @@ namespace
     ParameterHandler prm;
     liftoff::MindlinPlate::declare_parameters(prm);
     liftoff::Discretization::declare_parameters(prm);
-    liftoff::PlateMatrices::declare_parameters(prm);
     std::istringstream scene(
       liftoff_tests::square_plate(thickness_ratio, 0.3, 5.0 / 6.0)
       + "subsection Discretization\n"
@@ -64,7 +63,6 @@ namespace
     discretization.parse_parameters(prm);
     discretization.setup(plate);
     liftoff::PlateMatrices matrices;
-    matrices.parse_parameters(prm);
     matrices.assemble(discretization, plate);
 
     const unsigned int       n = discretization.dof_handler.n_dofs();
@@ -86,8 +84,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  liftoff_tests::Checks            checks;
+  liftoff_tests::Checks checks(argc, argv);
 
   // --- 1. Locking ------------------------------------------------------
   const unsigned int cells = 16;

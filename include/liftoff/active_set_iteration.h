@@ -21,7 +21,7 @@ namespace liftoff
    * only the springs of the Gauss points whose status flipped are added or
    * removed, and the LinearSolver reuses its factor. A step whose set does
    * not move costs one substitution.
-   * Its parameters include those of the LinearSolver it owns.
+   * The LinearSolver it owns reads its own parameters (`Linear solver`).
    */
   class ActiveSetIteration
   {
@@ -76,9 +76,11 @@ namespace liftoff
           LA::MPI::Vector       &ghosted_solution,
           const bool             guess_is_prediction = false);
 
-    /// The linear solver, for its counters.
+    /// The linear solver, for its counters and its parameters.
     const LinearSolver &
     linear_solver() const;
+    LinearSolver &
+    linear_solver();
 
     /// Keep what save() needs (a copy of the factorised matrix's values).
     void

@@ -7,10 +7,12 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/affine_constraints.h>
 
 #include <liftoff/linear_algebra.h>
 #include <liftoff/mindlin_plate.h>
+#include <liftoff/transverse_shear_strain.h>
 
 #include <array>
 #include <memory>
@@ -111,6 +113,10 @@ namespace liftoff
     /// "Q<p>" (Lagrange) or "S2" (serendipity), for logs and summaries.
     std::string
     element_name() const;
+    /// How the element integrates the transverse shear energy (`Shear
+    /// integration`).
+    TransverseShearStrain::Treatment
+    shear_integration() const;
     Symmetry
     symmetry() const;
     /// How many copies of the modelled part make the plate (1, 2 or 4).
@@ -119,8 +125,6 @@ namespace liftoff
     /// Axes normal to the symmetry planes (0: plane x = 0, 1: plane y = 0).
     std::vector<unsigned int>
     symmetry_axes() const;
-    EdgeCondition
-    edge_condition(const unsigned int edge) const;
     /// True when some edge restrains w, so the stiffness alone is regular
     /// enough for a static solve without foundation contact.
     bool
@@ -147,6 +151,12 @@ namespace liftoff
     void
     reinit_ghosted_vector(LA::MPI::Vector &vector) const;
 
+    /// The search trees of the mesh, for finding the cells around points
+    /// (GridTools::find_active_cell_around_point); built when first asked
+    /// for and kept until the mesh changes.
+    const GridTools::Cache<2> &
+    grid_cache() const;
+
     MPI_Comm                                mpi_communicator;
     parallel::distributed::Triangulation<2> triangulation;
     MappingQ1<2>                            mapping;
@@ -157,14 +167,17 @@ namespace liftoff
     AffineConstraints<double>               constraints;
 
   private:
-    double                       aspect_ratio  = 1.0;
-    unsigned int                 fe_degree     = 1;
+    double                           aspect_ratio = 1.0;
+    unsigned int                     fe_degree    = 1;
+    TransverseShearStrain::Treatment shear_treatment =
+      TransverseShearStrain::Treatment::mitc;
     Symmetry                     modelled_part = Symmetry::full;
     unsigned int                 n_cells_x     = 10;
     unsigned int                 n_cells_y     = 10;
     unsigned int                 n_refinements = 0;
     std::array<EdgeCondition, 4> edges;
     DynamicSparsityPattern       sparsity_pattern;
+    GridTools::Cache<2>          cache;
 
     /// FE_Serendipity (degree 2) instead of FE_Q(fe_degree).
     bool is_serendipity = false;

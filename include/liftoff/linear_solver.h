@@ -44,6 +44,22 @@ namespace liftoff
   class LinearSolver
   {
   public:
+    /// `Type`: a stored factor, or CG with algebraic multigrid.
+    enum class Type
+    {
+      direct,
+      cg
+    };
+    /// `Direct solver package`.
+    enum class Package
+    {
+      /// CHOLMOD's Cholesky factor where it can (one rank, a positive
+      /// definite matrix), MUMPS's LU otherwise.
+      cholmod,
+      mumps,
+      klu
+    };
+
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -71,6 +87,11 @@ namespace liftoff
     /// The factor in use, for the summary ("CHOLMOD Cholesky", "MUMPS LU").
     std::string
     factor_name() const;
+
+    /// Where the factor the parameters ask for will be kept, for the
+    /// memory estimate made before anything is built.
+    Discretization::Factor
+    factor_placement() const;
 
     /// Factorisations or preconditioner set-ups so far.
     unsigned int n_preparations = 0;
@@ -106,21 +127,12 @@ namespace liftoff
          const Discretization  &disc);
 
   private:
-    enum class Type
-    {
-      direct,
-      cg
-    };
-    Type type = Type::direct;
-    /// The Amesos package for the LU factor, when it is used.
-    std::string direct_package = "Amesos_Mumps";
-    /// `Direct solver package = cholmod`: factorise with CHOLMOD where it
-    /// can (one rank, a positive definite matrix).
-    bool         prefers_cholesky          = true;
+    Type         type                      = Type::direct;
+    Package      package                   = Package::cholmod;
     bool         has_reported_fallback     = false;
     double       tolerance                 = 1e-12;
     unsigned int max_iterations            = 10000;
-    unsigned int refactorisation_threshold = 8;
+    unsigned int refactorization_threshold = 8;
 
     TimerOutput                 &timer;
     const Discretization        *discretization = nullptr;

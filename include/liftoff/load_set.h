@@ -3,10 +3,8 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/parsed_function.h>
 
 #include <liftoff/discretization.h>
-#include <liftoff/point_functional.h>
 
 #include <array>
 #include <functional>
@@ -29,8 +27,9 @@ namespace liftoff
    * a symmetry plane carries its share.
    *
    * Whatever does not change in time is assembled once: the load vector at
-   * time tau is sum_k h_k(tau) b_k, and only pressures whose intensity
-   * names tau are integrated again at every step.
+   * time tau is sum_k h_k(tau) b_k. Only pressures and line loads whose
+   * intensity names tau (and the body force of set_body_force()) are
+   * integrated again at every step.
    */
   class LoadSet
   {
@@ -114,6 +113,11 @@ namespace liftoff
     /// Rectangle of a pressure, in full plate coordinates.
     static BoundingBox<2>
     region_of(const Load &load, const BoundingBox<2> &plate);
+    /// The load of subsection `section` of Loads, its expressions parsed.
+    Load
+    read_load(ParameterHandler  &prm,
+              const Kind         kind,
+              const std::string &section) const;
 
     /// b_k(tau) = magnitude * int f(x, y, tau) phi_i (without h).
     void
@@ -149,5 +153,16 @@ namespace liftoff
                     const std::vector<double> &times,
                     const FullPlatePoints     &points,
                     const Discretization      &discretization);
+    /// The intensities of `load` at the `candidates` where it acts against
+    /// those of `other` at their mirror images, at `times`. Collective.
+    static bool
+    have_mirrored_intensities(
+      const Load                                  &load,
+      const Load                                  &other,
+      const unsigned int                           axis,
+      const std::vector<Point<2>>                 &candidates,
+      const std::function<bool(const Point<2> &)> &acts_at,
+      const std::vector<double>                   &times,
+      const MPI_Comm                               comm);
   };
 } // namespace liftoff

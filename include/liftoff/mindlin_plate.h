@@ -8,10 +8,10 @@ namespace liftoff
 
   /**
    * Material and geometry of the Mindlin plate in the dimensionless form of
-   * the paper (section 4, as NOTES.md reads it). Lengths are scaled by L,
-   * the full side length along x, so the plate occupies
-   * [-1/2, 1/2] x [-mu/2, mu/2]; the bending stiffness D, the translational
-   * mass rho H and the load scale F0 are one.
+   * the paper's section 4 (doc/model.md, "Reading the paper" and "Units").
+   * Lengths are scaled by L, the full side length along x, so the plate
+   * occupies [-1/2, 1/2] x [-mu/2, mu/2]; the bending stiffness D, the
+   * translational mass rho H and the load scale F0 are one.
    */
   class MindlinPlate
   {

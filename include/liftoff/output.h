@@ -20,9 +20,14 @@ namespace liftoff
     const Discretization               &discretization;
     const TensionlessWinklerFoundation &foundation;
     const ActiveSetIteration::Result   &iteration;
+    /// Share of the plate in contact (computed once for all outputs: it is
+    /// a collective sum).
+    double contact_fraction;
     /// 0 for a static analysis.
     double time_step;
-    bool   is_last_step;
+    /// Of the whole run (0 for a static analysis).
+    unsigned int n_steps;
+    bool         is_last_step;
   };
 
   /**

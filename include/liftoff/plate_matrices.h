@@ -1,11 +1,8 @@
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <liftoff/discretization.h>
 #include <liftoff/linear_algebra.h>
 #include <liftoff/mindlin_plate.h>
-#include <liftoff/transverse_shear_strain.h>
 
 #include <functional>
 
@@ -21,11 +18,6 @@ namespace liftoff
   class PlateMatrices
   {
   public:
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-
     void
     assemble(const Discretization &discretization, const MindlinPlate &plate);
 
@@ -44,9 +36,6 @@ namespace liftoff
       const Discretization &discretization,
       const std::function<void(const LA::MPI::Vector &, LA::MPI::Vector &)>
         &add_extra) const;
-
-    TransverseShearStrain::Treatment shear_integration =
-      TransverseShearStrain::Treatment::mitc;
 
     LA::MPI::SparseMatrix stiffness;
     LA::MPI::SparseMatrix mass;

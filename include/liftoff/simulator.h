@@ -18,6 +18,7 @@
 #include <liftoff/plate_matrices.h>
 #include <liftoff/plate_state.h>
 #include <liftoff/profile_output.h>
+#include <liftoff/progress_line.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 #include <liftoff/time_history.h>
 
@@ -51,8 +52,18 @@ namespace liftoff
       resume
     };
 
-    /// With verbose = false nothing is printed (tests).
-    explicit Simulator(const MPI_Comm comm, const bool verbose = true);
+    /// `Analysis/Type`.
+    enum class Analysis
+    {
+      static_analysis,
+      dynamic_analysis
+    };
+
+    /// With verbose = false nothing is printed (tests); show_progress =
+    /// false leaves out the progress line only (`liftoff --quiet`).
+    explicit Simulator(const MPI_Comm comm,
+                       const bool     verbose       = true,
+                       const bool     show_progress = true);
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -86,7 +97,7 @@ namespace liftoff
 
     /// Factorisations (or preconditioner set-ups) of the run.
     unsigned int
-    n_factorisations() const;
+    n_factorizations() const;
     /// The linear solver: its factor and counters.
     const LinearSolver &
     linear_solver() const;
@@ -94,12 +105,6 @@ namespace liftoff
     get_discretization() const;
 
   private:
-    enum class Analysis
-    {
-      static_analysis,
-      dynamic_analysis
-    };
-
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
     TimerOutput        timer;
@@ -115,15 +120,14 @@ namespace liftoff
     TimeHistory                  time_history;
     ProfileOutput                profile_output;
     FieldOutput                  field_output;
+    ProgressLine                 progress_line;
     /// What is written after each step, in this order.
-    const std::vector<Output *> outputs;
-    Checkpoint                  checkpoint;
+    std::vector<Output *> outputs;
+    Checkpoint            checkpoint;
 
     Analysis    analysis          = Analysis::dynamic_analysis;
     int         stopped_by_signal = 0;
     std::string output_directory;
-    /// Where the direct solver keeps its factor, for the memory estimate.
-    Discretization::Factor factor = Discretization::Factor::distributed;
     /// The scene as Checkpoint compares it, and the step resumed from.
     std::string  scene;
     unsigned int resume_step = 0;

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <deal.II/base/quadrature.h>
 #include <deal.II/base/table.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
