@@ -201,6 +201,56 @@ namespace liftoff
   }
 
 
+  bool
+  ActiveSetIteration::has_settled(
+    const unsigned long               n_changed,
+    const std::vector<unsigned char> &previous_set)
+  {
+    // Points whose w_h ends inside the round-off band keep the status they
+    // had: the rule's choice there depends on the set an iteration starts
+    // from, and with the prediction's set it would not be the previous
+    // step's. Restoring it (and solving once more) makes the converged set
+    // the one a start from the previous set gives.
+    return n_changed == 0
+           && (previous_set.empty()
+               || foundation.keep_status_in_band(previous_set) == 0);
+  }
+
+
+  std::vector<unsigned char>
+  ActiveSetIteration::start_from_prediction(const LA::MPI::Vector &prediction,
+                                            LA::MPI::Vector &ghosted_solution)
+  {
+    // The contact rule applied to the prediction: where the plate is
+    // heading.
+    TimerOutput::Scope               t(timer, "contact update");
+    const std::vector<unsigned char> previous_set = foundation.contact_status();
+    ghosted_solution                              = prediction;
+    foundation.update_contact_status(ghosted_solution);
+    return previous_set;
+  }
+
+
+  void
+  ActiveSetIteration::solve_with_union(
+    const std::vector<std::vector<unsigned char>> &visited,
+    const unsigned int                             first,
+    const LA::MPI::Vector                         &rhs,
+    LA::MPI::Vector                               &solution,
+    LA::MPI::Vector                               &ghosted_solution)
+  {
+    // Springs wherever any set of the cycle had them: the stiffer choice,
+    // whose error is a tension in the springs of the points that the
+    // solution lifts.
+    std::vector<unsigned char> all(visited[first].size(), 0);
+    for (unsigned int k = first; k < visited.size(); ++k)
+      for (unsigned int i = 0; i < all.size(); ++i)
+        all[i] |= visited[k][i];
+    foundation.set_contact_status(all);
+    solve_with_current_set(rhs, solution, ghosted_solution);
+  }
+
+
   ActiveSetIteration::Result
   ActiveSetIteration::solve(const LA::MPI::Vector &rhs,
                             LA::MPI::Vector       &solution,
@@ -211,16 +261,10 @@ namespace liftoff
     Result result;
     // The set the previous step ended with, when the iteration starts from
     // the prediction's.
-    std::vector<unsigned char> previous_set;
-    if (guess_is_prediction && starts_from_prediction)
-      {
-        // The contact rule applied to the prediction: where the plate is
-        // heading.
-        TimerOutput::Scope t(timer, "contact update");
-        previous_set     = foundation.contact_status();
-        ghosted_solution = solution;
-        foundation.update_contact_status(ghosted_solution);
-      }
+    const std::vector<unsigned char> previous_set =
+      (guess_is_prediction && starts_from_prediction)
+        ? start_from_prediction(solution, ghosted_solution)
+        : std::vector<unsigned char>();
     // The sets of this step so far. The solution depends on the set only,
     // so meeting one again means the iteration would go round for ever.
     std::vector<std::vector<unsigned char>> visited{
@@ -237,14 +281,7 @@ namespace liftoff
         TimerOutput::Scope  t(timer, "contact update");
         const unsigned long n_changed =
           foundation.update_contact_status(ghosted_solution);
-        // Points whose w_h ends inside the round-off band keep the status
-        // they had: the rule's choice there depends on the set an iteration
-        // starts from, and with the prediction's set it would not be the
-        // previous step's. Restoring it (and solving once more) makes the
-        // converged set the one a start from the previous set gives.
-        if (n_changed == 0
-            && (previous_set.empty()
-                || foundation.keep_status_in_band(previous_set) == 0))
+        if (has_settled(n_changed, previous_set))
           {
             result.converged = true;
             return result;
@@ -262,17 +299,10 @@ namespace liftoff
             result.cycle_length = visited.size() - repeated;
             if (cycle_rule == CycleRule::stop)
               return result;
-            // Springs wherever any set of the cycle had them: the stiffer
-            // choice, whose error is a tension in the springs of the points
-            // that the solution lifts.
-            std::vector<unsigned char> all(visited[repeated].size(), 0);
-            for (unsigned int k = repeated; k < visited.size(); ++k)
-              for (unsigned int i = 0; i < all.size(); ++i)
-                all[i] |= visited[k][i];
             t.stop();
-            foundation.set_contact_status(all);
             ++result.iterations;
-            solve_with_current_set(rhs, solution, ghosted_solution);
+            solve_with_union(
+              visited, repeated, rhs, solution, ghosted_solution);
             result.converged = true;
             return result;
           }

@@ -44,11 +44,10 @@ namespace liftoff
 
     /// Factorise A (all rows on this rank). Returns false if A is not
     /// positive definite (or CHOLMOD fails otherwise).
-    bool
-    factorize(const Epetra_CrsMatrix &A)
+    // The matrix in CHOLMOD's form, or nullptr if it cannot be allocated.
+    cholmod_sparse *
+    lower_triangle(const Epetra_CrsMatrix &A)
     {
-      n                   = A.NumMyRows();
-      n_entries_of_matrix = A.NumMyNonzeros();
       // On one rank the rows are numbered 0, ..., n-1 in order. Row i's
       // entries with column j >= i, the upper triangle by rows, are column
       // i of the lower triangle, which is what CHOLMOD reads (stype -1);
@@ -71,7 +70,7 @@ namespace liftoff
       cholmod_sparse *lower = cholmod_allocate_sparse(
         n, n, n_entries, true, true, -1, CHOLMOD_REAL, &common);
       if (lower == nullptr)
-        return false;
+        return nullptr;
       auto                               *p = static_cast<int *>(lower->p);
       auto                               *r = static_cast<int *>(lower->i);
       auto                               *v = static_cast<double *>(lower->x);
@@ -92,6 +91,18 @@ namespace liftoff
             }
           p[row + 1] = p[row] + column.size();
         }
+      return lower;
+    }
+
+
+    bool
+    factorize(const Epetra_CrsMatrix &A)
+    {
+      n                     = A.NumMyRows();
+      n_entries_of_matrix   = A.NumMyNonzeros();
+      cholmod_sparse *lower = lower_triangle(A);
+      if (lower == nullptr)
+        return false;
       cholmod_free_factor(&factor, &common);
       factor                   = cholmod_analyze(lower, &common);
       const bool is_factorized = factor != nullptr

@@ -367,7 +367,6 @@ namespace liftoff
     if (load.kind != other.kind
         || !nearly_equal(load.magnitude, other.magnitude))
       return false;
-
     // Where `load` acts, in full plate coordinates.
     std::function<bool(const Point<2> &)> acts_at;
     const std::vector<Point<2>>          *candidates = &points.area;
@@ -411,7 +410,6 @@ namespace liftoff
         return false;
     if (load.kind == Kind::point)
       return true;
-
     return have_mirrored_intensities(
       load, other, axis, *candidates, acts_at, times, disc.mpi_communicator);
   }

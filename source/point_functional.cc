@@ -12,6 +12,40 @@ namespace liftoff
     // How far outside a cell, in its unit coordinates, a point still counts
     // as inside: round-off of points on cell edges and the plate's edges.
     constexpr double tolerance = 1e-10;
+
+    // The search trees find a cell around the point; a point on an edge or
+    // a vertex lies in its neighbours too, some of them perhaps of other
+    // ranks. Of this rank's cells that hold it, take the first in the order
+    // of the active cells; the flag says whether there is one.
+    std::pair<Triangulation<2>::active_cell_iterator, bool>
+    first_owned_cell_around(const Discretization &discretization,
+                            const Point<2>       &point)
+    {
+      const auto first = GridTools::find_active_cell_around_point(
+        discretization.grid_cache(),
+        point,
+        typename Triangulation<2>::active_cell_iterator(),
+        {},
+        tolerance);
+      typename Triangulation<2>::active_cell_iterator found;
+      bool                                            is_found = false;
+      if (first.first.state() == IteratorState::valid)
+        for (const auto &[cell, unit] :
+             GridTools::find_all_active_cells_around_point(
+               discretization.mapping,
+               discretization.triangulation,
+               point,
+               tolerance,
+               first))
+          if (cell->is_locally_owned()
+              && (!is_found
+                  || cell->active_cell_index() < found->active_cell_index()))
+            {
+              found    = cell;
+              is_found = true;
+            }
+      return {found, is_found};
+    }
   } // namespace
 
 
@@ -23,33 +57,8 @@ namespace liftoff
     const auto    &fe          = *discretization.fe;
     const MPI_Comm comm        = discretization.mpi_communicator;
 
-    // The search trees find a cell around the point; a point on an edge or
-    // a vertex lies in its neighbours too, some of them perhaps of other
-    // ranks. Of this rank's cells that hold it, take the first in the order
-    // of the active cells.
-    const auto first = GridTools::find_active_cell_around_point(
-      discretization.grid_cache(),
-      point,
-      typename Triangulation<2>::active_cell_iterator(),
-      {},
-      tolerance);
-    typename Triangulation<2>::active_cell_iterator found;
-    bool                                            is_found = false;
-    if (first.first.state() == IteratorState::valid)
-      for (const auto &[cell, unit] :
-           GridTools::find_all_active_cells_around_point(
-             discretization.mapping,
-             discretization.triangulation,
-             point,
-             tolerance,
-             first))
-        if (cell->is_locally_owned()
-            && (!is_found
-                || cell->active_cell_index() < found->active_cell_index()))
-          {
-            found    = cell;
-            is_found = true;
-          }
+    const auto [found, is_found] =
+      first_owned_cell_around(discretization, point);
 
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);

@@ -130,6 +130,24 @@ namespace liftoff
                            LA::MPI::Vector       &solution,
                            LA::MPI::Vector       &ghosted_solution);
 
+    /// No status changed in the last update, and with a start from the
+    /// prediction none within the round-off band differs from
+    /// `previous_set` (those are restored). Collective.
+    bool
+    has_settled(const unsigned long               n_changed,
+                const std::vector<unsigned char> &previous_set);
+    /// Give the foundation the set the contact rule gives the prediction
+    /// (ghosted_solution is set to it); returns the set it had before.
+    std::vector<unsigned char>
+    start_from_prediction(const LA::MPI::Vector &prediction,
+                          LA::MPI::Vector       &ghosted_solution);
+    /// Solve with the union of the sets visited[first], ... (a cycle).
+    void
+    solve_with_union(const std::vector<std::vector<unsigned char>> &visited,
+                     const unsigned int                             first,
+                     const LA::MPI::Vector                         &rhs,
+                     LA::MPI::Vector                               &solution,
+                     LA::MPI::Vector &ghosted_solution);
     /// Index of the set in `visited` equal to the foundation's current set
     /// on every rank, or visited.size().
     unsigned int
