@@ -23,14 +23,8 @@ except ImportError as e:
     print("skipped: %s" % e)
     sys.exit(77)
 
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print("%s %s" % ("PASS" if ok else "FAIL", what))
-    if not ok:
-        failures += 1
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 def main():
@@ -74,8 +68,7 @@ def main():
               and nodes[:, 0].min() == 0 and nodes[:, 0].max() == 0.5
               and nodes[:, 1].min() == 0 and nodes[:, 1].max() == 0.5,
               "%s: the quarter [0, 0.5]^2 at z = 0" % name)
-    print("%d check(s) failed" % failures)
-    sys.exit(1 if failures else 0)
+    finish()
 
 
 if __name__ == "__main__":

@@ -9,12 +9,7 @@ set -u
 liftoff=$1
 source "$(dirname "$0")/output_checks.sh"
 enter_work_directory
-printf '%s\n' \
-  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 12' \
-  '  set Cells along y = 12' '  set Polynomial degree = 2' 'end' \
-  'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
-  'subsection Time integration' '  set Time step = 5e-4' '  set End time = 20' 'end' \
-  'subsection Output' '  set Directory = out' '  set VTU interval = 7' 'end' > scene.prm
+write_long_scene 7
 
 for signal in INT TERM; do
   rm -rf out

@@ -10,12 +10,7 @@ set -u
 liftoff=$1
 source "$(dirname "$0")/output_checks.sh"
 enter_work_directory
-printf '%s\n' \
-  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 12' \
-  '  set Cells along y = 12' '  set Polynomial degree = 2' 'end' \
-  'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
-  'subsection Time integration' '  set Time step = 5e-4' '  set End time = 20' 'end' \
-  'subsection Output' '  set Directory = out' '  set VTU interval = 0' 'end' > scene.prm
+write_long_scene 0
 mpirun --allow-run-as-root --oversubscribe -np 2 "$liftoff" scene.prm >stdout.txt 2>stderr.txt &
 launcher=$!
 for _ in $(seq 300); do [ -s out/history.csv ] && break; sleep 0.1; done

@@ -43,6 +43,18 @@ no_temporary_files() {
   [ "$(find "$1" -name '*.tmp' | wc -l)" -eq 0 ]
 }
 
+# write_long_scene VTU_INTERVAL: scene.prm, a quarter plate (12 x 12 Q2)
+# under a point load whose 40 000 steps outlast any test, writing into
+# out/ with fields every VTU_INTERVAL steps: a run to be stopped.
+write_long_scene() {
+  printf '%s\n' \
+    'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 12' \
+    '  set Cells along y = 12' '  set Polynomial degree = 2' 'end' \
+    'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
+    'subsection Time integration' '  set Time step = 5e-4' '  set End time = 20' 'end' \
+    'subsection Output' '  set Directory = out' "  set VTU interval = $1" 'end' > scene.prm
+}
+
 # finish: print the verdict and return its status.
 finish() {
   echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"

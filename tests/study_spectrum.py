@@ -16,18 +16,13 @@
 import importlib.machinery
 import importlib.util
 import math
+import os
 import sys
 
 import numpy as np
 
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print("%s %s" % ("PASS" if ok else "FAIL", what))
-    if not ok:
-        failures += 1
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 def load_tool(path):
@@ -100,8 +95,7 @@ def main():
     except tool.StudyError:
         refused = True
     check(refused, "sample(): a time after the history is refused")
-    print("%d check(s) failed" % failures)
-    sys.exit(1 if failures else 0)
+    finish()
 
 
 if __name__ == "__main__":

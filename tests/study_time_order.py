@@ -49,14 +49,8 @@ end
 PROBE = "w(0.25;0)"
 STEPS = "4e-3,2e-3,1e-3,5e-4"
 
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print("%s %s" % ("PASS" if ok else "FAIL", what))
-    if not ok:
-        failures += 1
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 def study(liftoff, tool, work, name, extra):
@@ -124,8 +118,7 @@ def main():
               and not os.path.exists(os.path.join(output, "study.csv")),
               "time steps fine to coarse refused (exit %d: %s)"
               % (run.returncode, run.stderr.strip()))
-    print("%d check(s) failed" % failures)
-    sys.exit(1 if failures else 0)
+    finish()
 
 
 if __name__ == "__main__":
