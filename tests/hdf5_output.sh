@@ -9,14 +9,7 @@ checker="$(cd "$(dirname "$0")" && pwd)/hdf5_output.py"
 source "$(dirname "$0")/output_checks.sh"
 enter_work_directory
 /usr/bin/python3 -c 'import h5py' 2>/dev/null || { echo "skipped: no h5py for /usr/bin/python3"; exit 77; }
-printf '%s\n' \
-  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 6' \
-  '  set Cells along y = 6' '  set Polynomial degree = 2' 'end' \
-  'subsection Foundation' '  set Stiffness = 1' 'end' \
-  'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
-  'subsection Time integration' '  set Time step = 2e-3' '  set End time = 0.06' 'end' \
-  'subsection Output' '  set Directory = out' '  set VTU interval = 10' \
-  '  set HDF5 output = true' 'end' > scene.prm
+write_field_scene '  set HDF5 output = true'
 mpirun --allow-run-as-root --oversubscribe -np 2 "$liftoff" scene.prm >stdout.txt 2>stderr.txt
 check $? "the run on 2 ranks ends with exit 0"
 /usr/bin/python3 "$checker" out

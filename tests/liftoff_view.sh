@@ -16,14 +16,7 @@ source "$tests/output_checks.sh"
 enter_work_directory
 command -v pvpython >/dev/null && { [ -n "${DISPLAY:-}" ] || command -v Xvfb >/dev/null; } \
   || { echo "skipped: no pvpython or Xvfb (Debian: python3-paraview xvfb)"; exit 77; }
-printf '%s\n' \
-  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 6' \
-  '  set Cells along y = 6' '  set Polynomial degree = 2' 'end' \
-  'subsection Foundation' '  set Stiffness = 1' 'end' \
-  'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
-  'subsection Time integration' '  set Time step = 2e-3' '  set End time = 0.06' 'end' \
-  'subsection Output' '  set Directory = out' '  set VTU interval = 10' \
-  '  set Field cells = higher order' 'end' > scene.prm
+write_field_scene '  set Field cells = higher order'
 "$liftoff" scene.prm >stdout.txt 2>stderr.txt
 check $? "the run ends with exit 0"
 "$scripts/liftoff-view" out --size 400,300 >view.txt 2>view-stderr.txt

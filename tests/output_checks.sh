@@ -55,6 +55,21 @@ write_long_scene() {
     'subsection Output' '  set Directory = out' "  set VTU interval = $1" 'end' > scene.prm
 }
 
+# write_field_scene 'OUTPUT ENTRY': scene.prm, a quarter plate (6 x 6 Q2)
+# on a soft foundation under a point load, 30 steps, fields every 10 steps
+# into out/, with one more entry of the Output subsection: the fields to
+# read back.
+write_field_scene() {
+  printf '%s\n' \
+    'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 6' \
+    '  set Cells along y = 6' '  set Polynomial degree = 2' 'end' \
+    'subsection Foundation' '  set Stiffness = 1' 'end' \
+    'subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end' \
+    'subsection Time integration' '  set Time step = 2e-3' '  set End time = 0.06' 'end' \
+    'subsection Output' '  set Directory = out' '  set VTU interval = 10' \
+    "$1" 'end' > scene.prm
+}
+
 # finish: print the verdict and return its status.
 finish() {
   echo "$((failures == 0 ? 1 : 0)) passed, $((failures == 0 ? 0 : 1)) failed"
