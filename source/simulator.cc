@@ -521,32 +521,32 @@ namespace liftoff
   }
 
 
-  void
-  Simulator::run_static()
+  ActiveSetIteration::Result
+  Simulator::solve_static(const LA::MPI::Vector &load,
+                          const std::string     &what,
+                          const std::string     &during)
   {
     const bool needs_contact    = !discretization.has_kinematic_support();
     active_set.requires_contact = needs_contact;
     foundation.activate_all();
     active_set.set_base_matrix(matrices.stiffness);
 
-    LA::MPI::Vector &load = state.load;
-    assemble_loads(0, 0.0, load);
-
     const auto result = active_set.solve(load, state.u, state.ghosted_u);
+    active_set.requires_contact = false;
     require_finite_state("the static solution", {&state.u}, {}, load);
     // The one "step" of a static analysis is done: a stop request ends the
     // run here, like a dynamic run after a step, with no result written.
     if (const int signal = StopSignal::received(mpi_communicator))
-      stop_for_signal(signal,
-                      "during the static analysis; no result was written.");
+      stop_for_signal(signal, "during " + during + "; no result was written.");
     AssertThrow(!result.lost_contact,
-                ExcMessage("Static analysis: the plate lifts off the "
-                           "foundation everywhere (or keeps too little "
-                           "contact to be held) and has no support, so it "
-                           "has no static equilibrium under these loads. "
-                           "Use a dynamic analysis or support an edge."));
+                ExcMessage(what
+                           + ": the plate lifts off the "
+                             "foundation everywhere (or keeps too little "
+                             "contact to be held) and has no support, so it "
+                             "has no static equilibrium under these loads. "
+                             "Use a dynamic analysis or support an edge."));
     AssertThrow(result.converged,
-                ExcMessage("Static analysis: the active set "
+                ExcMessage(what + ": the active set "
                            + unsettled(result, active_set.max_iterations)
                            + (result.cycle_length > 0
                                 ? " (Active set/Cycle rule = stop)."
@@ -556,9 +556,10 @@ namespace liftoff
     // residual small, and its answer still round-off. Measure, don't trust.
     const double change = active_set.refinement_change(state.u, load);
     AssertThrow(change <= 1e-3,
-                ExcMessage("Static analysis: the solution is not accurate to "
-                           "0.1 %: one step of iterative refinement changes "
-                           "it by "
+                ExcMessage(what
+                           + ": the solution is not accurate to "
+                             "0.1 %: one step of iterative refinement changes "
+                             "it by "
                            + format_time(change)
                            + " (relative). The system is too ill-conditioned "
                              "for double precision, typically a very small "
@@ -566,17 +567,47 @@ namespace liftoff
                              "(Plate/Thickness ratio) with free edges; use "
                              "a stiffer foundation, support an edge or run a "
                              "dynamic analysis."));
+    return result;
+  }
+
+
+  void
+  Simulator::run_static()
+  {
+    LA::MPI::Vector &load = state.load;
+    assemble_loads(0, 0.0, load);
+    const auto result =
+      solve_static(load, "Static analysis", "the static analysis");
     // Loads applied proportionally: the response is positively homogeneous
     // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
     // lift-off, and the balance column checks it against the state at
-    // rest.
-    state.work = 0.5 * discretization.n_symmetry_copies() * (load * state.u);
+    // rest. A gap makes the response affine; Clapeyron's identity at the
+    // equilibrium then gains the gap's term (gap_work()).
+    state.work = 0.5 * discretization.n_symmetry_copies()
+                 * (load * state.u + foundation.gap_work(state.ghosted_u));
     state.energies = energies();
     require_finite_state("an energy", {}, state.energies.values(), load);
     record(result);
     pcout << "static: " << result.iterations << " active-set iterations, "
           << "contact fraction " << foundation.contact_area_fraction()
           << std::endl;
+  }
+
+
+  void
+  Simulator::settle_under_permanent_loads()
+  {
+    TimerOutput::Scope t(timer, "permanent loads");
+    // The initial displacement is measured from the settled state.
+    LA::MPI::Vector initial_displacement = state.u;
+    state.u                              = 0;
+    loads.assemble_permanent(scratch);
+    solve_static(scratch,
+                 "The static equilibrium under Loads/Self weight, from "
+                 "which the time integration starts",
+                 "the static equilibrium under Loads/Self weight");
+    state.u += initial_displacement;
+    state.ghosted_u = state.u;
   }
 
 
@@ -617,6 +648,8 @@ namespace liftoff
   {
     // check_before_run() set the initial state. The initial acceleration
     // solves M a0 = F(0) - (K + K_f(u0)) u0 with the contact set of u0.
+    if (loads.has_permanent_loads())
+      settle_under_permanent_loads();
     assemble_loads(0, 0.0, state.load);
     {
       TimerOutput::Scope t(timer, "initial acceleration");
@@ -810,6 +843,8 @@ namespace liftoff
     matrices.stiffness.vmult(balance, state.u);
     foundation.add_reaction(state.ghosted_u, balance);
     balance.sadd(-1.0, 1.0, load);
+    if (foundation.has_gap())
+      foundation.add_gap_load(balance);
   }
 
 

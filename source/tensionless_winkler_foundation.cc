@@ -4,9 +4,13 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
+#include <functional>
 
+#include <liftoff/scene_input.h>
 #include <liftoff/selection.h>
 #include <liftoff/tensionless_winkler_foundation.h>
+
+#include <cmath>
 
 namespace liftoff
 {
@@ -49,6 +53,16 @@ namespace liftoff
       "tolerance times its peak; 1e-3 still covers the worst round-off the "
       "Plate bounds admit (6e-4 at Delta = 1e-5), while a tolerance of 1 "
       "freezes every status and makes the foundation bilateral.");
+    prm.declare_entry(
+      "Initial gap",
+      "0",
+      Patterns::Anything(),
+      "g(x, y), muParser in x, y of the full plate: the distance between the "
+      "unloaded plate and the bed, in units of L (w is positive into the "
+      "bed). The springs act where w > g with the pressure Gamma (w - g): "
+      "g > 0 is a gap (a curled slab, a void), g < 0 a pre-compression (a "
+      "settled support). Must be finite on the plate, and symmetric on a "
+      "half or quarter model. The contact tolerance applies to w - g.");
     prm.leave_subsection();
   }
 
@@ -60,7 +74,11 @@ namespace liftoff
     model             = model_names.parse(prm.get("Model"), "Foundation/Model");
     stiffness         = prm.get_double("Stiffness");
     contact_tolerance = prm.get_double("Contact tolerance");
+    gap_expression    = prm.get("Initial gap");
     prm.leave_subsection();
+    // A broken expression is refused now, before any mesh is built.
+    parse_expression<2>(
+      "Foundation/Initial gap", gap_expression, 1, "x,y", false);
     AssertThrow(model == Model::none || stiffness > 0,
                 ExcMessage("Foundation/Stiffness (Gamma) must be > 0, or set "
                            "Foundation/Model = none."));
@@ -125,6 +143,60 @@ namespace liftoff
     w_at_points.resize(jxw.size());
     in_matrix = in_contact;
     points_to_update.clear();
+    evaluate_gap();
+  }
+
+
+  void
+  TensionlessWinklerFoundation::evaluate_gap()
+  {
+    gap.clear();
+    is_gapped = false;
+    if (model == Model::none)
+      return;
+    const std::string name = "Foundation/Initial gap";
+    const auto g = parse_expression<2>(name, gap_expression, 1, "x,y", false);
+    // A half or quarter model is right only if the bed is symmetric too:
+    // compare g at each point with its images in the symmetry planes.
+    const std::vector<unsigned int> axes = discretization->symmetry_axes();
+    std::vector<double>             values(jxw.size());
+    bool is_finite = true, is_symmetric = true, is_zero = true;
+    for (unsigned int i = 0; i < jxw.size(); ++i)
+      {
+        values[i] = g->value(gauss_points[i]);
+        is_finite = is_finite && std::isfinite(values[i]);
+        is_zero   = is_zero && values[i] == 0.0;
+        for (const unsigned int axis : axes)
+          {
+            Point<2> image = gauss_points[i];
+            image[axis]    = -image[axis];
+            is_symmetric   = is_symmetric
+                           && std::abs(g->value(image) - values[i])
+                                <= 1e-12 * (1.0 + std::abs(values[i]));
+          }
+      }
+    const MPI_Comm comm = discretization->mpi_communicator;
+    AssertThrow(Utilities::MPI::min(int(is_finite), comm) == 1,
+                ExcMessage(name + " = <" + abbreviated(gap_expression)
+                           + "> is not a finite number at some Gauss point "
+                             "of the plate; it must be finite everywhere."));
+    AssertThrow(Utilities::MPI::min(int(is_symmetric), comm) == 1,
+                ExcMessage(name + " = <" + abbreviated(gap_expression)
+                           + "> is not symmetric about the symmetry planes "
+                             "of Discretization/Symmetry; model the full "
+                             "plate or give a symmetric gap."));
+    // Decided on all ranks alike: a rank without cells takes part in the
+    // collective calls of the gap too.
+    is_gapped = (Utilities::MPI::min(int(is_zero), comm) == 0);
+    if (is_gapped)
+      gap = std::move(values);
+  }
+
+
+  bool
+  TensionlessWinklerFoundation::has_gap() const
+  {
+    return is_gapped;
   }
 
 
@@ -182,17 +254,31 @@ namespace liftoff
   }
 
 
+  void
+  TensionlessWinklerFoundation::compression_at_gauss_points(
+    const LA::MPI::Vector &u,
+    const unsigned int     c,
+    std::vector<double>   &compression) const
+  {
+    deflection_at_gauss_points(u, c, compression);
+    if (is_gapped)
+      for (unsigned int q = 0; q < n_q_points; ++q)
+        compression[q] -= gap[c * n_q_points + q];
+  }
+
+
   unsigned long
   TensionlessWinklerFoundation::update_contact_status(const LA::MPI::Vector &u)
   {
     if (model != Model::tensionless)
       return 0;
-    // Two passes: the threshold needs the largest |w_h| of the whole plate.
+    // Two passes: the threshold needs the largest |w_h - g| of the whole
+    // plate.
     std::vector<double> w;
     double              largest = 0;
     for (unsigned int c = 0; c < cell_index.size(); ++c)
       {
-        deflection_at_gauss_points(u, c, w);
+        compression_at_gauss_points(u, c, w);
         std::copy(w.begin(), w.end(), w_at_points.begin() + c * n_q_points);
         for (const double value : w)
           largest = std::max(largest, std::abs(value));
@@ -330,33 +416,87 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::add_reaction(const LA::MPI::Vector &u,
-                                             LA::MPI::Vector &vector) const
+  TensionlessWinklerFoundation::add_contact_integral(
+    const double coefficient,
+    const std::function<void(const unsigned int, std::vector<double> &)> &f,
+    LA::MPI::Vector &vector) const
   {
     const unsigned int                   n_w = w_dofs.size();
     Vector<double>                       cell_vector(n_w);
     std::vector<types::global_dof_index> dofs(n_w);
-    std::vector<double>                  w;
-    if (model != Model::none)
-      for (unsigned int c = 0; c < cell_index.size(); ++c)
-        {
-          deflection_at_gauss_points(u, c, w);
-          cell_vector = 0;
-          for (unsigned int q = 0; q < n_q_points; ++q)
-            {
-              const unsigned int i = c * n_q_points + q;
-              for (unsigned int k = 0; k < n_w; ++k)
-                cell_vector(k) += in_contact[i] * stiffness * jxw[i] * w[q]
-                                  * shape_values(q, k);
-            }
-          std::copy(cell_w_dof_indices.begin() + c * n_w,
-                    cell_w_dof_indices.begin() + (c + 1) * n_w,
-                    dofs.begin());
-          discretization->constraints.distribute_local_to_global(cell_vector,
-                                                                 dofs,
-                                                                 vector);
-        }
+    std::vector<double>                  values;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        f(c, values);
+        cell_vector = 0;
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            for (unsigned int k = 0; k < n_w; ++k)
+              cell_vector(k) += in_contact[i] * coefficient * jxw[i] * values[q]
+                                * shape_values(q, k);
+          }
+        std::copy(cell_w_dof_indices.begin() + c * n_w,
+                  cell_w_dof_indices.begin() + (c + 1) * n_w,
+                  dofs.begin());
+        discretization->constraints.distribute_local_to_global(cell_vector,
+                                                               dofs,
+                                                               vector);
+      }
     vector.compress(VectorOperation::add);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_reaction(const LA::MPI::Vector &u,
+                                             LA::MPI::Vector &vector) const
+  {
+    if (model == Model::none)
+      {
+        vector.compress(VectorOperation::add);
+        return;
+      }
+    add_contact_integral(
+      stiffness,
+      [&](const unsigned int c, std::vector<double> &w) {
+        deflection_at_gauss_points(u, c, w);
+      },
+      vector);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_gap_load(LA::MPI::Vector &vector) const
+  {
+    Assert(has_gap(), ExcInternalError());
+    add_contact_integral(
+      stiffness,
+      [&](const unsigned int c, std::vector<double> &g) {
+        g.assign(gap.begin() + c * n_q_points,
+                 gap.begin() + (c + 1) * n_q_points);
+      },
+      vector);
+  }
+
+
+  double
+  TensionlessWinklerFoundation::gap_work(const LA::MPI::Vector &u) const
+  {
+    if (!is_gapped)
+      return 0;
+    double              local = 0;
+    std::vector<double> w;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        deflection_at_gauss_points(u, c, w);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            local +=
+              in_contact[i] * stiffness * gap[i] * (gap[i] - w[q]) * jxw[i];
+          }
+      }
+    return Utilities::MPI::sum(local, discretization->mpi_communicator);
   }
 
 
@@ -368,7 +508,7 @@ namespace liftoff
     if (model != Model::none)
       for (unsigned int c = 0; c < cell_index.size(); ++c)
         {
-          deflection_at_gauss_points(u, c, w);
+          compression_at_gauss_points(u, c, w);
           for (unsigned int q = 0; q < n_q_points; ++q)
             {
               const double compression =

@@ -213,6 +213,18 @@ namespace liftoff
     run_static();
     void
     run_dynamic();
+    /// The static equilibrium K u + R_f(u) = load into state.u with the
+    /// active set, refused (naming `what`) if it does not exist or is not
+    /// accurate; `during` names it in the message of a stop request.
+    /// Leaves the active set's base matrix at K.
+    ActiveSetIteration::Result
+    solve_static(const LA::MPI::Vector &load,
+                 const std::string     &what,
+                 const std::string     &during);
+    /// state.u += the static equilibrium under the permanent loads, from
+    /// which a time integration starts.
+    void
+    settle_under_permanent_loads();
 
     /// The steps of run_dynamic(), in their order.
     void
@@ -246,7 +258,8 @@ namespace liftoff
     /// The state's energies (zero unless the history writes them).
     EnergyBalance
     energies() const;
-    /// F - K u - K_f(S) u for the current state u and contact set S.
+    /// F - K u - K_f(S) u + f_g(S) for the current state u and contact set
+    /// S (f_g: the springs' push on a gap).
     void
     force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
     void
