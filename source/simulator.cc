@@ -120,6 +120,7 @@ namespace liftoff
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
+    time_history.show_dissipated_energy(foundation.has_damping());
     active_set.parse_parameters(prm);
     active_set.linear_solver().parse_parameters(prm);
     checkpoint.parse_parameters(prm);
@@ -264,8 +265,10 @@ namespace liftoff
     foundation.setup(discretization);
     loads.setup(discretization);
     state.reinit(discretization);
-    for (auto *vector : {&next_load, &rhs, &u_next, &scratch, &scratch_2})
+    for (auto *vector :
+         {&next_load, &rhs, &u_next, &scratch, &scratch_2, &dashpot_force})
       discretization.reinit_vector(*vector);
+    discretization.reinit_ghosted_vector(ghosted_scratch);
   }
 
 
@@ -490,14 +493,16 @@ namespace liftoff
   Simulator::energies() const
   {
     if (!time_history.wants_energies())
-      return EnergyBalance{0, 0, 0, state.work};
-    return energies_of(matrices,
-                       foundation,
-                       state.u,
-                       state.ghosted_u,
-                       state.v,
-                       discretization.n_symmetry_copies(),
-                       state.work);
+      return EnergyBalance{0, 0, 0, state.work, state.dissipated};
+    EnergyBalance e = energies_of(matrices,
+                                  foundation,
+                                  state.u,
+                                  state.ghosted_u,
+                                  state.v,
+                                  discretization.n_symmetry_copies(),
+                                  state.work);
+    e.dissipated    = state.dissipated;
+    return e;
   }
 
 
@@ -653,8 +658,12 @@ namespace liftoff
     assemble_loads(0, 0.0, state.load);
     {
       TimerOutput::Scope t(timer, "initial acceleration");
+      if (foundation.has_damping())
+        set_dashpots_to_velocity();
       foundation.update_contact_status(state.ghosted_u);
       force_balance(state.load, state.balance);
+      if (foundation.has_damping())
+        compute_dashpot_force();
       matrices.solve_with_mass(state.a, state.balance);
       discretization.constraints.distribute(state.a);
       require_finite_state("the initial acceleration",
@@ -664,6 +673,7 @@ namespace liftoff
     }
     // The first iterate is the bilateral problem.
     foundation.activate_all();
+    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     {
       // The effective matrix without the foundation is needed only to
       // build the system matrix.
@@ -681,12 +691,17 @@ namespace liftoff
   void
   Simulator::resume_from_checkpoint()
   {
-    TimerOutput::Scope    t(timer, "checkpoint");
+    TimerOutput::Scope t(timer, "checkpoint");
+    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     LA::MPI::SparseMatrix base;
     build_base_matrix(base);
     checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
       serialize(archive, Checkpoint::format, &base);
     });
+    // The dashpots' force of the saved state, for the next step's
+    // dissipation.
+    if (foundation.has_damping())
+      compute_dashpot_force();
     AssertThrow(state.step == resume_step
                   && time_history.rows().size() == resume_step + 1,
                 ExcMessage(
@@ -713,9 +728,37 @@ namespace liftoff
   }
 
 
+  void
+  Simulator::set_dashpots_to_velocity()
+  {
+    // At a given state v is given: kappa = 0, o = -v.
+    scratch.equ(-1.0, state.v);
+    ghosted_scratch = scratch;
+    foundation.set_dashpot_velocity(0.0, ghosted_scratch);
+  }
+
+
+  void
+  Simulator::compute_dashpot_force()
+  {
+    ghosted_scratch = state.v;
+    dashpot_force   = 0;
+    foundation.add_dashpot_force(ghosted_scratch, dashpot_force);
+  }
+
+
   ActiveSetIteration::Result
   Simulator::solve_contact_problem(const unsigned int step)
   {
+    if (foundation.has_damping())
+      {
+        // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
+        // is affine in the new displacement, like a spring on a gap.
+        newmark.velocity_offset(state.u, state.v, state.a, scratch);
+        ghosted_scratch = scratch;
+        foundation.set_dashpot_velocity(newmark.velocity_factor(),
+                                        ghosted_scratch);
+      }
     newmark.predict(state.u, state.v, state.a, u_next);
     // The first step starts from the bilateral set: the predictor has no
     // motion yet to extrapolate.
@@ -755,9 +798,23 @@ namespace liftoff
     newmark.advance(u_next, state.u, state.v, state.a);
     state.step = step;
     state.tau  = step * newmark.time_step;
+    if (foundation.has_damping())
+      {
+        // The dashpots' work over the step by the trapezoidal rule, as the
+        // loads': 1/2 (u_{n+1} - u_n).(f_n + f_{n+1}); `scratch` still
+        // holds u_{n+1} - u_n from work_of_step().
+        LA::MPI::Vector &previous_force = scratch_2;
+        previous_force                  = dashpot_force;
+        compute_dashpot_force();
+        previous_force += dashpot_force;
+        state.dissipated +=
+          0.5 * discretization.n_symmetry_copies() * (scratch * previous_force);
+      }
     if (newmark.needs_force_balance())
       {
         TimerOutput::Scope t(timer, "right hand side");
+        if (foundation.has_damping())
+          set_dashpots_to_velocity();
         force_balance(state.load, state.balance);
       }
     state.energies = energies();
@@ -930,6 +987,16 @@ namespace liftoff
   Simulator::solution() const
   {
     return state.ghosted_u;
+  }
+
+
+  TensionlessWinklerFoundation::PressureRange
+  Simulator::contact_pressure_range() const
+  {
+    LA::MPI::Vector v;
+    discretization.reinit_ghosted_vector(v);
+    v = state.v;
+    return foundation.pressure_range(state.ghosted_u, v);
   }
 
 

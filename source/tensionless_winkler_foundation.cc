@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 
 #include <liftoff/scene_input.h>
 #include <liftoff/selection.h>
@@ -63,6 +64,15 @@ namespace liftoff
       "g > 0 is a gap (a curled slab, a void), g < 0 a pre-compression (a "
       "settled support). Must be finite on the plate, and symmetric on a "
       "half or quarter model. The contact tolerance applies to w - g.");
+    prm.declare_entry(
+      "Damping",
+      "0",
+      Patterns::Double(0.0),
+      "c = C_f L^2 / sqrt(rho H D), dashpots per unit area beside the "
+      "springs (a viscous subgrade; 0: none). They act only in contact, "
+      "and the pressure Gamma (w - g) + c w_dot is never tensile: where "
+      "spring and dashpot together would pull, the point is out of contact "
+      "(doc/model.md). The dissipated energy becomes a history column.");
     prm.leave_subsection();
   }
 
@@ -75,6 +85,7 @@ namespace liftoff
     stiffness         = prm.get_double("Stiffness");
     contact_tolerance = prm.get_double("Contact tolerance");
     gap_expression    = prm.get("Initial gap");
+    damping           = prm.get_double("Damping");
     prm.leave_subsection();
     // A broken expression is refused now, before any mesh is built.
     parse_expression<2>(
@@ -151,7 +162,11 @@ namespace liftoff
   TensionlessWinklerFoundation::evaluate_gap()
   {
     gap.clear();
-    is_gapped = false;
+    effective_gap.clear();
+    is_gapped           = false;
+    is_affine           = false;
+    effective_stiffness = stiffness;
+    matrix_stiffness    = stiffness;
     if (model == Model::none)
       return;
     const std::string name = "Foundation/Initial gap";
@@ -189,14 +204,114 @@ namespace liftoff
     // collective calls of the gap too.
     is_gapped = (Utilities::MPI::min(int(is_zero), comm) == 0);
     if (is_gapped)
-      gap = std::move(values);
+      {
+        gap = std::move(values);
+        gap_function =
+          parse_expression<2>(name, gap_expression, 1, "x,y", false);
+      }
+    // Dashpots make the reaction affine with a moving gap (set each step).
+    is_affine = is_gapped || damping > 0;
+    if (is_affine)
+      effective_gap = (is_gapped ? gap : std::vector<double>(jxw.size(), 0.0));
   }
 
 
   bool
   TensionlessWinklerFoundation::has_gap() const
   {
-    return is_gapped;
+    return is_affine;
+  }
+
+
+  double
+  TensionlessWinklerFoundation::gap_at(const Point<2> &p) const
+  {
+    return is_gapped ? gap_function->value(p) : 0.0;
+  }
+
+
+  bool
+  TensionlessWinklerFoundation::has_damping() const
+  {
+    return model != Model::none && damping > 0;
+  }
+
+
+  void
+  TensionlessWinklerFoundation::set_matrix_velocity_factor(const double kappa)
+  {
+    matrix_stiffness =
+      (has_damping() ? stiffness + damping * kappa : stiffness);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::set_dashpot_velocity(
+    const double           kappa,
+    const LA::MPI::Vector &offset)
+  {
+    Assert(has_damping(), ExcInternalError());
+    // Gamma (w - g) + c (kappa w - o) = (Gamma + c kappa) (w - e).
+    effective_stiffness = stiffness + damping * kappa;
+    std::vector<double> o;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        deflection_at_gauss_points(offset, c, o);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            effective_gap[i] =
+              ((is_gapped ? stiffness * gap[i] : 0.0) + damping * o[q])
+              / effective_stiffness;
+          }
+      }
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_dashpot_force(const LA::MPI::Vector &v,
+                                                  LA::MPI::Vector &vector) const
+  {
+    add_contact_integral(
+      damping,
+      [&](const unsigned int c, std::vector<double> &v_at_points) {
+        deflection_at_gauss_points(v, c, v_at_points);
+      },
+      vector);
+  }
+
+
+  TensionlessWinklerFoundation::PressureRange
+  TensionlessWinklerFoundation::pressure_range(const LA::MPI::Vector &u,
+                                               const LA::MPI::Vector &v) const
+  {
+    PressureRange       range;
+    std::vector<double> w, v_at_points;
+    double              smallest = std::numeric_limits<double>::max();
+    double              largest  = -std::numeric_limits<double>::max();
+    double              size     = 0;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        deflection_at_gauss_points(u, c, w);
+        deflection_at_gauss_points(v, c, v_at_points);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            const double       pressure =
+              stiffness * (w[q] - (is_gapped ? gap[i] : 0.0))
+              + damping * v_at_points[q];
+            size = std::max(size, std::abs(pressure));
+            if (in_contact[i])
+              smallest = std::min(smallest, pressure);
+            else
+              largest = std::max(largest, pressure);
+          }
+      }
+    const MPI_Comm comm          = discretization->mpi_communicator;
+    range.smallest_in_contact    = Utilities::MPI::min(smallest, comm);
+    range.largest_out_of_contact = Utilities::MPI::max(largest, comm);
+    range.largest_magnitude      = Utilities::MPI::max(size, comm);
+    return range;
   }
 
 
@@ -261,9 +376,9 @@ namespace liftoff
     std::vector<double>   &compression) const
   {
     deflection_at_gauss_points(u, c, compression);
-    if (is_gapped)
+    if (is_affine)
       for (unsigned int q = 0; q < n_q_points; ++q)
-        compression[q] -= gap[c * n_q_points + q];
+        compression[q] -= effective_gap[c * n_q_points + q];
   }
 
 
@@ -365,7 +480,7 @@ namespace liftoff
         for (unsigned int q = 0; q < n_q_points; ++q)
           {
             const unsigned int i = c * n_q_points + q;
-            weight[q]            = in_contact[i] * stiffness * jxw[i];
+            weight[q]            = in_contact[i] * matrix_stiffness * jxw[i];
             any                  = any || in_contact[i];
           }
         if (any)
@@ -398,7 +513,7 @@ namespace liftoff
           if (in_contact[*p] != in_matrix[*p])
             {
               weight[*p % n_q_points] =
-                (in_contact[*p] ? 1.0 : -1.0) * stiffness * jxw[*p];
+                (in_contact[*p] ? 1.0 : -1.0) * matrix_stiffness * jxw[*p];
               in_matrix[*p] = in_contact[*p];
               any           = true;
               ++n_updated;
@@ -470,10 +585,10 @@ namespace liftoff
   {
     Assert(has_gap(), ExcInternalError());
     add_contact_integral(
-      stiffness,
-      [&](const unsigned int c, std::vector<double> &g) {
-        g.assign(gap.begin() + c * n_q_points,
-                 gap.begin() + (c + 1) * n_q_points);
+      effective_stiffness,
+      [&](const unsigned int c, std::vector<double> &e) {
+        e.assign(effective_gap.begin() + c * n_q_points,
+                 effective_gap.begin() + (c + 1) * n_q_points);
       },
       vector);
   }
@@ -508,7 +623,11 @@ namespace liftoff
     if (model != Model::none)
       for (unsigned int c = 0; c < cell_index.size(); ++c)
         {
-          compression_at_gauss_points(u, c, w);
+          // The springs' own compression w - g: the dashpots store nothing.
+          deflection_at_gauss_points(u, c, w);
+          if (is_gapped)
+            for (unsigned int q = 0; q < n_q_points; ++q)
+              w[q] -= gap[c * n_q_points + q];
           for (unsigned int q = 0; q < n_q_points; ++q)
             {
               const double compression =

@@ -91,6 +91,11 @@ namespace liftoff
     history() const;
     const LA::MPI::Vector &
     solution() const;
+    /// The foundation pressure Gamma (w - g) + c v at the Gauss points of
+    /// the state (collective; see
+    /// TensionlessWinklerFoundation::pressure_range()).
+    TensionlessWinklerFoundation::PressureRange
+    contact_pressure_range() const;
     /// The signal (SIGINT, SIGTERM) that stopped the run, or 0.
     int
     stopping_signal() const;
@@ -143,6 +148,9 @@ namespace liftoff
     PlateState state;
     /// The next step's load, right-hand side and solution, and scratch.
     LA::MPI::Vector next_load, rhs, u_next, scratch, scratch_2;
+    /// With dashpots: their force c int_S v phi at the state, and a
+    /// ghosted vector to evaluate velocities at the Gauss points.
+    LA::MPI::Vector dashpot_force, ghosted_scratch;
     /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
     /// estimate from below), once it was needed; 0 before.
     double largest_eigenvalue = 0;
@@ -225,6 +233,13 @@ namespace liftoff
     /// which a time integration starts.
     void
     settle_under_permanent_loads();
+    /// The foundation's dashpots at the state's velocity (for the contact
+    /// rule and the force balance at a given state).
+    void
+    set_dashpots_to_velocity();
+    /// dashpot_force = c int_S v phi of the state.
+    void
+    compute_dashpot_force();
 
     /// The steps of run_dynamic(), in their order.
     void

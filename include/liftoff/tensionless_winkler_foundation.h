@@ -10,6 +10,7 @@
 #include <liftoff/linear_algebra.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,15 @@ namespace liftoff
    * K_f(S) u - f_g(S): the matrix is that of g = 0, and f_g(S), the springs'
    * push on the gap, joins the right-hand side (add_gap_load()). A scene
    * without a gap (g = 0 at every Gauss point) takes none of these paths.
+   *
+   * Dashpots c per unit area beside the springs make the pressure
+   * Gamma (w - g) + c v, also only in contact and never tensile. Wherever
+   * the velocity is affine in w, v = kappa w - o (Newmark: kappa =
+   * gamma / (beta dt), o from the previous state; at a given state kappa =
+   * 0, o = -v), the pressure is (Gamma + c kappa) (w - e) with the
+   * effective gap e = (Gamma g + c o) / (Gamma + c kappa): the same rule,
+   * matrix and right-hand side as a gap, with another stiffness and gap
+   * (set_dashpot_velocity()).
    *
    * The class also keeps a system matrix's foundation term in step with the
    * status: add_to_matrix() adds the whole term once, and update_matrix()
@@ -93,15 +103,57 @@ namespace liftoff
     add_reaction(const LA::MPI::Vector &ghosted_solution,
                  LA::MPI::Vector       &vector) const;
 
-    /// Whether some Gauss point has g != 0: then the reaction is
-    /// K_f(S) u - f_g(S), and f_g(S) belongs to every right-hand side.
+    /// Whether some Gauss point has g != 0 or there are dashpots: then the
+    /// reaction is K_f(S) u - f_g(S), and f_g(S) belongs to every
+    /// right-hand side.
     bool
     has_gap() const;
 
-    /// vector += f_g(status) = Gamma int_S g phi_i, the part of the springs'
-    /// force that does not depend on u. Call only if has_gap().
+    /// vector += f_g(status) = k int_S e phi_i, the part of the foundation's
+    /// force that does not depend on u (k = Gamma, e = g without dashpots).
+    /// Call only if has_gap().
     void
     add_gap_load(LA::MPI::Vector &vector) const;
+
+    /// g at a point of the meshed part (0 without a gap), for output.
+    double
+    gap_at(const Point<2> &p) const;
+
+    /// Whether there are dashpots (Damping > 0).
+    bool
+    has_damping() const;
+
+    /// From now on, the system matrices this class adds to hold the
+    /// stiffness Gamma + c kappa (kappa = 0: a static solve, or
+    /// gamma / (beta dt) in a time step). Before add_to_matrix().
+    void
+    set_matrix_velocity_factor(const double kappa);
+
+    /// The velocity at the points is v = kappa w - o (o from
+    /// `ghosted_offset`): sets the effective gap e and stiffness
+    /// Gamma + c kappa of the contact rule and of add_gap_load(). Only with
+    /// dashpots.
+    void
+    set_dashpot_velocity(const double           kappa,
+                         const LA::MPI::Vector &ghosted_offset);
+
+    /// vector += c int_S v phi_i, the dashpots' force at the velocity v.
+    void
+    add_dashpot_force(const LA::MPI::Vector &ghosted_velocity,
+                      LA::MPI::Vector       &vector) const;
+
+    /// The pressure Gamma (w - g) + c v at the Gauss points: its smallest
+    /// value at a point in contact, its largest at a point out of contact,
+    /// and its largest magnitude (collective; for tests).
+    struct PressureRange
+    {
+      double smallest_in_contact    = 0;
+      double largest_out_of_contact = 0;
+      double largest_magnitude      = 0;
+    };
+    PressureRange
+    pressure_range(const LA::MPI::Vector &ghosted_solution,
+                   const LA::MPI::Vector &ghosted_velocity) const;
 
     /// Gamma int_S g (g - w): with a gap, Clapeyron's theorem for an
     /// equilibrium K u + K_f(S) u - f_g(S) = F reads
@@ -153,6 +205,8 @@ namespace liftoff
     double contact_tolerance = 1e-9;
     /// g(x, y) in full plate coordinates.
     std::string gap_expression = "0";
+    /// c, dashpots per unit area.
+    double damping = 0;
 
   private:
     const Discretization *discretization = nullptr;
@@ -170,6 +224,16 @@ namespace liftoff
     /// g at the points, if is_gapped: some point on some rank has g != 0.
     std::vector<double> gap;
     bool                is_gapped = false;
+    /// g(x, y), kept for evaluation off the Gauss points (if is_gapped).
+    std::unique_ptr<FunctionParser<2>> gap_function;
+    /// has_gap(): a gap or dashpots.
+    bool is_affine = false;
+    /// The effective gap e of the contact rule and of add_gap_load() and
+    /// its stiffness, and the stiffness the matrix holds: g and Gamma
+    /// without dashpots.
+    std::vector<double> effective_gap;
+    double              effective_stiffness = 1.0;
+    double              matrix_stiffness    = 1.0;
     /// w_h at the points, kept between the two passes of a status update.
     std::vector<double> w_at_points;
     /// The half-width of the round-off band at the last status update.
