@@ -161,13 +161,25 @@ namespace liftoff
     // The residual, computed in double, carries round-off of the order of
     // eps ||A|| ||x||; the correction it gives is then of the order of the
     // error that the conditioning makes of that round-off.
-    LA::MPI::Vector residual(b), correction(b);
+    const LA::MPI::Vector &system_rhs = with_gap_load(b);
+    LA::MPI::Vector        residual(system_rhs), correction(system_rhs);
     matrix.vmult(residual, x);
-    residual.sadd(-1.0, 1.0, b);
+    residual.sadd(-1.0, 1.0, system_rhs);
     correction = 0;
     solver.solve(correction, residual);
     const double size = x.l2_norm();
     return size > 0 ? correction.l2_norm() / size : 0.0;
+  }
+
+
+  const LA::MPI::Vector &
+  ActiveSetIteration::with_gap_load(const LA::MPI::Vector &rhs)
+  {
+    if (!foundation.has_gap())
+      return rhs;
+    rhs_with_gap = rhs;
+    foundation.add_gap_load(rhs_with_gap);
+    return rhs_with_gap;
   }
 
 
@@ -181,7 +193,7 @@ namespace liftoff
       if (foundation.update_matrix(matrix) > 0)
         solver.matrix_changed();
     }
-    solver.solve(solution, rhs);
+    solver.solve(solution, with_gap_load(rhs));
     discretization.constraints.distribute(solution);
     ghosted_solution = solution;
   }
@@ -273,7 +285,8 @@ namespace liftoff
       {
         ++result.iterations;
         solve_with_current_set(rhs, solution, ghosted_solution);
-        if (requires_contact && !is_solution_of_system(solution, rhs))
+        if (requires_contact
+            && !is_solution_of_system(solution, with_gap_load(rhs)))
           {
             result.lost_contact = true;
             return result;

@@ -16,15 +16,30 @@ namespace liftoff
 {
   namespace
   {
-    /// Pressure of the springs on the plate, Gamma w^+ (Gamma w when
-    /// bilateral): what the foundation carries, positive in compression.
-    class FoundationPressure : public DataPostprocessorScalar<2>
+    /// Pressure of the springs on the plate, Gamma (w - g)^+ (Gamma (w - g)
+    /// when bilateral): what the foundation's springs carry, positive in
+    /// compression; and the uplift (g - w)^+, the gap between plate and bed
+    /// where the plate is lifted.
+    class FoundationPressure : public DataPostprocessor<2>
     {
     public:
       explicit FoundationPressure(const TensionlessWinklerFoundation &f)
-          : DataPostprocessorScalar<2>("foundation_pressure", update_values)
-          , foundation(f)
+          : foundation(f)
       {}
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"foundation_pressure", "uplift"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        // The points only where g needs them.
+        return foundation.has_gap() ? update_values | update_quadrature_points
+                                    : update_values;
+      }
 
       void
       evaluate_vector_field(
@@ -34,13 +49,17 @@ namespace liftoff
         using Model = TensionlessWinklerFoundation::Model;
         for (unsigned int q = 0; q < input.solution_values.size(); ++q)
           {
-            const double w = input.solution_values[q][0];
+            const double g = (foundation.has_gap()
+                                ? foundation.gap_at(input.evaluation_points[q])
+                                : 0.0);
+            const double w = input.solution_values[q][0] - g;
             computed[q][0] = (foundation.model == Model::none
                                 ? 0.0
                                 : foundation.stiffness
                                     * (foundation.model == Model::bilateral
                                          ? w
                                          : std::max(w, 0.0)));
+            computed[q][1] = std::max(-w, 0.0);
           }
       }
 
@@ -170,6 +189,7 @@ namespace liftoff
       {"rotation", "F0*L/D"},
       {"displacement", "F0*L^2/D"},
       {"foundation_pressure", "F0/L^2"},
+      {"uplift", "F0*L^2/D"},
       {"contact_status", "1"}};
 
 

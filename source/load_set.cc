@@ -7,6 +7,7 @@
 #include <liftoff/scene_input.h>
 #include <liftoff/selection.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -105,6 +106,16 @@ namespace liftoff
   LoadSet::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Loads");
+    prm.declare_entry(
+      "Self weight",
+      "0",
+      Patterns::Double(0.0),
+      "q, the plate's weight per unit area in units of D / L^3 (>= 0; 0: a "
+      "weightless plate): a uniform pressure that acts from before tau = 0. "
+      "A time integration starts from the static equilibrium under it (the "
+      "slab settled on its bed, in contact wherever q pre-compresses the "
+      "springs), with the initial displacement added to that equilibrium; "
+      "the other loads act on top. A static analysis adds it to the loads.");
     for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
       {
         declare_load(
@@ -216,7 +227,43 @@ namespace liftoff
             loads.push_back(std::move(load));
           prm.leave_subsection();
         }
+    // The pattern refuses a negative, nan or infinite weight.
+    const double self_weight = prm.get_double("Self weight");
+    if (self_weight != 0.0)
+      {
+        // A uniform pressure on the whole plate that is always on.
+        Load load;
+        load.kind               = Kind::pressure;
+        load.name               = "Loads/Self weight";
+        load.magnitude          = self_weight;
+        load.history_expression = "1";
+        load.history            = parse_expression<1>(
+          load.name, load.history_expression, 1, "tau", false);
+        load.intensity_expression = "1";
+        load.intensity            = parse_expression<2>(
+          load.name, load.intensity_expression, 1, "x,y,tau", true);
+        load.region       = "whole plate";
+        load.is_permanent = true;
+        loads.push_back(std::move(load));
+      }
     prm.leave_subsection();
+  }
+
+
+  bool
+  LoadSet::has_permanent_loads() const
+  {
+    return std::any_of(loads.begin(), loads.end(), [](const Load &load) {
+      return load.is_permanent;
+    });
+  }
+
+
+  void
+  LoadSet::assemble_permanent(LA::MPI::Vector &load_vector) const
+  {
+    assemble_selected(
+      0.0, [](const Load &load) { return load.is_permanent; }, load_vector);
   }
 
 
@@ -589,10 +636,24 @@ namespace liftoff
   void
   LoadSet::assemble(const double tau, LA::MPI::Vector &load_vector) const
   {
+    assemble_selected(
+      tau, [](const Load &) { return true; }, load_vector);
+    if (body_force != nullptr)
+      add_body_force(tau, load_vector);
+  }
+
+
+  void
+  LoadSet::assemble_selected(const double                             tau,
+                             const std::function<bool(const Load &)> &selected,
+                             LA::MPI::Vector &load_vector) const
+  {
     load_vector = 0;
     LA::MPI::Vector scratch;
     for (const auto &load : loads)
       {
+        if (!selected(load))
+          continue;
         const double h = load.history->value(Point<1>(tau));
         if (load.intensity_depends_on_time)
           {
@@ -604,8 +665,6 @@ namespace liftoff
         else
           load_vector.add(h, load.spatial_part);
       }
-    if (body_force != nullptr)
-      add_body_force(tau, load_vector);
   }
 
 

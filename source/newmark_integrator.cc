@@ -230,6 +230,30 @@ namespace liftoff
   }
 
 
+  double
+  NewmarkIntegrator::velocity_factor() const
+  {
+    return gamma / (beta * time_step);
+  }
+
+
+  void
+  NewmarkIntegrator::velocity_offset(const LA::MPI::Vector &u,
+                                     const LA::MPI::Vector &v,
+                                     const LA::MPI::Vector &a,
+                                     LA::MPI::Vector       &offset) const
+  {
+    // From advance(): v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})
+    // with a_{n+1} = (u_{n+1} - u_n)/(beta dt^2) - v_n/(beta dt)
+    // - (1/(2 beta) - 1) a_n.
+    offset.equ(velocity_factor(), u);
+    offset.add(-(1 - gamma / beta),
+               v,
+               -time_step * (1 - 0.5 * gamma / beta),
+               a);
+  }
+
+
   void
   NewmarkIntegrator::predict(const LA::MPI::Vector &u,
                              const LA::MPI::Vector &v,

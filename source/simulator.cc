@@ -120,6 +120,7 @@ namespace liftoff
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
+    time_history.show_dissipated_energy(foundation.has_damping());
     active_set.parse_parameters(prm);
     active_set.linear_solver().parse_parameters(prm);
     checkpoint.parse_parameters(prm);
@@ -264,8 +265,10 @@ namespace liftoff
     foundation.setup(discretization);
     loads.setup(discretization);
     state.reinit(discretization);
-    for (auto *vector : {&next_load, &rhs, &u_next, &scratch, &scratch_2})
+    for (auto *vector :
+         {&next_load, &rhs, &u_next, &scratch, &scratch_2, &dashpot_force})
       discretization.reinit_vector(*vector);
+    discretization.reinit_ghosted_vector(ghosted_scratch);
   }
 
 
@@ -490,14 +493,16 @@ namespace liftoff
   Simulator::energies() const
   {
     if (!time_history.wants_energies())
-      return EnergyBalance{0, 0, 0, state.work};
-    return energies_of(matrices,
-                       foundation,
-                       state.u,
-                       state.ghosted_u,
-                       state.v,
-                       discretization.n_symmetry_copies(),
-                       state.work);
+      return EnergyBalance{0, 0, 0, state.work, state.dissipated};
+    EnergyBalance e = energies_of(matrices,
+                                  foundation,
+                                  state.u,
+                                  state.ghosted_u,
+                                  state.v,
+                                  discretization.n_symmetry_copies(),
+                                  state.work);
+    e.dissipated    = state.dissipated;
+    return e;
   }
 
 
@@ -521,32 +526,32 @@ namespace liftoff
   }
 
 
-  void
-  Simulator::run_static()
+  ActiveSetIteration::Result
+  Simulator::solve_static(const LA::MPI::Vector &load,
+                          const std::string     &what,
+                          const std::string     &during)
   {
     const bool needs_contact    = !discretization.has_kinematic_support();
     active_set.requires_contact = needs_contact;
     foundation.activate_all();
     active_set.set_base_matrix(matrices.stiffness);
 
-    LA::MPI::Vector &load = state.load;
-    assemble_loads(0, 0.0, load);
-
     const auto result = active_set.solve(load, state.u, state.ghosted_u);
+    active_set.requires_contact = false;
     require_finite_state("the static solution", {&state.u}, {}, load);
     // The one "step" of a static analysis is done: a stop request ends the
     // run here, like a dynamic run after a step, with no result written.
     if (const int signal = StopSignal::received(mpi_communicator))
-      stop_for_signal(signal,
-                      "during the static analysis; no result was written.");
+      stop_for_signal(signal, "during " + during + "; no result was written.");
     AssertThrow(!result.lost_contact,
-                ExcMessage("Static analysis: the plate lifts off the "
-                           "foundation everywhere (or keeps too little "
-                           "contact to be held) and has no support, so it "
-                           "has no static equilibrium under these loads. "
-                           "Use a dynamic analysis or support an edge."));
+                ExcMessage(what
+                           + ": the plate lifts off the "
+                             "foundation everywhere (or keeps too little "
+                             "contact to be held) and has no support, so it "
+                             "has no static equilibrium under these loads. "
+                             "Use a dynamic analysis or support an edge."));
     AssertThrow(result.converged,
-                ExcMessage("Static analysis: the active set "
+                ExcMessage(what + ": the active set "
                            + unsettled(result, active_set.max_iterations)
                            + (result.cycle_length > 0
                                 ? " (Active set/Cycle rule = stop)."
@@ -556,9 +561,10 @@ namespace liftoff
     // residual small, and its answer still round-off. Measure, don't trust.
     const double change = active_set.refinement_change(state.u, load);
     AssertThrow(change <= 1e-3,
-                ExcMessage("Static analysis: the solution is not accurate to "
-                           "0.1 %: one step of iterative refinement changes "
-                           "it by "
+                ExcMessage(what
+                           + ": the solution is not accurate to "
+                             "0.1 %: one step of iterative refinement changes "
+                             "it by "
                            + format_time(change)
                            + " (relative). The system is too ill-conditioned "
                              "for double precision, typically a very small "
@@ -566,17 +572,47 @@ namespace liftoff
                              "(Plate/Thickness ratio) with free edges; use "
                              "a stiffer foundation, support an edge or run a "
                              "dynamic analysis."));
+    return result;
+  }
+
+
+  void
+  Simulator::run_static()
+  {
+    LA::MPI::Vector &load = state.load;
+    assemble_loads(0, 0.0, load);
+    const auto result =
+      solve_static(load, "Static analysis", "the static analysis");
     // Loads applied proportionally: the response is positively homogeneous
     // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
     // lift-off, and the balance column checks it against the state at
-    // rest.
-    state.work = 0.5 * discretization.n_symmetry_copies() * (load * state.u);
+    // rest. A gap makes the response affine; Clapeyron's identity at the
+    // equilibrium then gains the gap's term (gap_work()).
+    state.work = 0.5 * discretization.n_symmetry_copies()
+                 * (load * state.u + foundation.gap_work(state.ghosted_u));
     state.energies = energies();
     require_finite_state("an energy", {}, state.energies.values(), load);
     record(result);
     pcout << "static: " << result.iterations << " active-set iterations, "
           << "contact fraction " << foundation.contact_area_fraction()
           << std::endl;
+  }
+
+
+  void
+  Simulator::settle_under_permanent_loads()
+  {
+    TimerOutput::Scope t(timer, "permanent loads");
+    // The initial displacement is measured from the settled state.
+    LA::MPI::Vector initial_displacement = state.u;
+    state.u                              = 0;
+    loads.assemble_permanent(scratch);
+    solve_static(scratch,
+                 "The static equilibrium under Loads/Self weight, from "
+                 "which the time integration starts",
+                 "the static equilibrium under Loads/Self weight");
+    state.u += initial_displacement;
+    state.ghosted_u = state.u;
   }
 
 
@@ -617,11 +653,17 @@ namespace liftoff
   {
     // check_before_run() set the initial state. The initial acceleration
     // solves M a0 = F(0) - (K + K_f(u0)) u0 with the contact set of u0.
+    if (loads.has_permanent_loads())
+      settle_under_permanent_loads();
     assemble_loads(0, 0.0, state.load);
     {
       TimerOutput::Scope t(timer, "initial acceleration");
+      if (foundation.has_damping())
+        set_dashpots_to_velocity();
       foundation.update_contact_status(state.ghosted_u);
       force_balance(state.load, state.balance);
+      if (foundation.has_damping())
+        compute_dashpot_force();
       matrices.solve_with_mass(state.a, state.balance);
       discretization.constraints.distribute(state.a);
       require_finite_state("the initial acceleration",
@@ -631,6 +673,7 @@ namespace liftoff
     }
     // The first iterate is the bilateral problem.
     foundation.activate_all();
+    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     {
       // The effective matrix without the foundation is needed only to
       // build the system matrix.
@@ -648,12 +691,17 @@ namespace liftoff
   void
   Simulator::resume_from_checkpoint()
   {
-    TimerOutput::Scope    t(timer, "checkpoint");
+    TimerOutput::Scope t(timer, "checkpoint");
+    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     LA::MPI::SparseMatrix base;
     build_base_matrix(base);
     checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
       serialize(archive, Checkpoint::format, &base);
     });
+    // The dashpots' force of the saved state, for the next step's
+    // dissipation.
+    if (foundation.has_damping())
+      compute_dashpot_force();
     AssertThrow(state.step == resume_step
                   && time_history.rows().size() == resume_step + 1,
                 ExcMessage(
@@ -680,9 +728,37 @@ namespace liftoff
   }
 
 
+  void
+  Simulator::set_dashpots_to_velocity()
+  {
+    // At a given state v is given: kappa = 0, o = -v.
+    scratch.equ(-1.0, state.v);
+    ghosted_scratch = scratch;
+    foundation.set_dashpot_velocity(0.0, ghosted_scratch);
+  }
+
+
+  void
+  Simulator::compute_dashpot_force()
+  {
+    ghosted_scratch = state.v;
+    dashpot_force   = 0;
+    foundation.add_dashpot_force(ghosted_scratch, dashpot_force);
+  }
+
+
   ActiveSetIteration::Result
   Simulator::solve_contact_problem(const unsigned int step)
   {
+    if (foundation.has_damping())
+      {
+        // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
+        // is affine in the new displacement, like a spring on a gap.
+        newmark.velocity_offset(state.u, state.v, state.a, scratch);
+        ghosted_scratch = scratch;
+        foundation.set_dashpot_velocity(newmark.velocity_factor(),
+                                        ghosted_scratch);
+      }
     newmark.predict(state.u, state.v, state.a, u_next);
     // The first step starts from the bilateral set: the predictor has no
     // motion yet to extrapolate.
@@ -722,9 +798,23 @@ namespace liftoff
     newmark.advance(u_next, state.u, state.v, state.a);
     state.step = step;
     state.tau  = step * newmark.time_step;
+    if (foundation.has_damping())
+      {
+        // The dashpots' work over the step by the trapezoidal rule, as the
+        // loads': 1/2 (u_{n+1} - u_n).(f_n + f_{n+1}); `scratch` still
+        // holds u_{n+1} - u_n from work_of_step().
+        LA::MPI::Vector &previous_force = scratch_2;
+        previous_force                  = dashpot_force;
+        compute_dashpot_force();
+        previous_force += dashpot_force;
+        state.dissipated +=
+          0.5 * discretization.n_symmetry_copies() * (scratch * previous_force);
+      }
     if (newmark.needs_force_balance())
       {
         TimerOutput::Scope t(timer, "right hand side");
+        if (foundation.has_damping())
+          set_dashpots_to_velocity();
         force_balance(state.load, state.balance);
       }
     state.energies = energies();
@@ -810,6 +900,8 @@ namespace liftoff
     matrices.stiffness.vmult(balance, state.u);
     foundation.add_reaction(state.ghosted_u, balance);
     balance.sadd(-1.0, 1.0, load);
+    if (foundation.has_gap())
+      foundation.add_gap_load(balance);
   }
 
 
@@ -895,6 +987,16 @@ namespace liftoff
   Simulator::solution() const
   {
     return state.ghosted_u;
+  }
+
+
+  TensionlessWinklerFoundation::PressureRange
+  Simulator::contact_pressure_range() const
+  {
+    LA::MPI::Vector v;
+    discretization.reinit_ghosted_vector(v);
+    v = state.v;
+    return foundation.pressure_range(state.ghosted_u, v);
   }
 
 

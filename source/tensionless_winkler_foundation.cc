@@ -4,9 +4,14 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 
+#include <liftoff/scene_input.h>
 #include <liftoff/selection.h>
 #include <liftoff/tensionless_winkler_foundation.h>
+
+#include <cmath>
 
 namespace liftoff
 {
@@ -49,6 +54,25 @@ namespace liftoff
       "tolerance times its peak; 1e-3 still covers the worst round-off the "
       "Plate bounds admit (6e-4 at Delta = 1e-5), while a tolerance of 1 "
       "freezes every status and makes the foundation bilateral.");
+    prm.declare_entry(
+      "Initial gap",
+      "0",
+      Patterns::Anything(),
+      "g(x, y), muParser in x, y of the full plate: the distance between the "
+      "unloaded plate and the bed, in units of L (w is positive into the "
+      "bed). The springs act where w > g with the pressure Gamma (w - g): "
+      "g > 0 is a gap (a curled slab, a void), g < 0 a pre-compression (a "
+      "settled support). Must be finite on the plate, and symmetric on a "
+      "half or quarter model. The contact tolerance applies to w - g.");
+    prm.declare_entry(
+      "Damping",
+      "0",
+      Patterns::Double(0.0),
+      "c = C_f L^2 / sqrt(rho H D), dashpots per unit area beside the "
+      "springs (a viscous subgrade; 0: none). They act only in contact, "
+      "and the pressure Gamma (w - g) + c w_dot is never tensile: where "
+      "spring and dashpot together would pull, the point is out of contact "
+      "(doc/model.md). The dissipated energy becomes a history column.");
     prm.leave_subsection();
   }
 
@@ -60,7 +84,12 @@ namespace liftoff
     model             = model_names.parse(prm.get("Model"), "Foundation/Model");
     stiffness         = prm.get_double("Stiffness");
     contact_tolerance = prm.get_double("Contact tolerance");
+    gap_expression    = prm.get("Initial gap");
+    damping           = prm.get_double("Damping");
     prm.leave_subsection();
+    // A broken expression is refused now, before any mesh is built.
+    parse_expression<2>(
+      "Foundation/Initial gap", gap_expression, 1, "x,y", false);
     AssertThrow(model == Model::none || stiffness > 0,
                 ExcMessage("Foundation/Stiffness (Gamma) must be > 0, or set "
                            "Foundation/Model = none."));
@@ -125,6 +154,164 @@ namespace liftoff
     w_at_points.resize(jxw.size());
     in_matrix = in_contact;
     points_to_update.clear();
+    evaluate_gap();
+  }
+
+
+  void
+  TensionlessWinklerFoundation::evaluate_gap()
+  {
+    gap.clear();
+    effective_gap.clear();
+    is_gapped           = false;
+    is_affine           = false;
+    effective_stiffness = stiffness;
+    matrix_stiffness    = stiffness;
+    if (model == Model::none)
+      return;
+    const std::string name = "Foundation/Initial gap";
+    const auto g = parse_expression<2>(name, gap_expression, 1, "x,y", false);
+    // A half or quarter model is right only if the bed is symmetric too:
+    // compare g at each point with its images in the symmetry planes.
+    const std::vector<unsigned int> axes = discretization->symmetry_axes();
+    std::vector<double>             values(jxw.size());
+    bool is_finite = true, is_symmetric = true, is_zero = true;
+    for (unsigned int i = 0; i < jxw.size(); ++i)
+      {
+        values[i] = g->value(gauss_points[i]);
+        is_finite = is_finite && std::isfinite(values[i]);
+        is_zero   = is_zero && values[i] == 0.0;
+        for (const unsigned int axis : axes)
+          {
+            Point<2> image = gauss_points[i];
+            image[axis]    = -image[axis];
+            is_symmetric   = is_symmetric
+                           && std::abs(g->value(image) - values[i])
+                                <= 1e-12 * (1.0 + std::abs(values[i]));
+          }
+      }
+    const MPI_Comm comm = discretization->mpi_communicator;
+    AssertThrow(Utilities::MPI::min(int(is_finite), comm) == 1,
+                ExcMessage(name + " = <" + abbreviated(gap_expression)
+                           + "> is not a finite number at some Gauss point "
+                             "of the plate; it must be finite everywhere."));
+    AssertThrow(Utilities::MPI::min(int(is_symmetric), comm) == 1,
+                ExcMessage(name + " = <" + abbreviated(gap_expression)
+                           + "> is not symmetric about the symmetry planes "
+                             "of Discretization/Symmetry; model the full "
+                             "plate or give a symmetric gap."));
+    // Decided on all ranks alike: a rank without cells takes part in the
+    // collective calls of the gap too.
+    is_gapped = (Utilities::MPI::min(int(is_zero), comm) == 0);
+    if (is_gapped)
+      {
+        gap = std::move(values);
+        gap_function =
+          parse_expression<2>(name, gap_expression, 1, "x,y", false);
+      }
+    // Dashpots make the reaction affine with a moving gap (set each step).
+    is_affine = is_gapped || damping > 0;
+    if (is_affine)
+      effective_gap = (is_gapped ? gap : std::vector<double>(jxw.size(), 0.0));
+  }
+
+
+  bool
+  TensionlessWinklerFoundation::has_gap() const
+  {
+    return is_affine;
+  }
+
+
+  double
+  TensionlessWinklerFoundation::gap_at(const Point<2> &p) const
+  {
+    return is_gapped ? gap_function->value(p) : 0.0;
+  }
+
+
+  bool
+  TensionlessWinklerFoundation::has_damping() const
+  {
+    return model != Model::none && damping > 0;
+  }
+
+
+  void
+  TensionlessWinklerFoundation::set_matrix_velocity_factor(const double kappa)
+  {
+    matrix_stiffness =
+      (has_damping() ? stiffness + damping * kappa : stiffness);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::set_dashpot_velocity(
+    const double           kappa,
+    const LA::MPI::Vector &offset)
+  {
+    Assert(has_damping(), ExcInternalError());
+    // Gamma (w - g) + c (kappa w - o) = (Gamma + c kappa) (w - e).
+    effective_stiffness = stiffness + damping * kappa;
+    std::vector<double> o;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        deflection_at_gauss_points(offset, c, o);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            effective_gap[i] =
+              ((is_gapped ? stiffness * gap[i] : 0.0) + damping * o[q])
+              / effective_stiffness;
+          }
+      }
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_dashpot_force(const LA::MPI::Vector &v,
+                                                  LA::MPI::Vector &vector) const
+  {
+    add_contact_integral(
+      damping,
+      [&](const unsigned int c, std::vector<double> &v_at_points) {
+        deflection_at_gauss_points(v, c, v_at_points);
+      },
+      vector);
+  }
+
+
+  TensionlessWinklerFoundation::PressureRange
+  TensionlessWinklerFoundation::pressure_range(const LA::MPI::Vector &u,
+                                               const LA::MPI::Vector &v) const
+  {
+    PressureRange       range;
+    std::vector<double> w, v_at_points;
+    double              smallest = std::numeric_limits<double>::max();
+    double              largest  = -std::numeric_limits<double>::max();
+    double              size     = 0;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        deflection_at_gauss_points(u, c, w);
+        deflection_at_gauss_points(v, c, v_at_points);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            const double       pressure =
+              stiffness * (w[q] - (is_gapped ? gap[i] : 0.0))
+              + damping * v_at_points[q];
+            size = std::max(size, std::abs(pressure));
+            if (in_contact[i])
+              smallest = std::min(smallest, pressure);
+            else
+              largest = std::max(largest, pressure);
+          }
+      }
+    const MPI_Comm comm          = discretization->mpi_communicator;
+    range.smallest_in_contact    = Utilities::MPI::min(smallest, comm);
+    range.largest_out_of_contact = Utilities::MPI::max(largest, comm);
+    range.largest_magnitude      = Utilities::MPI::max(size, comm);
+    return range;
   }
 
 
@@ -182,17 +369,31 @@ namespace liftoff
   }
 
 
+  void
+  TensionlessWinklerFoundation::compression_at_gauss_points(
+    const LA::MPI::Vector &u,
+    const unsigned int     c,
+    std::vector<double>   &compression) const
+  {
+    deflection_at_gauss_points(u, c, compression);
+    if (is_affine)
+      for (unsigned int q = 0; q < n_q_points; ++q)
+        compression[q] -= effective_gap[c * n_q_points + q];
+  }
+
+
   unsigned long
   TensionlessWinklerFoundation::update_contact_status(const LA::MPI::Vector &u)
   {
     if (model != Model::tensionless)
       return 0;
-    // Two passes: the threshold needs the largest |w_h| of the whole plate.
+    // Two passes: the threshold needs the largest |w_h - g| of the whole
+    // plate.
     std::vector<double> w;
     double              largest = 0;
     for (unsigned int c = 0; c < cell_index.size(); ++c)
       {
-        deflection_at_gauss_points(u, c, w);
+        compression_at_gauss_points(u, c, w);
         std::copy(w.begin(), w.end(), w_at_points.begin() + c * n_q_points);
         for (const double value : w)
           largest = std::max(largest, std::abs(value));
@@ -279,7 +480,7 @@ namespace liftoff
         for (unsigned int q = 0; q < n_q_points; ++q)
           {
             const unsigned int i = c * n_q_points + q;
-            weight[q]            = in_contact[i] * stiffness * jxw[i];
+            weight[q]            = in_contact[i] * matrix_stiffness * jxw[i];
             any                  = any || in_contact[i];
           }
         if (any)
@@ -312,7 +513,7 @@ namespace liftoff
           if (in_contact[*p] != in_matrix[*p])
             {
               weight[*p % n_q_points] =
-                (in_contact[*p] ? 1.0 : -1.0) * stiffness * jxw[*p];
+                (in_contact[*p] ? 1.0 : -1.0) * matrix_stiffness * jxw[*p];
               in_matrix[*p] = in_contact[*p];
               any           = true;
               ++n_updated;
@@ -330,33 +531,87 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::add_reaction(const LA::MPI::Vector &u,
-                                             LA::MPI::Vector &vector) const
+  TensionlessWinklerFoundation::add_contact_integral(
+    const double coefficient,
+    const std::function<void(const unsigned int, std::vector<double> &)> &f,
+    LA::MPI::Vector &vector) const
   {
     const unsigned int                   n_w = w_dofs.size();
     Vector<double>                       cell_vector(n_w);
     std::vector<types::global_dof_index> dofs(n_w);
-    std::vector<double>                  w;
-    if (model != Model::none)
-      for (unsigned int c = 0; c < cell_index.size(); ++c)
-        {
-          deflection_at_gauss_points(u, c, w);
-          cell_vector = 0;
-          for (unsigned int q = 0; q < n_q_points; ++q)
-            {
-              const unsigned int i = c * n_q_points + q;
-              for (unsigned int k = 0; k < n_w; ++k)
-                cell_vector(k) += in_contact[i] * stiffness * jxw[i] * w[q]
-                                  * shape_values(q, k);
-            }
-          std::copy(cell_w_dof_indices.begin() + c * n_w,
-                    cell_w_dof_indices.begin() + (c + 1) * n_w,
-                    dofs.begin());
-          discretization->constraints.distribute_local_to_global(cell_vector,
-                                                                 dofs,
-                                                                 vector);
-        }
+    std::vector<double>                  values;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        f(c, values);
+        cell_vector = 0;
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            for (unsigned int k = 0; k < n_w; ++k)
+              cell_vector(k) += in_contact[i] * coefficient * jxw[i] * values[q]
+                                * shape_values(q, k);
+          }
+        std::copy(cell_w_dof_indices.begin() + c * n_w,
+                  cell_w_dof_indices.begin() + (c + 1) * n_w,
+                  dofs.begin());
+        discretization->constraints.distribute_local_to_global(cell_vector,
+                                                               dofs,
+                                                               vector);
+      }
     vector.compress(VectorOperation::add);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_reaction(const LA::MPI::Vector &u,
+                                             LA::MPI::Vector &vector) const
+  {
+    if (model == Model::none)
+      {
+        vector.compress(VectorOperation::add);
+        return;
+      }
+    add_contact_integral(
+      stiffness,
+      [&](const unsigned int c, std::vector<double> &w) {
+        deflection_at_gauss_points(u, c, w);
+      },
+      vector);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_gap_load(LA::MPI::Vector &vector) const
+  {
+    Assert(has_gap(), ExcInternalError());
+    add_contact_integral(
+      effective_stiffness,
+      [&](const unsigned int c, std::vector<double> &e) {
+        e.assign(effective_gap.begin() + c * n_q_points,
+                 effective_gap.begin() + (c + 1) * n_q_points);
+      },
+      vector);
+  }
+
+
+  double
+  TensionlessWinklerFoundation::gap_work(const LA::MPI::Vector &u) const
+  {
+    if (!is_gapped)
+      return 0;
+    double              local = 0;
+    std::vector<double> w;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        deflection_at_gauss_points(u, c, w);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            local +=
+              in_contact[i] * stiffness * gap[i] * (gap[i] - w[q]) * jxw[i];
+          }
+      }
+    return Utilities::MPI::sum(local, discretization->mpi_communicator);
   }
 
 
@@ -368,7 +623,11 @@ namespace liftoff
     if (model != Model::none)
       for (unsigned int c = 0; c < cell_index.size(); ++c)
         {
+          // The springs' own compression w - g: the dashpots store nothing.
           deflection_at_gauss_points(u, c, w);
+          if (is_gapped)
+            for (unsigned int q = 0; q < n_q_points; ++q)
+              w[q] -= gap[c * n_q_points + q];
           for (unsigned int q = 0; q < n_q_points; ++q)
             {
               const double compression =

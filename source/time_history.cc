@@ -75,6 +75,13 @@ namespace liftoff
 
 
   void
+  TimeHistory::show_dissipated_energy(const bool show)
+  {
+    write_dissipated = show;
+  }
+
+
+  void
   TimeHistory::setup(const Discretization &disc, const std::string &directory)
   {
     discretization = &disc;
@@ -104,7 +111,8 @@ namespace liftoff
     out << ",contact_fraction,max_uplift,active_set_iterations,"
            "active_set_cycle";
     if (write_energies)
-      out << ",kinetic,strain,foundation,work,balance_error";
+      out << ",kinetic,strain,foundation,work"
+          << (write_dissipated ? ",dissipated_energy" : "") << ",balance_error";
     out << '\n';
   }
 
@@ -154,7 +162,10 @@ namespace liftoff
       {
         const EnergyBalance &e = row.energies;
         out << ',' << e.kinetic << ',' << e.strain << ',' << e.foundation << ','
-            << e.work << ',' << row.balance_error;
+            << e.work;
+        if (write_dissipated)
+          out << ',' << e.dissipated;
+        out << ',' << row.balance_error;
       }
     out << '\n';
   }

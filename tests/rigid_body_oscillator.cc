@@ -121,22 +121,9 @@ main(int argc, char **argv)
     checks.within("observed order in dt", order, 1.9, 2.1);
   // Scalar Newmark for w'' + omega^2 w = q from rest, a_0 = q.
   {
-    const double        beta = 0.3025, gamma = 0.6, dt = 0.02;
-    std::vector<double> w_newmark = {0.0};
-    double              w = 0, v = 0, a = q;
-    while (w_newmark.size() < 151)
-      {
-        const double w_new = (q
-                              + (w / (beta * dt * dt) + v / (beta * dt)
-                                 + (1 / (2 * beta) - 1) * a))
-                             / (omega * omega + 1 / (beta * dt * dt));
-        const double a_new = (w_new - w) / (beta * dt * dt) - v / (beta * dt)
-                             - (1 / (2 * beta) - 1) * a;
-        v += dt * ((1 - gamma) * a + gamma * a_new);
-        w = w_new;
-        a = a_new;
-        w_newmark.push_back(w);
-      }
+    const double              beta = 0.3025, gamma = 0.6, dt = 0.02;
+    const std::vector<double> w_newmark = liftoff_tests::scalar_newmark(
+      omega * omega, 0.0, q, beta, gamma, dt, 150);
     const auto simulator = liftoff_tests::run_scene(scene(2, dt, beta, gamma));
     double     error     = 0;
     for (unsigned int n = 0; n < simulator->history().size(); ++n)

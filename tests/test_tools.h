@@ -183,6 +183,38 @@ namespace liftoff_tests
     }
   };
 
+  /// Newmark's method written out for the scalar oscillator
+  /// w'' + c w' + k w = q from rest (a_0 = q): w_0, ..., w_{n_steps}. An
+  /// independent reference for the plate's rigid motions on its bed.
+  inline std::vector<double>
+  scalar_newmark(const double       k,
+                 const double       c,
+                 const double       q,
+                 const double       beta,
+                 const double       gamma,
+                 const double       dt,
+                 const unsigned int n_steps)
+  {
+    std::vector<double> history = {0.0};
+    double              w = 0, v = 0, a = q;
+    while (history.size() < n_steps + 1)
+      {
+        const double w_new =
+          (q + (w / (beta * dt * dt) + v / (beta * dt) + (0.5 / beta - 1) * a)
+           + c
+               * (gamma / (beta * dt) * w - (1 - gamma / beta) * v
+                  - dt * (1 - 0.5 * gamma / beta) * a))
+          / (1 / (beta * dt * dt) + c * gamma / (beta * dt) + k);
+        const double a_new = (w_new - w) / (beta * dt * dt) - v / (beta * dt)
+                             - (0.5 / beta - 1) * a;
+        v += dt * ((1 - gamma) * a + gamma * a_new);
+        w = w_new;
+        a = a_new;
+        history.push_back(w);
+      }
+    return history;
+  }
+
   /// Largest difference of two runs' probe histories over all steps and
   /// probes, relative to the largest |w| of the first.
   inline double

@@ -119,6 +119,14 @@ namespace liftoff
     LA::MPI::SparseMatrix matrix;
     /// Declared after `matrix`: a factorisation must die before its matrix.
     LinearSolver solver;
+    /// rhs + f_g(S) when the foundation has a gap.
+    LA::MPI::Vector rhs_with_gap;
+
+    /// The right-hand side of the system for the current set: `rhs`, plus
+    /// the springs' push on the gap f_g(S) if the foundation has one (the
+    /// reaction is affine then).
+    const LA::MPI::Vector &
+    with_gap_load(const LA::MPI::Vector &rhs);
 
     bool
     is_solution_of_system(const LA::MPI::Vector &x,

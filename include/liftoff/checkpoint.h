@@ -84,8 +84,9 @@ namespace liftoff
   public:
     /// The layout of the archives this code writes and reads: 3 since the
     /// outputs keep their own records (a PlateState, the foundation, the
-    /// active set, then each output).
-    static constexpr unsigned int format = 3;
+    /// active set, then each output); 4 since the state and every energy
+    /// record hold the energy the foundation's dashpots dissipated.
+    static constexpr unsigned int format = 4;
 
     static void
     declare_parameters(ParameterHandler &prm);

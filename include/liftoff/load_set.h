@@ -45,6 +45,16 @@ namespace liftoff
     bool
     is_empty() const;
 
+    /// Some load acts from before tau = 0 (Loads/Self weight != 0): a time
+    /// integration then starts from the static equilibrium under it.
+    bool
+    has_permanent_loads() const;
+
+    /// The load vector of the permanent loads alone (owned entries,
+    /// constraints applied).
+    void
+    assemble_permanent(LA::MPI::Vector &load_vector) const;
+
     /// Loads inside the plate, and symmetric where the model relies on it:
     /// on a half or quarter model every load must have a mirror image whose
     /// history agrees at the `n_steps + 1` times k * time_step and whose
@@ -97,7 +107,9 @@ namespace liftoff
       std::unique_ptr<FunctionParser<1>> history;   // h(tau)
       std::unique_ptr<FunctionParser<2>> intensity; // f(x, y, tau)
       bool                               intensity_depends_on_time = false;
-      LA::MPI::Vector                    spatial_part; // b_k
+      /// Acts from before tau = 0 with h = 1 (the self-weight).
+      bool            is_permanent = false;
+      LA::MPI::Vector spatial_part; // b_k
 
       double
       intensity_at(const Point<2> &p, const double tau) const;
@@ -109,6 +121,13 @@ namespace liftoff
 
     void
     add_body_force(const double tau, LA::MPI::Vector &load_vector) const;
+
+    /// load_vector = sum of h_k(tau) b_k over the loads that `selected`
+    /// accepts.
+    void
+    assemble_selected(const double                             tau,
+                      const std::function<bool(const Load &)> &selected,
+                      LA::MPI::Vector &load_vector) const;
 
     /// Rectangle of a pressure, in full plate coordinates.
     static BoundingBox<2>

@@ -93,6 +93,17 @@ namespace liftoff
                     LA::MPI::Vector             &h,
                     LA::MPI::Vector             &rhs) const;
 
+    /// gamma / (beta dt): v_{n+1} = velocity_factor() u_{n+1} - o_n, the
+    /// velocity of a step is affine in its displacement.
+    double
+    velocity_factor() const;
+    /// o_n = gamma/(beta dt) u_n - (1 - gamma/beta) v_n
+    ///       - dt (1 - gamma/(2 beta)) a_n.
+    void
+    velocity_offset(const LA::MPI::Vector &u,
+                    const LA::MPI::Vector &v,
+                    const LA::MPI::Vector &a,
+                    LA::MPI::Vector       &offset) const;
     /// u_n + dt v_n + dt^2/2 a_n, u_{n+1} if the acceleration stayed a_n:
     /// the initial guess for an iterative solve of the step.
     void

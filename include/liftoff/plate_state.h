@@ -26,6 +26,8 @@ namespace liftoff
     LA::MPI::Vector ghosted_u;
     LA::MPI::Vector load, balance;
     double          work = 0;
+    /// Energy the foundation's dashpots have taken out since tau = 0.
+    double dissipated = 0;
     /// At tau, and at tau = 0 (the reference of the balance error).
     EnergyBalance energies, initial_energies;
 
@@ -37,7 +39,7 @@ namespace liftoff
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &step &tau &work &energies &initial_energies;
+      archive &step &tau &work &dissipated &energies &initial_energies;
       for (LA::MPI::Vector *vector : {&u, &v, &a, &load, &balance})
         serialize_entries(archive, *vector);
       if constexpr (Archive::is_loading::value)

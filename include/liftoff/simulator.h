@@ -91,6 +91,11 @@ namespace liftoff
     history() const;
     const LA::MPI::Vector &
     solution() const;
+    /// The foundation pressure Gamma (w - g) + c v at the Gauss points of
+    /// the state (collective; see
+    /// TensionlessWinklerFoundation::pressure_range()).
+    TensionlessWinklerFoundation::PressureRange
+    contact_pressure_range() const;
     /// The signal (SIGINT, SIGTERM) that stopped the run, or 0.
     int
     stopping_signal() const;
@@ -143,6 +148,9 @@ namespace liftoff
     PlateState state;
     /// The next step's load, right-hand side and solution, and scratch.
     LA::MPI::Vector next_load, rhs, u_next, scratch, scratch_2;
+    /// With dashpots: their force c int_S v phi at the state, and a
+    /// ghosted vector to evaluate velocities at the Gauss points.
+    LA::MPI::Vector dashpot_force, ghosted_scratch;
     /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
     /// estimate from below), once it was needed; 0 before.
     double largest_eigenvalue = 0;
@@ -213,6 +221,25 @@ namespace liftoff
     run_static();
     void
     run_dynamic();
+    /// The static equilibrium K u + R_f(u) = load into state.u with the
+    /// active set, refused (naming `what`) if it does not exist or is not
+    /// accurate; `during` names it in the message of a stop request.
+    /// Leaves the active set's base matrix at K.
+    ActiveSetIteration::Result
+    solve_static(const LA::MPI::Vector &load,
+                 const std::string     &what,
+                 const std::string     &during);
+    /// state.u += the static equilibrium under the permanent loads, from
+    /// which a time integration starts.
+    void
+    settle_under_permanent_loads();
+    /// The foundation's dashpots at the state's velocity (for the contact
+    /// rule and the force balance at a given state).
+    void
+    set_dashpots_to_velocity();
+    /// dashpot_force = c int_S v phi of the state.
+    void
+    compute_dashpot_force();
 
     /// The steps of run_dynamic(), in their order.
     void
@@ -246,7 +273,8 @@ namespace liftoff
     /// The state's energies (zero unless the history writes them).
     EnergyBalance
     energies() const;
-    /// F - K u - K_f(S) u for the current state u and contact set S.
+    /// F - K u - K_f(S) u + f_g(S) for the current state u and contact set
+    /// S (f_g: the springs' push on a gap).
     void
     force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
     void

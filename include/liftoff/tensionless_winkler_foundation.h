@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -8,6 +9,9 @@
 #include <liftoff/discretization.h>
 #include <liftoff/linear_algebra.h>
 
+#include <functional>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace liftoff
@@ -23,6 +27,22 @@ namespace liftoff
    *
    * The `bilateral` model keeps every point active (linear springs), and
    * `none` removes the foundation.
+   *
+   * An initial gap g(x, y) between the unloaded plate and the bed (g < 0: a
+   * pre-compression) shifts the springs: they act where w > g, with the
+   * reaction -Gamma (w - g). The reaction is then affine in u,
+   * K_f(S) u - f_g(S): the matrix is that of g = 0, and f_g(S), the springs'
+   * push on the gap, joins the right-hand side (add_gap_load()). A scene
+   * without a gap (g = 0 at every Gauss point) takes none of these paths.
+   *
+   * Dashpots c per unit area beside the springs make the pressure
+   * Gamma (w - g) + c v, also only in contact and never tensile. Wherever
+   * the velocity is affine in w, v = kappa w - o (Newmark: kappa =
+   * gamma / (beta dt), o from the previous state; at a given state kappa =
+   * 0, o = -v), the pressure is (Gamma + c kappa) (w - e) with the
+   * effective gap e = (Gamma g + c o) / (Gamma + c kappa): the same rule,
+   * matrix and right-hand side as a gap, with another stiffness and gap
+   * (set_dashpot_velocity()).
    *
    * The class also keeps a system matrix's foundation term in step with the
    * status: add_to_matrix() adds the whole term once, and update_matrix()
@@ -77,13 +97,73 @@ namespace liftoff
     unsigned long
     update_matrix(LA::MPI::SparseMatrix &matrix);
 
-    /// vector += K_f(status) u, the springs' reaction to u.
+    /// vector += K_f(status) u, the linear part of the springs' reaction
+    /// to u (the whole reaction without a gap).
     void
     add_reaction(const LA::MPI::Vector &ghosted_solution,
                  LA::MPI::Vector       &vector) const;
 
-    /// Energy stored in the springs, 1/2 Gamma int max(w,0)^2 (or w^2 when
-    /// bilateral), on the meshed part.
+    /// Whether some Gauss point has g != 0 or there are dashpots: then the
+    /// reaction is K_f(S) u - f_g(S), and f_g(S) belongs to every
+    /// right-hand side.
+    bool
+    has_gap() const;
+
+    /// vector += f_g(status) = k int_S e phi_i, the part of the foundation's
+    /// force that does not depend on u (k = Gamma, e = g without dashpots).
+    /// Call only if has_gap().
+    void
+    add_gap_load(LA::MPI::Vector &vector) const;
+
+    /// g at a point of the meshed part (0 without a gap), for output.
+    double
+    gap_at(const Point<2> &p) const;
+
+    /// Whether there are dashpots (Damping > 0).
+    bool
+    has_damping() const;
+
+    /// From now on, the system matrices this class adds to hold the
+    /// stiffness Gamma + c kappa (kappa = 0: a static solve, or
+    /// gamma / (beta dt) in a time step). Before add_to_matrix().
+    void
+    set_matrix_velocity_factor(const double kappa);
+
+    /// The velocity at the points is v = kappa w - o (o from
+    /// `ghosted_offset`): sets the effective gap e and stiffness
+    /// Gamma + c kappa of the contact rule and of add_gap_load(). Only with
+    /// dashpots.
+    void
+    set_dashpot_velocity(const double           kappa,
+                         const LA::MPI::Vector &ghosted_offset);
+
+    /// vector += c int_S v phi_i, the dashpots' force at the velocity v.
+    void
+    add_dashpot_force(const LA::MPI::Vector &ghosted_velocity,
+                      LA::MPI::Vector       &vector) const;
+
+    /// The pressure Gamma (w - g) + c v at the Gauss points: its smallest
+    /// value at a point in contact, its largest at a point out of contact,
+    /// and its largest magnitude (collective; for tests).
+    struct PressureRange
+    {
+      double smallest_in_contact    = 0;
+      double largest_out_of_contact = 0;
+      double largest_magnitude      = 0;
+    };
+    PressureRange
+    pressure_range(const LA::MPI::Vector &ghosted_solution,
+                   const LA::MPI::Vector &ghosted_velocity) const;
+
+    /// Gamma int_S g (g - w): with a gap, Clapeyron's theorem for an
+    /// equilibrium K u + K_f(S) u - f_g(S) = F reads
+    /// E = 1/2 (F.u + gap_work(u)), the springs' energy being
+    /// 1/2 Gamma int_S (w - g)^2. 0 without a gap.
+    double
+    gap_work(const LA::MPI::Vector &ghosted_solution) const;
+
+    /// Energy stored in the springs, 1/2 Gamma int max(w - g, 0)^2 (or
+    /// (w - g)^2 when bilateral), on the meshed part.
     double
     energy(const LA::MPI::Vector &ghosted_solution) const;
 
@@ -123,6 +203,10 @@ namespace liftoff
     Model  model             = Model::tensionless;
     double stiffness         = 1.0;
     double contact_tolerance = 1e-9;
+    /// g(x, y) in full plate coordinates.
+    std::string gap_expression = "0";
+    /// c, dashpots per unit area.
+    double damping = 0;
 
   private:
     const Discretization *discretization = nullptr;
@@ -137,6 +221,19 @@ namespace liftoff
     std::vector<double>                  jxw;
     std::vector<Point<2>>                gauss_points;
     std::vector<unsigned char>           in_contact;
+    /// g at the points, if is_gapped: some point on some rank has g != 0.
+    std::vector<double> gap;
+    bool                is_gapped = false;
+    /// g(x, y), kept for evaluation off the Gauss points (if is_gapped).
+    std::unique_ptr<FunctionParser<2>> gap_function;
+    /// has_gap(): a gap or dashpots.
+    bool is_affine = false;
+    /// The effective gap e of the contact rule and of add_gap_load() and
+    /// its stiffness, and the stiffness the matrix holds: g and Gamma
+    /// without dashpots.
+    std::vector<double> effective_gap;
+    double              effective_stiffness = 1.0;
+    double              matrix_stiffness    = 1.0;
     /// w_h at the points, kept between the two passes of a status update.
     std::vector<double> w_at_points;
     /// The half-width of the round-off band at the last status update.
@@ -165,5 +262,26 @@ namespace liftoff
     deflection_at_gauss_points(const LA::MPI::Vector &ghosted_solution,
                                const unsigned int     c,
                                std::vector<double>   &w) const;
+
+    /// w_h - g at the Gauss points of owned cell c: how far the plate
+    /// presses into the bed.
+    void
+    compression_at_gauss_points(const LA::MPI::Vector &ghosted_solution,
+                                const unsigned int     c,
+                                std::vector<double>   &compression) const;
+
+    /// vector += coefficient int_S f phi_i, f at the Gauss points of owned
+    /// cell c given by f(c, values). Collective (compress).
+    void
+    add_contact_integral(
+      const double coefficient,
+      const std::function<void(const unsigned int, std::vector<double> &)> &f,
+      LA::MPI::Vector &vector) const;
+
+    /// Fill `gap` from gap_expression at the Gauss points (left empty if
+    /// g = 0 at all of them on all ranks), refusing a g that is not finite
+    /// or, on a half or quarter model, not symmetric. Collective.
+    void
+    evaluate_gap();
   };
 } // namespace liftoff

@@ -66,6 +66,11 @@ namespace liftoff
     bool
     wants_energies() const;
 
+    /// Write the dashpots' dissipated energy (a column `dissipated_energy`
+    /// after `work`, with the energies): only a scene with dashpots has it.
+    void
+    show_dissipated_energy(const bool show);
+
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;
@@ -93,7 +98,8 @@ namespace liftoff
 
   private:
     std::vector<Point<2>>        probe_points;
-    bool                         write_energies = true;
+    bool                         write_energies   = true;
+    bool                         write_dissipated = false;
     std::vector<PointFunctional> probes;
     /// This rank's degrees of freedom of w.
     IndexSet              w_dofs;
