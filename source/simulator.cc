@@ -487,7 +487,7 @@ namespace liftoff
 
 
   EnergyBalance
-  Simulator::energies() const
+  Simulator::energies()
   {
     if (!time_history.wants_energies())
       return EnergyBalance{0, 0, 0, state.work};
@@ -497,7 +497,8 @@ namespace liftoff
                        state.ghosted_u,
                        state.v,
                        discretization.n_symmetry_copies(),
-                       state.work);
+                       state.work,
+                       scratch);
   }
 
 

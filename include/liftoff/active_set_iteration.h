@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <liftoff/discretization.h>
+#include <liftoff/ghost_update.h>
 #include <liftoff/linear_algebra.h>
 #include <liftoff/linear_solver.h>
 #include <liftoff/tensionless_winkler_foundation.h>
@@ -119,6 +120,8 @@ namespace liftoff
     LA::MPI::SparseMatrix matrix;
     /// Declared after `matrix`: a factorisation must die before its matrix.
     LinearSolver solver;
+    /// The solution's copies to its ghosted form, with one import kept.
+    GhostUpdate ghosts;
 
     bool
     is_solution_of_system(const LA::MPI::Vector &x,

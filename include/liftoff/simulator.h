@@ -245,7 +245,7 @@ namespace liftoff
               const LA::MPI::SparseMatrix *base = nullptr);
     /// The state's energies (zero unless the history writes them).
     EnergyBalance
-    energies() const;
+    energies();
     /// F - K u - K_f(S) u for the current state u and contact set S.
     void
     force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
