@@ -39,9 +39,9 @@ namespace liftoff
                LA::MPI::Vector       &increment,
                LA::MPI::Vector       &load_sum)
   {
-    increment = u_new;
+    copy_values(u_new, increment);
     increment -= u_old;
-    load_sum = load_old;
+    copy_values(load_old, load_sum);
     load_sum += load_new;
     return 0.5 * copies * (increment * load_sum);
   }

@@ -15,10 +15,10 @@ namespace liftoff
   {
     const Epetra_BlockMap &source = owned.trilinos_vector().Map();
     const Epetra_BlockMap &target = ghosted.trilinos_vector().Map();
-    // Vectors of one layout: a plain copy, as operator= makes it.
+    // Vectors of one layout (one rank): a plain copy.
     if (target.SameAs(source))
       {
-        ghosted = owned;
+        copy_values(owned, ghosted);
         return;
       }
     AssertThrow(owned.size() == ghosted.size(),

@@ -719,7 +719,7 @@ namespace liftoff
                                discretization.n_symmetry_copies(),
                                scratch,
                                scratch_2);
-    state.load = next_load;
+    copy_values(next_load, state.load);
     newmark.advance(u_next, state.u, state.v, state.a);
     state.step = step;
     state.tau  = step * newmark.time_step;
