@@ -194,8 +194,7 @@ namespace liftoff
         solver.matrix_changed();
     }
     solver.solve(solution, with_gap_load(rhs));
-    discretization.constraints.distribute(solution);
-    ghosted_solution = solution;
+    ghosts.distribute(discretization.constraints, solution, ghosted_solution);
   }
 
 
@@ -237,7 +236,7 @@ namespace liftoff
     // heading.
     TimerOutput::Scope               t(timer, "contact update");
     const std::vector<unsigned char> previous_set = foundation.contact_status();
-    ghosted_solution                              = prediction;
+    ghosts.copy(prediction, ghosted_solution);
     foundation.update_contact_status(ghosted_solution);
     return previous_set;
   }

@@ -9,11 +9,21 @@ namespace liftoff
               const LA::MPI::Vector              &ghosted_u,
               const LA::MPI::Vector              &v,
               const double                        copies,
-              const double                        work)
+              const double                        work,
+              LA::MPI::Vector                    &product)
   {
+    // x^T A x as A.matrix_norm_square(x) computes it (A x, then the dot
+    // product with x), in `product` instead of a vector (and an Epetra map)
+    // allocated per call, which cost more than the products themselves on
+    // small problems.
+    const auto norm_square = [&](const LA::MPI::SparseMatrix &A,
+                                 const LA::MPI::Vector       &x) {
+      A.vmult(product, x);
+      return product * x;
+    };
     EnergyBalance e;
-    e.kinetic    = 0.5 * copies * matrices.mass.matrix_norm_square(v);
-    e.strain     = 0.5 * copies * matrices.stiffness.matrix_norm_square(u);
+    e.kinetic    = 0.5 * copies * norm_square(matrices.mass, v);
+    e.strain     = 0.5 * copies * norm_square(matrices.stiffness, u);
     e.foundation = copies * foundation.energy(ghosted_u);
     e.work       = work;
     return e;
@@ -29,9 +39,9 @@ namespace liftoff
                LA::MPI::Vector       &increment,
                LA::MPI::Vector       &load_sum)
   {
-    increment = u_new;
+    copy_values(u_new, increment);
     increment -= u_old;
-    load_sum = load_old;
+    copy_values(load_old, load_sum);
     load_sum += load_new;
     return 0.5 * copies * (increment * load_sum);
   }

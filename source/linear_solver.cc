@@ -237,9 +237,27 @@ namespace liftoff
 
   LinearSolver::LinearSolver(TimerOutput &timer)
       : timer(timer)
+  {}
+
+
+  void
+  LinearSolver::WallClock::start()
   {
-    substitution_timer.stop();
-    substitution_timer.reset();
+    started = std::chrono::steady_clock::now();
+  }
+
+
+  void
+  LinearSolver::WallClock::stop()
+  {
+    total += std::chrono::steady_clock::now() - started;
+  }
+
+
+  double
+  LinearSolver::WallClock::wall_time() const
+  {
+    return std::chrono::duration<double>(total).count();
   }
 
 

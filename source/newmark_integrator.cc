@@ -260,7 +260,7 @@ namespace liftoff
                              const LA::MPI::Vector &a,
                              LA::MPI::Vector       &u_predicted) const
   {
-    u_predicted = u;
+    copy_values(u, u_predicted);
     u_predicted.add(time_step, v, 0.5 * time_step * time_step, a);
   }
 
@@ -282,6 +282,6 @@ namespace liftoff
 
     v.add((1.0 - gamma) * time_step, a, gamma * time_step, a_new);
     a.swap(a_new);
-    u = u_new;
+    copy_values(u_new, u);
   }
 } // namespace liftoff

@@ -490,7 +490,7 @@ namespace liftoff
 
 
   EnergyBalance
-  Simulator::energies() const
+  Simulator::energies()
   {
     if (!time_history.wants_energies())
       return EnergyBalance{0, 0, 0, state.work, state.dissipated};
@@ -500,7 +500,8 @@ namespace liftoff
                                   state.ghosted_u,
                                   state.v,
                                   discretization.n_symmetry_copies(),
-                                  state.work);
+                                  state.work,
+                                  scratch);
     e.dissipated    = state.dissipated;
     return e;
   }
@@ -794,7 +795,7 @@ namespace liftoff
                                discretization.n_symmetry_copies(),
                                scratch,
                                scratch_2);
-    state.load = next_load;
+    copy_values(next_load, state.load);
     newmark.advance(u_next, state.u, state.v, state.a);
     state.step = step;
     state.tau  = step * newmark.time_step;

@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <liftoff/discretization.h>
+#include <liftoff/ghost_update.h>
 #include <liftoff/linear_algebra.h>
 #include <liftoff/linear_solver.h>
 #include <liftoff/tensionless_winkler_foundation.h>
@@ -127,6 +128,8 @@ namespace liftoff
     /// reaction is affine then).
     const LA::MPI::Vector &
     with_gap_load(const LA::MPI::Vector &rhs);
+    /// The solution's copies to its ghosted form, with one import kept.
+    GhostUpdate ghosts;
 
     bool
     is_solution_of_system(const LA::MPI::Vector &x,

@@ -45,7 +45,8 @@ namespace liftoff
 
   /// Kinetic, strain and foundation energy of the state (u, v) of the
   /// modelled part times `copies` (the full plate), with the work `work`.
-  /// `ghosted_u` is u with ghosts (collective).
+  /// `ghosted_u` is u with ghosts, `product` scratch of u's layout
+  /// (collective).
   EnergyBalance
   energies_of(const PlateMatrices                &matrices,
               const TensionlessWinklerFoundation &foundation,
@@ -53,7 +54,8 @@ namespace liftoff
               const LA::MPI::Vector              &ghosted_u,
               const LA::MPI::Vector              &v,
               const double                        copies,
-              const double                        work);
+              const double                        work,
+              LA::MPI::Vector                    &product);
 
   /// Work of the loads over one step from (u_old, F_old) to (u_new, F_new)
   /// by the trapezoidal rule, 1/2 (u_new - u_old).(F_old + F_new), times

@@ -4,6 +4,8 @@
 
 #include <deal.II/lac/generic_linear_algebra.h>
 
+#include <Epetra_FEVector.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,6 +15,21 @@ namespace liftoff
   // speaks of LA::MPI::Vector and LA::MPI::SparseMatrix, so a switch of
   // backend is a change here and in LinearSolver only.
   namespace LA = dealii::LinearAlgebraTrilinos;
+
+  /// `to = from` for two vectors of one layout (the same map on every rank),
+  /// without communication. deal.II 9.4's operator= builds an
+  /// Epetra_Import for each copy unless both vectors share one Epetra
+  /// communicator object, which vectors set up separately do not; that
+  /// cost more than the copy on small problems (doc/performance.md). The
+  /// values are the ones the import inserts.
+  inline void
+  copy_values(const LA::MPI::Vector &from, LA::MPI::Vector &to)
+  {
+    Assert(to.trilinos_vector().Map().PointSameAs(from.trilinos_vector().Map()),
+           dealii::ExcMessage("copy_values() needs vectors of one layout."));
+    static_cast<Epetra_MultiVector &>(to.trilinos_vector()) =
+      from.trilinos_vector();
+  }
 
   /// Whether every entry this rank owns is a finite number (not collective).
   inline bool

@@ -9,6 +9,7 @@
 #include <liftoff/discretization.h>
 #include <liftoff/linear_algebra.h>
 
+#include <chrono>
 #include <memory>
 
 namespace liftoff
@@ -95,10 +96,29 @@ namespace liftoff
 
     /// Factorisations or preconditioner set-ups so far.
     unsigned int n_preparations = 0;
+    /// A stopwatch of wall time only: deal.II's Timer also reads the CPU
+    /// time (getrusage) and reduces over its communicator at every stop,
+    /// which cost more than a substitution of a small factor.
+    class WallClock
+    {
+    public:
+      void
+      start();
+      void
+      stop();
+      /// Seconds between starts and stops so far.
+      double
+      wall_time() const;
+
+    private:
+      std::chrono::steady_clock::time_point started;
+      std::chrono::steady_clock::duration   total{0};
+    };
+
     /// Forward and back substitutions with a stored factor so far, and the
     /// wall time they took.
     mutable unsigned int n_substitutions = 0;
-    mutable Timer        substitution_timer;
+    mutable WallClock    substitution_timer;
     /// CG iterations so far.
     unsigned long n_cg_iterations = 0;
 

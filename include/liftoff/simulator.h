@@ -272,7 +272,7 @@ namespace liftoff
               const LA::MPI::SparseMatrix *base = nullptr);
     /// The state's energies (zero unless the history writes them).
     EnergyBalance
-    energies() const;
+    energies();
     /// F - K u - K_f(S) u + f_g(S) for the current state u and contact set
     /// S (f_g: the springs' push on a gap).
     void
