@@ -122,6 +122,7 @@ namespace liftoff
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     cell_w_dof_indices.clear();
     cell_w_dof_is_constrained.clear();
+    cell_has_hanging_node.clear();
     cell_index.clear();
     jxw.clear();
     gauss_points.clear();
@@ -130,19 +131,20 @@ namespace liftoff
         {
           fe_values.reinit(cell);
           cell->get_dof_indices(dofs);
+          bool is_hanging = false;
           for (const unsigned int i : w_dofs)
             {
               cell_w_dof_indices.push_back(dofs[i]);
-              // The foundation term skips constrained rows and columns,
-              // which is what condensation does for constraints of the form
-              // w_i = g_i; coupling constraints would need more.
+              // Constraints w_i = 0 (edges) drop a row and column of the
+              // cell term; a hanging node (w_i a combination of other
+              // nodes) sends them to those nodes (add_cell_term()).
               const auto *entries =
                 disc.constraints.get_constraint_entries(dofs[i]);
-              AssertThrow(entries == nullptr || entries->empty(),
-                          ExcNotImplemented());
+              is_hanging = is_hanging || (entries && !entries->empty());
               cell_w_dof_is_constrained.push_back(
                 disc.constraints.is_constrained(dofs[i]));
             }
+          cell_has_hanging_node.push_back(is_hanging);
           for (unsigned int q = 0; q < n_q_points; ++q)
             {
               jxw.push_back(fe_values.JxW(q));
@@ -451,6 +453,11 @@ namespace liftoff
             cell_matrix(i, j) +=
               weight[q] * shape_values(q, i) * shape_values(q, j);
 
+    if (cell_has_hanging_node[c])
+      {
+        add_condensed(c, cell_matrix, matrix);
+        return;
+      }
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
     for (unsigned int i = 0; i < n_w; ++i)
@@ -467,6 +474,37 @@ namespace liftoff
             }
         matrix.add(cell_w_dof_indices[c * n_w + i], columns, values, false);
       }
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_condensed(
+    const unsigned int        c,
+    const FullMatrix<double> &cell_matrix,
+    LA::MPI::SparseMatrix    &matrix) const
+  {
+    // Row and column i of the cell go to the nodes w_i depends on, with
+    // its weights: itself, the masters of a hanging node, or none (w_i =
+    // 0). All constraints here are homogeneous.
+    const unsigned int n_w         = w_dofs.size();
+    const auto        &constraints = discretization->constraints;
+    std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+      targets(n_w);
+    for (unsigned int i = 0; i < n_w; ++i)
+      {
+        const auto dof = cell_w_dof_indices[c * n_w + i];
+        if (!constraints.is_constrained(dof))
+          targets[i] = {{dof, 1.0}};
+        else if (const auto *entries = constraints.get_constraint_entries(dof))
+          targets[i].assign(entries->begin(), entries->end());
+      }
+    for (unsigned int i = 0; i < n_w; ++i)
+      for (const auto &[row, row_weight] : targets[i])
+        for (unsigned int j = 0; j < n_w; ++j)
+          for (const auto &[column, column_weight] : targets[j])
+            matrix.add(row,
+                       column,
+                       row_weight * column_weight * cell_matrix(i, j));
   }
 
 

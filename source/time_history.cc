@@ -84,12 +84,7 @@ namespace liftoff
   void
   TimeHistory::setup(const Discretization &disc, const std::string &directory)
   {
-    discretization = &disc;
-    probes.clear();
-    for (const auto &p : probe_points)
-      probes.emplace_back(disc, disc.to_modelled_part(p));
-    w_dofs = DoFTools::extract_dofs(
-      disc.dof_handler, disc.fe->component_mask(FEValuesExtractors::Scalar(0)));
+    mesh_changed(disc);
     history.clear();
 
     // No directory: keep the rows in memory only (tests). The file
@@ -102,6 +97,18 @@ namespace liftoff
 
 
   void
+  TimeHistory::mesh_changed(const Discretization &disc)
+  {
+    discretization = &disc;
+    probes.clear();
+    for (const auto &p : probe_points)
+      probes.emplace_back(disc, disc.to_modelled_part(p));
+    w_dofs = DoFTools::extract_dofs(
+      disc.dof_handler, disc.fe->component_mask(FEValuesExtractors::Scalar(0)));
+  }
+
+
+  void
   TimeHistory::write_header()
   {
     std::ostream &out = file.stream();
@@ -109,7 +116,7 @@ namespace liftoff
     for (const auto &p : probe_points)
       out << ",w(" << p[0] << ";" << p[1] << ")";
     out << ",contact_fraction,max_uplift,active_set_iterations,"
-           "active_set_cycle";
+           "active_set_cycle,cells,dofs";
     if (write_energies)
       out << ",kinetic,strain,foundation,work"
           << (write_dissipated ? ",dissipated_energy" : "") << ",balance_error";
@@ -133,8 +140,10 @@ namespace liftoff
     double uplift = 0;
     for (const auto i : w_dofs)
       uplift = std::max(uplift, -u(i));
-    row.max_uplift    = Utilities::MPI::max(uplift, comm);
-    row.energies      = step.state.energies;
+    row.max_uplift = Utilities::MPI::max(uplift, comm);
+    row.n_cells    = step.discretization.triangulation.n_global_active_cells();
+    row.n_dofs     = step.discretization.dof_handler.n_dofs();
+    row.energies   = step.state.energies;
     row.balance_error = row.energies.error(step.state.initial_energies);
     return row;
   }
@@ -157,7 +166,8 @@ namespace liftoff
     for (const double value : row.probe_w)
       out << ',' << value;
     out << ',' << row.contact_fraction << ',' << row.max_uplift << ','
-        << row.iterations << ',' << row.cycle_length;
+        << row.iterations << ',' << row.cycle_length << ',' << row.n_cells
+        << ',' << row.n_dofs;
     if (write_energies)
       {
         const EnergyBalance &e = row.energies;

@@ -245,6 +245,8 @@ namespace liftoff
     /// Whether dof i (by local w index within a cell c) is constrained;
     /// constrained rows and columns carry no foundation term.
     std::vector<unsigned char> cell_w_dof_is_constrained;
+    /// Whether an owned cell has a hanging w node (an adaptive mesh).
+    std::vector<unsigned char> cell_has_hanging_node;
 
     /// Record a status change of point i for update_matrix().
     void
@@ -256,6 +258,13 @@ namespace liftoff
     add_cell_term(const unsigned int         c,
                   const std::vector<double> &weight,
                   LA::MPI::SparseMatrix     &matrix) const;
+
+    /// add_cell_term() for a cell with hanging nodes: the cell matrix
+    /// condensed with the constraints.
+    void
+    add_condensed(const unsigned int        c,
+                  const FullMatrix<double> &cell_matrix,
+                  LA::MPI::SparseMatrix    &matrix) const;
 
     /// w_h at the Gauss points of owned cell c.
     void

@@ -19,10 +19,11 @@ namespace liftoff
    * The CSV time history a user plots, one row per step: tau, w at the
    * scene's probe points, contact area fraction, the largest uplift,
    * active-set iterations, the length of an active-set cycle resolved by the
-   * cycle rule (0: none) and, when asked for, the energies and their
-   * balance. The rows are kept (tests and the summary read them; a
-   * checkpoint saves them); the file is replaced whole (atomically) at most
-   * once a second and at the end, so a reader never sees a half-written row.
+   * cycle rule (0: none), the cells and dofs of the mesh and, when asked for,
+   * the energies and their balance. The rows are kept (tests and the summary
+   * read them; a checkpoint saves them); the file is replaced whole
+   * (atomically) at most once a second and at the end, so a reader never sees a
+   * half-written row.
    *
    * A new column is a member of Row, its value in row_of(), its header and
    * value in the two writers, and its place in Row::serialize().
@@ -38,7 +39,10 @@ namespace liftoff
       double       contact_fraction = 0;
       /// max(0, -w) over the nodes of w: how far the plate has lifted off
       /// its bed at the highest point (w > 0 is into the foundation).
-      double              max_uplift = 0;
+      double max_uplift = 0;
+      /// The mesh of the step (it changes with Mesh refinement).
+      unsigned long       n_cells = 0;
+      unsigned long       n_dofs  = 0;
       std::vector<double> probe_w;
       EnergyBalance       energies;
       /// EnergyBalance::error() against the state at tau = 0.
@@ -49,7 +53,7 @@ namespace liftoff
       serialize(Archive &archive, const unsigned int)
       {
         archive &tau &iterations &cycle_length &contact_fraction &max_uplift
-          &probe_w &energies &balance_error;
+          &n_cells &n_dofs &probe_w &energies &balance_error;
       }
     };
 
@@ -74,6 +78,8 @@ namespace liftoff
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;
+    void
+    mesh_changed(const Discretization &discretization) override;
     void
     execute(const StepData &step) override;
     void
