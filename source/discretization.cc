@@ -453,9 +453,13 @@ namespace liftoff
     constrain(x_symmetry_plane, {{false, true, false}});
     constrain(y_symmetry_plane, {{false, false, true}});
     constraints.close();
-    has_hanging = false;
+    // Collective: what depends on it (PlateMatrices::quadratic_form's
+    // set_zero) communicates, and a rank without hanging nodes of its own
+    // must take part when another has them.
+    bool here = false;
     for (const auto &line : constraints.get_lines())
-      has_hanging = has_hanging || !line.entries.empty();
+      here = here || !line.entries.empty();
+    has_hanging = Utilities::MPI::logical_or(here, mpi_communicator);
   }
 
 

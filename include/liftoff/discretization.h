@@ -128,8 +128,8 @@ namespace liftoff
     /// FE_Serendipity has not).
     bool
     supports_local_refinement() const;
-    /// Whether this rank's constraints tie hanging nodes to other nodes
-    /// (not only fix values to zero).
+    /// Whether the constraints of any rank tie hanging nodes to other
+    /// nodes (not only fix values to zero); the same on every rank.
     bool
     has_hanging_nodes() const;
 
