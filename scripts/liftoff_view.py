@@ -1,6 +1,7 @@
 """The standard view of a liftoff run, one picture per output time.
 
     scripts/liftoff-view OUTPUT_DIRECTORY [--pictures FOLDER] [--scale S]
+                         [--edges]
 
 (scripts/liftoff-view runs this file with ParaView's pvpython, under
 xvfb-run when there is no display.) Reads OUTPUT_DIRECTORY/solution.pvd and
@@ -53,6 +54,8 @@ def main():
                         "|w| over the run drawn as 0.15 L)")
     parser.add_argument("--size", default="1000,600",
                         help="picture size in pixels, width,height")
+    parser.add_argument("--edges", action="store_true",
+                        help="draw the cell edges (adaptive meshes)")
     args = parser.parse_args()
     pvd = os.path.join(args.directory, "solution.pvd")
     if not os.path.exists(pvd):
@@ -93,6 +96,9 @@ def main():
     display = pv.Show(warped, view)
     # deal.II writes cell data as point data of each cell's own points.
     pv.ColorBy(display, ("POINTS", "contact_status"))
+    if args.edges:
+        display.SetRepresentationType("Surface With Edges")
+        display.EdgeColor = [0.2, 0.2, 0.2]
     lut = pv.GetColorTransferFunction("contact_status")
     lut.ApplyPreset("Cool to Warm", True)
     lut.RescaleTransferFunction(0.0, 1.0)
