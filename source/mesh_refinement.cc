@@ -69,7 +69,9 @@ namespace liftoff
                       "points are partly in contact and the cells within "
                       "Front band of them; point loads, the cells holding a "
                       "point load. The last two are refined to Maximum level "
-                      "and never coarsened.");
+                      "and not coarsened while they hold the front or a load; "
+                      "without kelly, every other cell is coarsened (down to "
+                      "Minimum level), so the refinement follows the front.");
     prm.declare_entry("Refine fraction",
                       "0.3",
                       Patterns::Double(0.0, 1.0),
@@ -345,6 +347,13 @@ namespace liftoff
         coarsen_fraction,
         max_n_cells > 0 ? max_n_cells
                         : std::numeric_limits<unsigned int>::max());
+    else
+      // Without Kelly nothing else coarsens: the cells the front has left
+      // behind (and the loads, if they move) go back towards the uniform
+      // mesh, or the front's path stays refined and the mesh ends uniform.
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          cell->set_coarsen_flag();
     if (uses_front)
       {
         const auto in_band = front_cells(discretization, foundation);

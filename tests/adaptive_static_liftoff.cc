@@ -20,8 +20,8 @@
 // is what the front indicator does.
 //
 // Measured (Q2, tolerance 1e-4 on a): uniform levels 0, 1, 2 give 2.1e-4,
-// 1.4e-4, 2.7e-5 with 189, 615, 2187 dofs; the front-refined mesh 5.1e-5
-// with 1083 dofs (0.50 of the cheapest uniform mesh that meets 1e-4).
+// 1.4e-4, 2.7e-5 with 189, 615, 2187 dofs; the front-refined mesh 5.2e-5
+// with 855 dofs (0.39 of the cheapest uniform mesh that meets 1e-4).
 // Refining by the Kelly indicator (`./test_adaptive_static_liftoff kelly`)
 // also passes, with 1878 dofs: it refines the loaded end as well.
 //

@@ -26,7 +26,9 @@ namespace liftoff
    * fractions of the cells, as step-26 does); the contact front, cells
    * whose Gauss points are partly in contact and those within `Front band`
    * layers of them; and the cells holding a point load. The last two are
-   * always refined up to `Maximum level` and never coarsened. Levels count
+   * always refined up to `Maximum level` and not coarsened while they hold
+   * the front or a load; without Kelly every other cell is flagged for
+   * coarsening, so the band moves with the front. Levels count
    * from the uniform mesh of `Discretization`.
    *
    * The Kelly indicators are rounded to six digits of their maximum before
