@@ -60,10 +60,18 @@ namespace
                                             "resultant_y",
                                             "contact_area",
                                             "foundation energy"};
+    // The centre is a length (in L): compared absolutely; the others
+    // relative to their size.
     for (unsigned int k = 0; k < names.size(); ++k)
-      checks.less(label + ", 1 vs 2 ranks: " + names[k] + " (relative)",
-                  difference[k] / std::max(scale[k], 1e-300),
-                  1e-10);
+      {
+        const bool is_centre =
+          (names[k] == "resultant_x") || (names[k] == "resultant_y");
+        checks.less(label + ", 1 vs 2 ranks: " + names[k]
+                      + (is_centre ? " (absolute)" : " (relative)"),
+                    difference[k]
+                      / (is_centre ? 1.0 : std::max(scale[k], 1e-300)),
+                    1e-10);
+      }
     checks.less(label + ", 1 vs 2 ranks: probe histories (relative)",
                 liftoff_tests::history_difference(*serial, *parallel),
                 1e-10);
@@ -73,18 +81,13 @@ namespace
     checks.less(label + ", 1 vs 2 ranks: steps with other iterations or mesh",
                 mismatches,
                 0.5);
-    checks.within(
-      label
-        + ": the layer lifts off somewhere (min contact "
-          "fraction)",
-      [&]() {
-        double smallest = 1;
-        for (const auto &row : serial->history())
-          smallest = std::min(smallest, row.contact_fraction);
-        return smallest;
-      }(),
-      0.01,
-      0.99);
+    unsigned int n_partial = 0;
+    for (const auto &row : serial->history())
+      n_partial += (row.contact_fraction > 0.01 && row.contact_fraction < 0.99);
+    checks.within(label + ": steps with partial contact",
+                  n_partial,
+                  1,
+                  serial->history().size());
   }
 } // namespace
 
@@ -99,7 +102,14 @@ main(int argc, char **argv)
                             + set("Foundation/Damping", 0.5)
                             + set("Foundation/Initial gap", "0.001*(x*x + y*y)")
                             + set("Output/Write foundation resultant", "true");
-  compare_1_and_2_ranks("Pasternak", scene, checks);
+  // Off-centre, so that the resultant's centre leaves the axes.
+  compare_1_and_2_ranks("Pasternak",
+                        scene + set("Loads/Point load 8/Magnitude", 0.6)
+                          + set("Loads/Point load 8/Position", "0.3, 0.1"),
+                        checks);
+  // Symmetric on the adaptive mesh: with the off-centre force the
+  // adaptive run of branch `adaptive` hangs on two ranks at the fifth
+  // refinement (without any of the layer's entries; left to its owner).
   compare_1_and_2_ranks("Pasternak adaptive",
                         scene + set("Mesh refinement/Adaptive", "true")
                           + set("Mesh refinement/Interval", 5)
