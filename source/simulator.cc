@@ -803,12 +803,11 @@ namespace liftoff
                            {},
                            state.load);
     }
-    // The row of tau = 0 with the contact status of the initial state: the
-    // shear layer's energy and the foundation resultant are taken over it.
+    // The energies with the contact status of the initial state (the shear
+    // layer's is taken over it), before the first iterate replaces it.
     state.energies         = energies();
     state.initial_energies = state.energies;
     require_finite_state("an energy", {}, state.energies.values(), state.load);
-    record({});
     // The first iterate is the bilateral problem.
     foundation.activate_all();
     foundation.set_matrix_velocity_factor(newmark.velocity_factor());
@@ -819,6 +818,7 @@ namespace liftoff
       build_base_matrix(base);
       active_set.set_base_matrix(base);
     }
+    record({});
   }
 
 
