@@ -602,7 +602,7 @@ namespace liftoff
   void
   Simulator::run_static()
   {
-    LA::MPI::Vector &load = state.load;
+    LA::MPI::Vector &load               = state.load;
     const auto       solve_on_this_mesh = [&]() {
       assemble_loads(0, 0.0, load);
       return solve_static(load, "Static analysis", "the static analysis");
@@ -803,6 +803,11 @@ namespace liftoff
                            {},
                            state.load);
     }
+    // The energies with the contact status of the initial state (the shear
+    // layer's is taken over it), before the first iterate replaces it.
+    state.energies         = energies();
+    state.initial_energies = state.energies;
+    require_finite_state("an energy", {}, state.energies.values(), state.load);
     // The first iterate is the bilateral problem.
     foundation.activate_all();
     foundation.set_matrix_velocity_factor(newmark.velocity_factor());
@@ -813,9 +818,6 @@ namespace liftoff
       build_base_matrix(base);
       active_set.set_base_matrix(base);
     }
-    state.energies         = energies();
-    state.initial_energies = state.energies;
-    require_finite_state("an energy", {}, state.energies.values(), state.load);
     record({});
   }
 

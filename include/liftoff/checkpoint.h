@@ -89,7 +89,7 @@ namespace liftoff
     /// active set, then each output); 4 since the state and every energy
     /// record hold the energy the foundation's dashpots dissipated; 5 since
     /// history rows hold the mesh size and adaptive runs save their mesh.
-    static constexpr unsigned int format = 5;
+    static constexpr unsigned int format = 6;
 
     static void
     declare_parameters(ParameterHandler &prm);
