@@ -268,10 +268,10 @@ namespace liftoff
     /// the contact status, force balance and factor of the time loop.
     void
     adapt_mesh_if_due();
-    /// Kinetic + strain + foundation energy of the state, whether or not
-    /// the history writes energies (collective).
-    double
-    total_energy();
+    /// The state's energies, whether or not the history writes them
+    /// (collective).
+    EnergyBalance
+    state_energies();
 
     /// The steps of run_dynamic(), in their order.
     void
