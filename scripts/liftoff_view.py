@@ -1,6 +1,7 @@
 """The standard view of a liftoff run, one picture per output time.
 
     scripts/liftoff-view OUTPUT_DIRECTORY [--pictures FOLDER] [--scale S]
+                         [--field NAME]
 
 (scripts/liftoff-view runs this file with ParaView's pvpython, under
 xvfb-run when there is no display.) Reads OUTPUT_DIRECTORY/solution.pvd and
@@ -53,6 +54,10 @@ def main():
                         "|w| over the run drawn as 0.15 L)")
     parser.add_argument("--size", default="1000,600",
                         help="picture size in pixels, width,height")
+    parser.add_argument("--field", default="contact_status",
+                        help="the point or cell field that colours the "
+                        "plate (default contact_status; refinement_level "
+                        "shows an adaptive mesh)")
     args = parser.parse_args()
     pvd = os.path.join(args.directory, "solution.pvd")
     if not os.path.exists(pvd):
@@ -92,13 +97,24 @@ def main():
     warped.UpdatePipeline(times[-1])
     display = pv.Show(warped, view)
     # deal.II writes cell data as point data of each cell's own points.
-    pv.ColorBy(display, ("POINTS", "contact_status"))
-    lut = pv.GetColorTransferFunction("contact_status")
+    pv.ColorBy(display, ("POINTS", args.field))
+    lut = pv.GetColorTransferFunction(args.field)
     lut.ApplyPreset("Cool to Warm", True)
-    lut.RescaleTransferFunction(0.0, 1.0)
+    if args.field == "contact_status":
+        lut.RescaleTransferFunction(0.0, 1.0)
+        titles = "contact (fraction of Gauss points)"
+    else:
+        # The range over every output time, so that all pictures share it.
+        low, high = float("inf"), -float("inf")
+        for t in times:
+            plate.UpdatePipeline(t)
+            a, b = plate.PointData[args.field].GetRange()
+            low, high = min(low, a), max(high, b)
+        lut.RescaleTransferFunction(low, high if high > low else low + 1)
+        titles = args.field
     lut.AutomaticRescaleRangeMode = "Never"
     bar = pv.GetScalarBar(lut, view)
-    bar.Title = "contact (fraction of Gauss points)"
+    bar.Title = titles
     bar.ComponentTitle = ""
     bar.TitleColor = bar.LabelColor = [0, 0, 0]
     display.SetScalarBarVisibility(view, True)

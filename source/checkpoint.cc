@@ -158,8 +158,12 @@ namespace liftoff
     {
       unsigned int         step = 0;
       std::vector<FileSum> sums;
-      std::string          scene;
+      /// Files shared by all ranks (the mesh of an adaptive run), by name.
+      std::vector<std::pair<std::string, FileSum>> shared_files;
+      std::string                                  scene;
     };
+
+    const std::string shared_file_label = "file ";
 
     Header
     read_header(const std::string &header)
@@ -182,7 +186,19 @@ namespace liftoff
           is_header = is_header && entry && name == rank_name(r);
           result.sums.push_back(sum);
         }
-      is_header = is_header && std::getline(lines, line) && line == "scene:";
+      while (is_header && std::getline(lines, line)
+             && line.rfind(shared_file_label, 0) == 0)
+        {
+          FileSum            sum;
+          std::string        name, equals, bytes, label;
+          std::istringstream entry(line.substr(shared_file_label.size()));
+          entry >> name >> equals >> sum.first >> bytes >> label >> std::hex
+            >> sum.second;
+          is_header =
+            entry && equals == "=" && name.find('/') == std::string::npos;
+          result.shared_files.emplace_back(name, sum);
+        }
+      is_header = is_header && line == "scene:";
       AssertThrow(is_header,
                   ExcMessage(header + " is not a liftoff checkpoint header."));
       result.scene.assign(std::istreambuf_iterator<char>(lines), {});
@@ -361,7 +377,8 @@ namespace liftoff
                     const MPI_Comm                              comm,
                     const unsigned int                          step,
                     const std::string                          &scene,
-                    const std::function<void(OutputArchive &)> &save) const
+                    const std::function<void(OutputArchive &)> &save,
+                    const SharedFiles &save_shared) const
   {
     last_written               = std::chrono::steady_clock::now();
     const std::string target   = directory + "/checkpoint";
@@ -379,6 +396,13 @@ namespace liftoff
           std::filesystem::create_directories(fresh);
         }
     });
+
+    // Files the ranks write together (Triangulation::save): collective.
+    std::vector<std::string> shared_names;
+    if (save_shared)
+      collective_attempt(comm, what, [&]() {
+        shared_names = save_shared(fresh);
+      });
 
     // Each file's checksum is taken from what is on the disk.
     FileSum sum;
@@ -402,6 +426,9 @@ namespace liftoff
              << "ranks = " << sums.size() << '\n';
       for (unsigned int r = 0; r < sums.size(); ++r)
         header << rank_name(r) << " = " << describe(sums[r]) << '\n';
+      for (const auto &name : shared_names)
+        header << shared_file_label << name << " = "
+               << describe(sum_of_file(fresh + "/" + name)) << '\n';
       header << "scene:\n" << scene;
       write_file_atomically(fresh + "/" + header_name, [&](std::ostream &out) {
         out << header.str() << checksum_line(header.str());
@@ -435,6 +462,15 @@ namespace liftoff
                              + std::to_string(header.sums.size()) + "), not "
                              + std::to_string(n_ranks) + "."));
       require_same_scene(header.scene, scene, found);
+      for (const auto &[name, saved] : header.shared_files)
+        {
+          const FileSum now = sum_of_file(found + "/" + name);
+          AssertThrow(now == saved,
+                      ExcMessage("the checkpoint file " + found + "/" + name
+                                 + " is damaged: " + describe(now) + " where "
+                                 + header_name + " records " + describe(saved)
+                                 + "."));
+        }
     });
     found       = Utilities::MPI::broadcast(comm, found, 0);
     header.step = Utilities::MPI::broadcast(comm, header.step, 0);
@@ -453,6 +489,13 @@ namespace liftoff
                              + " records " + describe(saved) + "."));
     });
     return header.step;
+  }
+
+
+  const std::string &
+  Checkpoint::folder() const
+  {
+    return found;
   }
 
 

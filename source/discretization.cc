@@ -318,7 +318,21 @@ namespace liftoff
   Discretization::setup(const MindlinPlate &plate)
   {
     aspect_ratio = plate.aspect_ratio;
+    create_coarse_mesh();
+    triangulation.refine_global(n_refinements);
 
+    if (is_serendipity)
+      fe = std::make_unique<FESystem<2>>(FE_Serendipity(), n_components);
+    else
+      fe = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), n_components);
+    distribute_dofs();
+  }
+
+
+  void
+  Discretization::create_coarse_mesh()
+  {
+    triangulation.clear();
     const BoundingBox<2> box = modelled_box();
     GridGenerator::subdivided_hyper_rectangle(triangulation,
                                               {n_cells_x, n_cells_y},
@@ -326,7 +340,7 @@ namespace liftoff
                                               box.get_boundary_points().second,
                                               /*colorize*/ true);
     // Faces on x = 0 or y = 0 of a symmetric model are symmetry planes, not
-    // plate edges.
+    // plate edges. Refined faces inherit the ids of the coarse ones.
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
@@ -339,12 +353,42 @@ namespace liftoff
                 && face->boundary_id() == bottom_edge && std::abs(c[1]) < 1e-12)
               face->set_boundary_id(y_symmetry_plane);
           }
-    triangulation.refine_global(n_refinements);
+  }
 
-    if (is_serendipity)
-      fe = std::make_unique<FESystem<2>>(FE_Serendipity(), n_components);
-    else
-      fe = std::make_unique<FESystem<2>>(FE_Q<2>(fe_degree), n_components);
+
+  void
+  Discretization::load_mesh(const std::string &filename)
+  {
+    create_coarse_mesh();
+    triangulation.load(filename);
+    distribute_dofs();
+  }
+
+
+  unsigned int
+  Discretization::initial_level() const
+  {
+    return n_refinements;
+  }
+
+
+  bool
+  Discretization::supports_local_refinement() const
+  {
+    return !is_serendipity;
+  }
+
+
+  bool
+  Discretization::has_hanging_nodes() const
+  {
+    return has_hanging;
+  }
+
+
+  void
+  Discretization::distribute_dofs()
+  {
     dof_handler.distribute_dofs(*fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
@@ -409,6 +453,13 @@ namespace liftoff
     constrain(x_symmetry_plane, {{false, true, false}});
     constrain(y_symmetry_plane, {{false, false, true}});
     constraints.close();
+    // Collective: what depends on it (PlateMatrices::quadratic_form's
+    // set_zero) communicates, and a rank without hanging nodes of its own
+    // must take part when another has them.
+    bool here = false;
+    for (const auto &line : constraints.get_lines())
+      here = here || !line.entries.empty();
+    has_hanging = Utilities::MPI::logical_or(here, mpi_communicator);
   }
 
 

@@ -12,18 +12,10 @@ namespace liftoff
               const double                        work,
               LA::MPI::Vector                    &product)
   {
-    // x^T A x as A.matrix_norm_square(x) computes it (A x, then the dot
-    // product with x), in `product` instead of a vector (and an Epetra map)
-    // allocated per call, which cost more than the products themselves on
-    // small problems.
-    const auto norm_square = [&](const LA::MPI::SparseMatrix &A,
-                                 const LA::MPI::Vector       &x) {
-      A.vmult(product, x);
-      return product * x;
-    };
     EnergyBalance e;
-    e.kinetic    = 0.5 * copies * norm_square(matrices.mass, v);
-    e.strain     = 0.5 * copies * norm_square(matrices.stiffness, u);
+    e.kinetic = 0.5 * copies * matrices.quadratic_form(matrices.mass, v, product);
+    e.strain =
+      0.5 * copies * matrices.quadratic_form(matrices.stiffness, u, product);
     e.foundation = copies * foundation.energy(ghosted_u);
     e.work       = work;
     return e;

@@ -409,6 +409,13 @@ namespace liftoff
     Vector<float> subdomain(disc.triangulation.n_active_cells());
     subdomain = disc.triangulation.locally_owned_subdomain();
     plane.add_data_vector(subdomain, "subdomain");
+    // Levels above the uniform mesh of the scene (Mesh refinement).
+    Vector<float> level(disc.triangulation.n_active_cells());
+    for (const auto &cell : disc.triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        level[cell->active_cell_index()] =
+          static_cast<float>(cell->level()) - disc.initial_level();
+    plane.add_data_vector(level, "refinement_level");
     plane.build_patches(disc.mapping,
                         subdivisions > 0 ? subdivisions : disc.degree());
     PlateFields data_out(plane);
@@ -450,8 +457,15 @@ namespace liftoff
   void
   FieldOutput::setup(const Discretization &disc, const std::string &folder)
   {
+    directory = folder;
+    mesh_changed(disc);
+  }
+
+
+  void
+  FieldOutput::mesh_changed(const Discretization &disc)
+  {
     discretization = &disc;
-    directory      = folder;
     disc.reinit_ghosted_vector(ghosted_velocity);
   }
 

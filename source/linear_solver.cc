@@ -286,6 +286,15 @@ namespace liftoff
 
 
   void
+  LinearSolver::release()
+  {
+    direct.reset();
+    cholesky.reset();
+    amg.reset();
+  }
+
+
+  void
   LinearSolver::prepare(const LA::MPI::SparseMatrix &A,
                         const Discretization        &disc)
   {

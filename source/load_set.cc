@@ -274,6 +274,18 @@ namespace liftoff
   }
 
 
+  std::vector<Point<2>>
+  LoadSet::point_load_positions(const Discretization &disc) const
+  {
+    std::vector<Point<2>> positions;
+    for (const auto &load : loads)
+      if (load.kind == Kind::point
+          && disc.modelled_box().point_inside(load.position, 1e-12))
+        positions.push_back(load.position);
+    return positions;
+  }
+
+
   BoundingBox<2>
   LoadSet::region_of(const Load &load, const BoundingBox<2> &plate)
   {

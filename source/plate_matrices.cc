@@ -80,6 +80,7 @@ namespace liftoff
   void
   PlateMatrices::assemble(const Discretization &disc, const MindlinPlate &plate)
   {
+    discretization = &disc;
     disc.reinit_matrix(stiffness);
     disc.reinit_matrix(mass);
 
@@ -125,6 +126,26 @@ namespace liftoff
   }
 
 
+  double
+  PlateMatrices::quadratic_form(const LA::MPI::SparseMatrix &A,
+                                const LA::MPI::Vector       &x,
+                                LA::MPI::Vector             &product) const
+  {
+    // A x and its dot product with x, in `product` instead of the vector
+    // (and Epetra map) that matrix_norm_square allocates per call, which
+    // costs more than the product itself on small problems.
+    A.vmult(product, x);
+    // The condensed matrices have rows and columns of their own for the
+    // constrained entries (a diagonal that keeps them regular, no coupling
+    // to the free entries), which are not the plate's: the form is that of
+    // the free entries, so the constrained rows of A x drop out. Entries
+    // fixed to zero are zero in x already; only hanging nodes need it.
+    if (discretization->has_hanging_nodes())
+      discretization->constraints.set_zero(product);
+    return product * x;
+  }
+
+
   void
   PlateMatrices::solve_with_mass(LA::MPI::Vector       &x,
                                  const LA::MPI::Vector &b) const
@@ -151,8 +172,8 @@ namespace liftoff
     for (const auto i : discretization.locally_owned_dofs)
       x(i) = 1.0 + std::sin(1.0 + 0.37 * i);
     x.compress(VectorOperation::insert);
-    // The plate's mesh has no hanging nodes: its constraints fix values to
-    // zero, and vectors that vanish there see the unconstrained forms.
+    // Vectors that vanish on the constrained entries see the forms of the
+    // free ones (hanging nodes included).
     discretization.constraints.set_zero(x);
 
     // The Rayleigh quotient rises monotonically to omega_max^2; the

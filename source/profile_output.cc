@@ -87,19 +87,26 @@ namespace liftoff
   void
   ProfileOutput::setup(const Discretization &disc, const std::string &directory)
   {
-    discretization = &disc;
     is_written.assign(times.size(), false);
-    points.clear();
+    mesh_changed(disc);
     if (n_points == 0)
       return;
-    for (unsigned int i = 0; i < n_points; ++i)
-      points.emplace_back(disc, disc.to_modelled_part(point(i)));
 
     // The file appears with the first profile.
     file.open(directory.empty() ? "" : directory + "/profiles.csv",
               1.0,
               disc.mpi_communicator);
     file.stream() << "tau,s,x,y,w\n";
+  }
+
+
+  void
+  ProfileOutput::mesh_changed(const Discretization &disc)
+  {
+    discretization = &disc;
+    points.clear();
+    for (unsigned int i = 0; i < n_points; ++i)
+      points.emplace_back(disc, disc.to_modelled_part(point(i)));
   }
 
 

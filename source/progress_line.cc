@@ -55,6 +55,11 @@ namespace liftoff
 
 
   void
+  ProgressLine::mesh_changed(const Discretization &)
+  {}
+
+
+  void
   ProgressLine::execute(const StepData &step)
   {
     // The row of tau = 0 (or of the checkpoint) is where timing starts.

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -25,6 +26,9 @@ namespace liftoff
     const Selection<Analysis> analyses = {
       {"dynamic", Analysis::dynamic_analysis},
       {"static", Analysis::static_analysis}};
+
+    // The name of an adaptive run's mesh in its checkpoint folder.
+    const std::string mesh_file = "mesh";
 
     std::string
     format_time(const double tau)
@@ -92,6 +96,7 @@ namespace liftoff
     InitialConditions::declare_parameters(prm);
     MindlinPlate::declare_parameters(prm);
     Discretization::declare_parameters(prm);
+    MeshRefinement::declare_parameters(prm);
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
     NewmarkIntegrator::declare_parameters(prm);
@@ -117,6 +122,7 @@ namespace liftoff
 
     plate.parse_parameters(prm);
     discretization.parse_parameters(prm);
+    mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
@@ -142,6 +148,7 @@ namespace liftoff
 
     if (analysis == Analysis::dynamic_analysis)
       newmark.check_end_time();
+    mesh_refinement.check_against(discretization);
     time_history.check_against(discretization);
     profile_output.check_against(discretization);
 
@@ -229,6 +236,8 @@ namespace liftoff
     // mesh would allocate is estimated before anything is built.
     discretization.check_memory(active_set.linear_solver().factor_placement());
     discretization.setup(plate);
+    mesh_refinement.refine_around_points(
+      discretization, loads.point_load_positions(discretization));
     if (analysis == Analysis::static_analysis)
       loads.check_against(discretization, 0.0, 0);
     else
@@ -282,6 +291,13 @@ namespace liftoff
     initial_conditions.interpolate(discretization, state.u, state.v);
     state.ghosted_u = state.u;
 
+    check_time_step();
+  }
+
+
+  void
+  Simulator::check_time_step()
+  {
     if (!newmark.is_conditionally_stable())
       return;
     const double limit = stable_time_step();
@@ -294,8 +310,14 @@ namespace liftoff
         + " < Gamma/2 = " + format_time(0.5 * newmark.gamma)
         + " (omega_max^2 of M^-1 (K + K_f) estimated as "
         + format_time(largest_eigenvalue)
+        + (n_adaptations > 0
+             ? " on the mesh refined at step " + std::to_string(state.step)
+             : std::string())
         + "): the run would blow up. Use a smaller Time "
-          "step or Beta >= Gamma/2 (e.g. 0.25 and 0.5)."));
+          "step or Beta >= Gamma/2 (e.g. 0.25 and 0.5)"
+        + (mesh_refinement.is_enabled()
+             ? ", or a smaller Mesh refinement/Maximum level."
+             : ".")));
   }
 
 
@@ -494,16 +516,7 @@ namespace liftoff
   {
     if (!time_history.wants_energies())
       return EnergyBalance{0, 0, 0, state.work, state.dissipated};
-    EnergyBalance e = energies_of(matrices,
-                                  foundation,
-                                  state.u,
-                                  state.ghosted_u,
-                                  state.v,
-                                  discretization.n_symmetry_copies(),
-                                  state.work,
-                                  scratch);
-    e.dissipated    = state.dissipated;
-    return e;
+    return state_energies();
   }
 
 
@@ -580,10 +593,23 @@ namespace liftoff
   void
   Simulator::run_static()
   {
-    LA::MPI::Vector &load = state.load;
-    assemble_loads(0, 0.0, load);
-    const auto result =
-      solve_static(load, "Static analysis", "the static analysis");
+    LA::MPI::Vector &load               = state.load;
+    const auto       solve_on_this_mesh = [&]() {
+      assemble_loads(0, 0.0, load);
+      return solve_static(load, "Static analysis", "the static analysis");
+    };
+    auto result = solve_on_this_mesh();
+    for (unsigned int cycle = 1; cycle <= mesh_refinement.n_static_cycles();
+         ++cycle)
+      {
+        if (!adapt_mesh())
+          break;
+        result = solve_on_this_mesh();
+        pcout << "static cycle " << cycle << ": "
+              << discretization.triangulation.n_global_active_cells()
+              << " cells, " << discretization.dof_handler.n_dofs() << " dofs, "
+              << result.iterations << " active-set iterations" << std::endl;
+      }
     // Loads applied proportionally: the response is positively homogeneous
     // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
     // lift-off, and the balance column checks it against the state at
@@ -633,10 +659,111 @@ namespace liftoff
         const auto iteration = solve_contact_problem(step);
         advance(step);
         record(iteration);
+        adapt_mesh_if_due();
         const int signal = StopSignal::received(mpi_communicator);
         write_checkpoint_if_due(signal != 0);
         stop_if_signalled(signal);
       }
+  }
+
+
+  bool
+  Simulator::adapt_mesh()
+  {
+    {
+      TimerOutput::Scope t(timer, "mesh refinement");
+      if (!mesh_refinement.mark_cells(discretization,
+                                      foundation,
+                                      loads.point_load_positions(
+                                        discretization),
+                                      state.ghosted_u))
+        return false;
+      mesh_refinement.execute(discretization, {&state.u, &state.v, &state.a});
+    }
+    ++n_adaptations;
+    rebuild_on_new_mesh();
+    return true;
+  }
+
+
+  void
+  Simulator::rebuild_on_new_mesh()
+  {
+    {
+      TimerOutput::Scope t(timer, "assembly");
+      matrices.assemble(discretization, plate);
+    }
+    TimerOutput::Scope t(timer, "setup");
+    foundation.setup(discretization);
+    loads.setup(discretization);
+    for (auto *vector : {&state.load,
+                         &state.balance,
+                         &next_load,
+                         &rhs,
+                         &u_next,
+                         &scratch,
+                         &scratch_2,
+                         &dashpot_force})
+      discretization.reinit_vector(*vector);
+    discretization.reinit_ghosted_vector(state.ghosted_u);
+    discretization.reinit_ghosted_vector(ghosted_scratch);
+    state.ghosted_u = state.u;
+    for (Output *output : outputs)
+      output->mesh_changed(discretization);
+    largest_eigenvalue = 0;
+  }
+
+
+  EnergyBalance
+  Simulator::state_energies()
+  {
+    EnergyBalance e = energies_of(matrices,
+                                  foundation,
+                                  state.u,
+                                  state.ghosted_u,
+                                  state.v,
+                                  discretization.n_symmetry_copies(),
+                                  state.work,
+                                  scratch);
+    e.dissipated    = state.dissipated;
+    return e;
+  }
+
+
+  void
+  Simulator::adapt_mesh_if_due()
+  {
+    if (!mesh_refinement.is_due(state.step) || state.step == newmark.n_steps())
+      return;
+    const auto stored = [this]() {
+      const EnergyBalance e = state_energies();
+      return e.kinetic + e.strain + e.foundation;
+    };
+    const double before = stored();
+    if (!adapt_mesh())
+      return;
+    // The state on the new mesh: its contact status at the new Gauss
+    // points, the load and force balance there, the system matrix and its
+    // factor (once per mesh); with dashpots, as at the end of a step.
+    if (foundation.has_damping())
+      set_dashpots_to_velocity();
+    foundation.update_contact_status(state.ghosted_u);
+    assemble_loads(state.step, state.tau, state.load);
+    force_balance(state.load, state.balance);
+    if (foundation.has_damping())
+      compute_dashpot_force();
+    {
+      LA::MPI::SparseMatrix base;
+      build_base_matrix(base);
+      active_set.set_base_matrix(base);
+    }
+    check_time_step();
+    state.energies      = energies();
+    const double after  = stored();
+    const double jump   = before > 0 ? (after - before) / before : 0.0;
+    largest_energy_jump = std::abs(jump) > std::abs(largest_energy_jump)
+                            ? jump
+                            : largest_energy_jump;
   }
 
 
@@ -672,6 +799,11 @@ namespace liftoff
                            {},
                            state.load);
     }
+    // The energies with the contact status of the initial state (the shear
+    // layer's is taken over it), before the first iterate replaces it.
+    state.energies         = energies();
+    state.initial_energies = state.energies;
+    require_finite_state("an energy", {}, state.energies.values(), state.load);
     // The first iterate is the bilateral problem.
     foundation.activate_all();
     foundation.set_matrix_velocity_factor(newmark.velocity_factor());
@@ -682,9 +814,6 @@ namespace liftoff
       build_base_matrix(base);
       active_set.set_base_matrix(base);
     }
-    state.energies         = energies();
-    state.initial_energies = state.energies;
-    require_finite_state("an energy", {}, state.energies.values(), state.load);
     record({});
   }
 
@@ -693,6 +822,14 @@ namespace liftoff
   Simulator::resume_from_checkpoint()
   {
     TimerOutput::Scope t(timer, "checkpoint");
+    if (mesh_refinement.is_enabled())
+      {
+        // The run's mesh is the checkpoint's; everything on it is rebuilt
+        // before the state is read into it.
+        discretization.load_mesh(checkpoint.folder() + "/" + mesh_file);
+        state.reinit(discretization);
+        rebuild_on_new_mesh();
+      }
     foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     LA::MPI::SparseMatrix base;
     build_base_matrix(base);
@@ -836,13 +973,26 @@ namespace liftoff
                                   mpi_communicator)))
       return;
     TimerOutput::Scope t(timer, "checkpoint");
-    checkpoint.write(output_directory,
-                     mpi_communicator,
-                     state.step,
-                     scene,
-                     [&](OutputArchive &archive) {
-                       serialize(archive, Checkpoint::format);
-                     });
+    // An adaptive run's mesh cannot be rebuilt from the scene.
+    Checkpoint::SharedFiles save_mesh;
+    if (mesh_refinement.is_enabled())
+      save_mesh = [&](const std::string &folder) {
+        discretization.triangulation.save(folder + "/" + mesh_file);
+        // deal.II writes "mesh", "mesh.info" and, with cell data, more.
+        std::vector<std::string> names;
+        for (const auto &entry : std::filesystem::directory_iterator(folder))
+          if (entry.path().filename().string().rfind(mesh_file, 0) == 0)
+            names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+      };
+    checkpoint.write(
+      output_directory,
+      mpi_communicator,
+      state.step,
+      scene,
+      [&](OutputArchive &archive) { serialize(archive, Checkpoint::format); },
+      save_mesh);
   }
 
 
@@ -933,6 +1083,12 @@ namespace liftoff
     summary.add("degree", double(discretization.degree()));
     summary.add("element", discretization.element_name());
     summary.add("dofs", double(discretization.dof_handler.n_dofs()));
+    if (mesh_refinement.is_enabled())
+      {
+        summary.add("mesh adaptations", double(n_adaptations));
+        summary.add("largest relative energy change of a transfer",
+                    largest_energy_jump);
+      }
     summary.add("steps", double(rows.empty() ? 0 : rows.size() - 1));
     summary.add("active-set iterations per step, mean", iterations.mean);
     summary.add("active-set iterations per step, max", double(iterations.max));

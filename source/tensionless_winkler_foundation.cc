@@ -73,6 +73,17 @@ namespace liftoff
       "and the pressure Gamma (w - g) + c w_dot is never tensile: where "
       "spring and dashpot together would pull, the point is out of contact "
       "(doc/model.md). The dissipated energy becomes a history column.");
+    prm.declare_entry(
+      "Shear modulus",
+      "0",
+      Patterns::Double(0.0),
+      "G_p = G_f L^2 / D, the dimensionless shear modulus of a Pasternak "
+      "shear layer on the springs (0: none, a Winkler bed). The layer "
+      "stores 1/2 G_p |grad w|^2 per unit area over the contact region "
+      "(the whole plate when bilateral) and adds -G_p Lap w to the "
+      "foundation pressure there. Tensionless: the layer acts only where "
+      "the plate is in contact, the layer outside is not modelled "
+      "(doc/model.md); the contact rule w > g is unchanged.");
     prm.leave_subsection();
   }
 
@@ -86,6 +97,7 @@ namespace liftoff
     contact_tolerance = prm.get_double("Contact tolerance");
     gap_expression    = prm.get("Initial gap");
     damping           = prm.get_double("Damping");
+    shear_modulus     = prm.get_double("Shear modulus");
     prm.leave_subsection();
     // A broken expression is refused now, before any mesh is built.
     parse_expression<2>(
@@ -115,38 +127,47 @@ namespace liftoff
       for (unsigned int k = 0; k < w_dofs.size(); ++k)
         shape_values(q, k) = fe.shape_value(w_dofs[k], rule.point(q));
 
+    // Gradients only for a shear layer: they depend on the cell.
     FEValues<2>                          fe_values(disc.mapping,
                           fe,
                           rule,
-                          update_JxW_values | update_quadrature_points);
+                          update_JxW_values | update_quadrature_points
+                            | (has_layer() ? update_gradients
+                                                                    : update_default));
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     cell_w_dof_indices.clear();
     cell_w_dof_is_constrained.clear();
+    cell_has_hanging_node.clear();
     cell_index.clear();
     jxw.clear();
     gauss_points.clear();
+    shape_gradients.clear();
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           cell->get_dof_indices(dofs);
+          bool is_hanging = false;
           for (const unsigned int i : w_dofs)
             {
               cell_w_dof_indices.push_back(dofs[i]);
-              // The foundation term skips constrained rows and columns,
-              // which is what condensation does for constraints of the form
-              // w_i = g_i; coupling constraints would need more.
+              // Constraints w_i = 0 (edges) drop a row and column of the
+              // cell term; a hanging node (w_i a combination of other
+              // nodes) sends them to those nodes (add_cell_term()).
               const auto *entries =
                 disc.constraints.get_constraint_entries(dofs[i]);
-              AssertThrow(entries == nullptr || entries->empty(),
-                          ExcNotImplemented());
+              is_hanging = is_hanging || (entries && !entries->empty());
               cell_w_dof_is_constrained.push_back(
                 disc.constraints.is_constrained(dofs[i]));
             }
+          cell_has_hanging_node.push_back(is_hanging);
           for (unsigned int q = 0; q < n_q_points; ++q)
             {
               jxw.push_back(fe_values.JxW(q));
               gauss_points.push_back(fe_values.quadrature_point(q));
+              if (has_layer())
+                for (const unsigned int i : w_dofs)
+                  shape_gradients.push_back(fe_values.shape_grad(i, q));
             }
           cell_index.push_back(cell->active_cell_index());
         }
@@ -223,10 +244,24 @@ namespace liftoff
   }
 
 
+  bool
+  TensionlessWinklerFoundation::has_initial_gap() const
+  {
+    return is_gapped;
+  }
+
+
   double
   TensionlessWinklerFoundation::gap_at(const Point<2> &p) const
   {
     return is_gapped ? gap_function->value(p) : 0.0;
+  }
+
+
+  bool
+  TensionlessWinklerFoundation::has_layer() const
+  {
+    return model != Model::none && shear_modulus > 0;
   }
 
 
@@ -440,6 +475,7 @@ namespace liftoff
   TensionlessWinklerFoundation::add_cell_term(
     const unsigned int         c,
     const std::vector<double> &weight,
+    const std::vector<double> &layer_weight,
     LA::MPI::SparseMatrix     &matrix) const
   {
     const unsigned int n_w = w_dofs.size();
@@ -450,7 +486,23 @@ namespace liftoff
           for (unsigned int j = 0; j < n_w; ++j)
             cell_matrix(i, j) +=
               weight[q] * shape_values(q, i) * shape_values(q, j);
+    // The shear layer at the same points: the same status, one path.
+    if (has_layer())
+      for (unsigned int q = 0; q < n_q_points; ++q)
+        if (layer_weight[q] != 0.0)
+          {
+            const Tensor<1, 2> *grad =
+              &shape_gradients[(c * n_q_points + q) * n_w];
+            for (unsigned int i = 0; i < n_w; ++i)
+              for (unsigned int j = 0; j < n_w; ++j)
+                cell_matrix(i, j) += layer_weight[q] * (grad[i] * grad[j]);
+          }
 
+    if (cell_has_hanging_node[c])
+      {
+        add_condensed(c, cell_matrix, matrix);
+        return;
+      }
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
     for (unsigned int i = 0; i < n_w; ++i)
@@ -471,9 +523,40 @@ namespace liftoff
 
 
   void
+  TensionlessWinklerFoundation::add_condensed(
+    const unsigned int        c,
+    const FullMatrix<double> &cell_matrix,
+    LA::MPI::SparseMatrix    &matrix) const
+  {
+    // Row and column i of the cell go to the nodes w_i depends on, with
+    // its weights: itself, the masters of a hanging node, or none (w_i =
+    // 0). All constraints here are homogeneous.
+    const unsigned int n_w         = w_dofs.size();
+    const auto        &constraints = discretization->constraints;
+    std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+      targets(n_w);
+    for (unsigned int i = 0; i < n_w; ++i)
+      {
+        const auto dof = cell_w_dof_indices[c * n_w + i];
+        if (!constraints.is_constrained(dof))
+          targets[i] = {{dof, 1.0}};
+        else if (const auto *entries = constraints.get_constraint_entries(dof))
+          targets[i].assign(entries->begin(), entries->end());
+      }
+    for (unsigned int i = 0; i < n_w; ++i)
+      for (const auto &[row, row_weight] : targets[i])
+        for (unsigned int j = 0; j < n_w; ++j)
+          for (const auto &[column, column_weight] : targets[j])
+            matrix.add(row,
+                       column,
+                       row_weight * column_weight * cell_matrix(i, j));
+  }
+
+
+  void
   TensionlessWinklerFoundation::add_to_matrix(LA::MPI::SparseMatrix &matrix)
   {
-    std::vector<double> weight(n_q_points);
+    std::vector<double> weight(n_q_points), layer_weight(n_q_points);
     for (unsigned int c = 0; c < cell_index.size(); ++c)
       {
         bool any = false;
@@ -481,10 +564,11 @@ namespace liftoff
           {
             const unsigned int i = c * n_q_points + q;
             weight[q]            = in_contact[i] * matrix_stiffness * jxw[i];
+            layer_weight[q]      = in_contact[i] * shear_modulus * jxw[i];
             any                  = any || in_contact[i];
           }
         if (any)
-          add_cell_term(c, weight, matrix);
+          add_cell_term(c, weight, layer_weight, matrix);
       }
     matrix.compress(VectorOperation::add);
     in_matrix = in_contact;
@@ -503,23 +587,25 @@ namespace liftoff
                                        points_to_update.end()),
                            points_to_update.end());
     unsigned long       n_updated = 0;
-    std::vector<double> weight(n_q_points);
+    std::vector<double> weight(n_q_points), layer_weight(n_q_points);
     for (auto p = points_to_update.begin(); p != points_to_update.end();)
       {
         const unsigned int c = *p / n_q_points;
         std::fill(weight.begin(), weight.end(), 0.0);
+        std::fill(layer_weight.begin(), layer_weight.end(), 0.0);
         bool any = false;
         for (; p != points_to_update.end() && *p / n_q_points == c; ++p)
           if (in_contact[*p] != in_matrix[*p])
             {
-              weight[*p % n_q_points] =
-                (in_contact[*p] ? 1.0 : -1.0) * matrix_stiffness * jxw[*p];
-              in_matrix[*p] = in_contact[*p];
-              any           = true;
+              const double sign             = (in_contact[*p] ? 1.0 : -1.0);
+              weight[*p % n_q_points]       = sign * matrix_stiffness * jxw[*p];
+              layer_weight[*p % n_q_points] = sign * shear_modulus * jxw[*p];
+              in_matrix[*p]                 = in_contact[*p];
+              any                           = true;
               ++n_updated;
             }
         if (any)
-          add_cell_term(c, weight, matrix);
+          add_cell_term(c, weight, layer_weight, matrix);
       }
     points_to_update.clear();
     n_updated =
@@ -531,26 +617,17 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::add_contact_integral(
-    const double coefficient,
-    const std::function<void(const unsigned int, std::vector<double> &)> &f,
+  TensionlessWinklerFoundation::add_cell_vectors(
+    const std::function<void(const unsigned int, Vector<double> &)> &f,
     LA::MPI::Vector &vector) const
   {
     const unsigned int                   n_w = w_dofs.size();
     Vector<double>                       cell_vector(n_w);
     std::vector<types::global_dof_index> dofs(n_w);
-    std::vector<double>                  values;
     for (unsigned int c = 0; c < cell_index.size(); ++c)
       {
-        f(c, values);
         cell_vector = 0;
-        for (unsigned int q = 0; q < n_q_points; ++q)
-          {
-            const unsigned int i = c * n_q_points + q;
-            for (unsigned int k = 0; k < n_w; ++k)
-              cell_vector(k) += in_contact[i] * coefficient * jxw[i] * values[q]
-                                * shape_values(q, k);
-          }
+        f(c, cell_vector);
         std::copy(cell_w_dof_indices.begin() + c * n_w,
                   cell_w_dof_indices.begin() + (c + 1) * n_w,
                   dofs.begin());
@@ -559,6 +636,46 @@ namespace liftoff
                                                                vector);
       }
     vector.compress(VectorOperation::add);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_contact_integral(
+    const double coefficient,
+    const std::function<void(const unsigned int, std::vector<double> &)> &f,
+    LA::MPI::Vector &vector) const
+  {
+    const unsigned int  n_w = w_dofs.size();
+    std::vector<double> values;
+    add_cell_vectors(
+      [&](const unsigned int c, Vector<double> &cell_vector) {
+        f(c, values);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            for (unsigned int k = 0; k < n_w; ++k)
+              cell_vector(k) += in_contact[i] * coefficient * jxw[i] * values[q]
+                                * shape_values(q, k);
+          }
+      },
+      vector);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::deflection_gradient_at_gauss_points(
+    const LA::MPI::Vector     &u,
+    const unsigned int         c,
+    std::vector<Tensor<1, 2>> &gradient) const
+  {
+    const unsigned int n_w = w_dofs.size();
+    gradient.assign(n_q_points, Tensor<1, 2>());
+    for (unsigned int k = 0; k < n_w; ++k)
+      {
+        const double u_k = u(cell_w_dof_indices[c * n_w + k]);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          gradient[q] += u_k * shape_gradients[(c * n_q_points + q) * n_w + k];
+      }
   }
 
 
@@ -575,6 +692,25 @@ namespace liftoff
       stiffness,
       [&](const unsigned int c, std::vector<double> &w) {
         deflection_at_gauss_points(u, c, w);
+      },
+      vector);
+    if (!has_layer())
+      return;
+    // The layer: G_p int_S grad w . grad phi_i.
+    const unsigned int        n_w = w_dofs.size();
+    std::vector<Tensor<1, 2>> gradient;
+    add_cell_vectors(
+      [&](const unsigned int c, Vector<double> &cell_vector) {
+        deflection_gradient_at_gauss_points(u, c, gradient);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            if (in_contact[i])
+              for (unsigned int k = 0; k < n_w; ++k)
+                cell_vector(k) +=
+                  shear_modulus * jxw[i]
+                  * (gradient[q] * shape_gradients[i * n_w + k]);
+          }
       },
       vector);
   }
@@ -636,7 +772,73 @@ namespace liftoff
                        * jxw[c * n_q_points + q];
             }
         }
+    if (has_layer())
+      local += layer_energy(u);
     return Utilities::MPI::sum(local, discretization->mpi_communicator);
+  }
+
+
+  double
+  TensionlessWinklerFoundation::layer_energy(const LA::MPI::Vector &u) const
+  {
+    // 1/2 G_p int_S |grad w|^2, S the current status (all points when
+    // bilateral): the layer acts where the springs do.
+    double                    local = 0;
+    std::vector<Tensor<1, 2>> gradient;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        deflection_gradient_at_gauss_points(u, c, gradient);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const unsigned int i = c * n_q_points + q;
+            local += 0.5 * shear_modulus * in_contact[i] * gradient[q]
+                     * gradient[q] * jxw[i];
+          }
+      }
+    return local;
+  }
+
+
+  TensionlessWinklerFoundation::Resultant
+  TensionlessWinklerFoundation::resultant(const LA::MPI::Vector &u,
+                                          const LA::MPI::Vector &v) const
+  {
+    // Force, its moments about the axes x = 0 and y = 0, area in contact.
+    std::vector<double> sums(4, 0.0), w, v_at_points;
+    if (model != Model::none)
+      for (unsigned int c = 0; c < cell_index.size(); ++c)
+        {
+          deflection_at_gauss_points(u, c, w);
+          if (has_damping())
+            deflection_at_gauss_points(v, c, v_at_points);
+          for (unsigned int q = 0; q < n_q_points; ++q)
+            {
+              const unsigned int i = c * n_q_points + q;
+              if (!in_contact[i])
+                continue;
+              const double pressure =
+                stiffness * (w[q] - (is_gapped ? gap[i] : 0.0))
+                + (has_damping() ? damping * v_at_points[q] : 0.0);
+              const double force = pressure * jxw[i];
+              sums[0] += force;
+              sums[1] += force * gauss_points[i][0];
+              sums[2] += force * gauss_points[i][1];
+              sums[3] += jxw[i];
+            }
+        }
+    Utilities::MPI::sum(sums, discretization->mpi_communicator, sums);
+    // The mirror images of a symmetric part carry the same force; their
+    // moments about a symmetry plane cancel that part's.
+    const double copies = discretization->n_symmetry_copies();
+    Resultant    r;
+    r.force        = copies * sums[0];
+    r.contact_area = copies * sums[3];
+    if (sums[0] != 0.0)
+      for (unsigned int d = 0; d < 2; ++d)
+        r.centre[d] = sums[1 + d] / sums[0];
+    for (const unsigned int axis : discretization->symmetry_axes())
+      r.centre[axis] = 0;
+    return r;
   }
 
 

@@ -2,6 +2,8 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
+#include <liftoff/tensionless_winkler_foundation.h>
+
 #include <liftoff/time_history.h>
 
 #include <iomanip>
@@ -43,14 +45,26 @@ namespace liftoff
                       "Write kinetic, strain and foundation energy, the work "
                       "of the loads and the balance error to history.csv "
                       "(costs two matrix-vector products per step).");
+    prm.declare_entry(
+      "Write foundation resultant",
+      "false",
+      Patterns::Bool(),
+      "Write the bed's normal reaction on the full plate to history.csv: "
+      "`resultant`, the force of the springs and dashpots int_S (Gamma "
+      "(w - g) + c w_dot) over the contact region S (the shear layer adds "
+      "no force), its centre `resultant_x`, `resultant_y` (the point about "
+      "which it has no moment; 0, 0 without a force) and `contact_area`, "
+      "in full plate units also on a half or quarter model (costs a pass "
+      "over the Gauss points per step).");
   }
 
 
   void
   TimeHistory::parse_parameters(ParameterHandler &prm)
   {
-    probe_points   = parse_points(prm.get("Probe points"));
-    write_energies = prm.get_bool("Write energies");
+    probe_points    = parse_points(prm.get("Probe points"));
+    write_energies  = prm.get_bool("Write energies");
+    write_resultant = prm.get_bool("Write foundation resultant");
   }
 
 
@@ -84,12 +98,7 @@ namespace liftoff
   void
   TimeHistory::setup(const Discretization &disc, const std::string &directory)
   {
-    discretization = &disc;
-    probes.clear();
-    for (const auto &p : probe_points)
-      probes.emplace_back(disc, disc.to_modelled_part(p));
-    w_dofs = DoFTools::extract_dofs(
-      disc.dof_handler, disc.fe->component_mask(FEValuesExtractors::Scalar(0)));
+    mesh_changed(disc);
     history.clear();
 
     // No directory: keep the rows in memory only (tests). The file
@@ -102,6 +111,38 @@ namespace liftoff
 
 
   void
+  TimeHistory::mesh_changed(const Discretization &disc)
+  {
+    discretization = &disc;
+    probes.clear();
+    for (const auto &p : probe_points)
+      probes.emplace_back(disc, disc.to_modelled_part(p));
+    w_dofs = DoFTools::extract_dofs(
+      disc.dof_handler, disc.fe->component_mask(FEValuesExtractors::Scalar(0)));
+    gap_at_w_dofs.clear();
+    if (write_resultant)
+      disc.reinit_ghosted_vector(ghosted_velocity);
+  }
+
+
+  void
+  TimeHistory::find_gap_at_w_dofs(const StepData &step)
+  {
+    if (!step.foundation.has_initial_gap() || !gap_at_w_dofs.empty())
+      return;
+    const Discretization                       &disc = step.discretization;
+    std::map<types::global_dof_index, Point<2>> points;
+    DoFTools::map_dofs_to_support_points(disc.mapping,
+                                         disc.dof_handler,
+                                         points,
+                                         disc.fe->component_mask(
+                                           FEValuesExtractors::Scalar(0)));
+    for (const auto i : w_dofs)
+      gap_at_w_dofs.push_back(step.foundation.gap_at(points.at(i)));
+  }
+
+
+  void
   TimeHistory::write_header()
   {
     std::ostream &out = file.stream();
@@ -109,10 +150,12 @@ namespace liftoff
     for (const auto &p : probe_points)
       out << ",w(" << p[0] << ";" << p[1] << ")";
     out << ",contact_fraction,max_uplift,active_set_iterations,"
-           "active_set_cycle";
+           "active_set_cycle,cells,dofs";
     if (write_energies)
       out << ",kinetic,strain,foundation,work"
           << (write_dissipated ? ",dissipated_energy" : "") << ",balance_error";
+    if (write_resultant)
+      out << ",resultant,resultant_x,resultant_y,contact_area";
     out << '\n';
   }
 
@@ -130,12 +173,30 @@ namespace liftoff
     for (const auto &probe : probes)
       row.probe_w.push_back(probe.local_value(u));
     Utilities::MPI::sum(row.probe_w, comm, row.probe_w);
+    // (g - w)^+ as the uplift field; g = 0 takes the plain path.
     double uplift = 0;
-    for (const auto i : w_dofs)
-      uplift = std::max(uplift, -u(i));
-    row.max_uplift    = Utilities::MPI::max(uplift, comm);
-    row.energies      = step.state.energies;
+    if (gap_at_w_dofs.empty())
+      for (const auto i : w_dofs)
+        uplift = std::max(uplift, -u(i));
+    else
+      {
+        unsigned int k = 0;
+        for (const auto i : w_dofs)
+          uplift = std::max(uplift, gap_at_w_dofs[k++] - u(i));
+      }
+    row.max_uplift = Utilities::MPI::max(uplift, comm);
+    row.n_cells    = step.discretization.triangulation.n_global_active_cells();
+    row.n_dofs     = step.discretization.dof_handler.n_dofs();
+    row.energies   = step.state.energies;
     row.balance_error = row.energies.error(step.state.initial_energies);
+    if (write_resultant)
+      {
+        const auto r     = step.foundation.resultant(u, ghosted_velocity);
+        row.resultant    = r.force;
+        row.resultant_x  = r.centre[0];
+        row.resultant_y  = r.centre[1];
+        row.contact_area = r.contact_area;
+      }
     return row;
   }
 
@@ -143,6 +204,9 @@ namespace liftoff
   void
   TimeHistory::execute(const StepData &step)
   {
+    find_gap_at_w_dofs(step);
+    if (write_resultant && step.foundation.has_damping())
+      ghosted_velocity = step.state.v;
     history.push_back(row_of(step));
     write_row(history.back());
     file.write_if_due();
@@ -157,7 +221,8 @@ namespace liftoff
     for (const double value : row.probe_w)
       out << ',' << value;
     out << ',' << row.contact_fraction << ',' << row.max_uplift << ','
-        << row.iterations << ',' << row.cycle_length;
+        << row.iterations << ',' << row.cycle_length << ',' << row.n_cells
+        << ',' << row.n_dofs;
     if (write_energies)
       {
         const EnergyBalance &e = row.energies;
@@ -167,6 +232,9 @@ namespace liftoff
           out << ',' << e.dissipated;
         out << ',' << row.balance_error;
       }
+    if (write_resultant)
+      out << ',' << row.resultant << ',' << row.resultant_x << ','
+          << row.resultant_y << ',' << row.contact_area;
     out << '\n';
   }
 

@@ -4,7 +4,8 @@
 // run writes no files at all, so it is the plain time loop. The scenes make
 // the contact set move in every step (the factor kept from earlier steps
 // preconditions CG on the changed matrix) and, with generalized-alpha and a
-// refactorisation threshold of 1, refactorise often. A resume on another
+// refactorisation threshold of 1, refactorise often; one adapts its mesh
+// every 7 steps, so the mesh comes from the checkpoint. A resume on another
 // number of ranks or with a changed scene must be refused.
 // checkpoint_resume_np2.cc runs this same program on two ranks.
 
@@ -32,7 +33,8 @@ namespace
                      + (a.energies.kinetic != b.energies.kinetic)
                      + (a.energies.strain != b.energies.strain)
                      + (a.energies.foundation != b.energies.foundation)
-                     + (a.energies.work != b.energies.work);
+                     + (a.energies.work != b.energies.work)
+                     + (a.n_cells != b.n_cells) + (a.n_dofs != b.n_dofs);
     for (unsigned int k = 0; k < a.probe_w.size(); ++k)
       n += (a.probe_w[k] != b.probe_w[k]);
     return n;
@@ -100,6 +102,13 @@ main(int argc, char **argv)
   const std::vector<std::pair<std::string, std::string>> variants = {
     {"MUMPS", ""},
     {"Newmark", exact_solver},
+    // New meshes after steps 7 and 14: the checkpoint of step 20 holds a
+    // mesh the scene alone does not give, and the run goes on adapting.
+    {"adaptive mesh",
+     exact_solver + set("Mesh refinement/Adaptive", "true")
+       + set("Mesh refinement/Interval", 7)
+       + set("Mesh refinement/Maximum level", 2)
+       + set("Mesh refinement/Initial refinements", 1)},
     {"generalized-alpha, refactorising",
      exact_solver + set("Time integration/Scheme", "generalized-alpha")
        + set("Time integration/Spectral radius", 0.8)

@@ -9,6 +9,7 @@
 //  - static, tensionless: the response is positively homogeneous in the
 //    load, so the stored energy equals half the work F.u (Clapeyron).
 
+#include "energy_checks.h"
 #include "test_tools.h"
 
 #include <cmath>
@@ -29,20 +30,7 @@ namespace
            + set("Time integration/End time", 0.2);
   }
 
-  /// max |balance error| / max |work| over the history.
-  double
-  relative_balance_error(const liftoff::Simulator &simulator)
-  {
-    const auto &history = simulator.history();
-    double      error = 0, work = 0;
-    for (const auto &row : history)
-      {
-        error =
-          std::max(error, std::abs(row.energies.error(history[0].energies)));
-        work = std::max(work, std::abs(row.energies.work));
-      }
-    return error / work;
-  }
+  using liftoff_tests::relative_balance_error;
 } // namespace
 
 

@@ -1,4 +1,5 @@
-// The foundation term is kept in the system matrix by updates that add or
+// The foundation term (springs, then springs and a Pasternak shear layer)
+// is kept in the system matrix by updates that add or
 // remove only the Gauss points whose contact status flipped. A second
 // method, a fresh assembly of K_f for the final status, must give the same
 // matrix; and K_f u from the matrix must equal the springs' reaction that
@@ -59,82 +60,98 @@ namespace
 } // namespace
 
 
+namespace
+{
+  void
+  check_updates(const double shear_modulus, liftoff_tests::Checks &checks)
+  {
+    const std::string label = (shear_modulus > 0 ? "with a shear layer: " : "");
+    ParameterHandler  prm;
+    liftoff::MindlinPlate::declare_parameters(prm);
+    liftoff::Discretization::declare_parameters(prm);
+    liftoff::TensionlessWinklerFoundation::declare_parameters(prm);
+    std::istringstream scene("subsection Discretization\n"
+                             "  set Symmetry = full\n"
+                             "  set Cells along x = 12\n"
+                             "  set Cells along y = 10\n"
+                             "  set Polynomial degree = 2\n"
+                             "end\n"
+                             "subsection Boundary conditions\n"
+                             "  set Left = clamped\n"
+                             "  set Bottom = hard simply supported\n"
+                             "end\n"
+                             "subsection Foundation\n"
+                             "  set Stiffness = 37\n"
+                             "  set Shear modulus = "
+                             + std::to_string(shear_modulus)
+                             + "\n"
+                               "end\n");
+    prm.parse_input(scene, "test scene");
+
+    liftoff::MindlinPlate plate;
+    plate.parse_parameters(prm);
+    liftoff::Discretization discretization(MPI_COMM_WORLD);
+    discretization.parse_parameters(prm);
+    discretization.setup(plate);
+    liftoff::TensionlessWinklerFoundation foundation;
+    foundation.parse_parameters(prm);
+    foundation.setup(discretization);
+
+    liftoff::LA::MPI::SparseMatrix updated, fresh;
+    discretization.reinit_matrix(updated);
+    discretization.reinit_matrix(fresh);
+    foundation.add_to_matrix(updated); // all points in contact
+
+    liftoff::LA::MPI::Vector u, ghosted_u;
+    discretization.reinit_vector(u);
+    discretization.reinit_ghosted_vector(ghosted_u);
+
+    unsigned long n_flipped = 0;
+    for (unsigned int round = 0; round < 5; ++round)
+      {
+        VectorTools::interpolate(discretization.mapping,
+                                 discretization.dof_handler,
+                                 WavyDeflection(0.9 * round),
+                                 u);
+        discretization.constraints.distribute(u);
+        ghosted_u = u;
+        n_flipped += foundation.update_contact_status(ghosted_u);
+        // Update only every other round, so some points flip twice between
+        // two updates.
+        if (round % 2 == 1)
+          foundation.update_matrix(updated);
+      }
+    foundation.update_matrix(updated);
+    checks.within(label + "status changes seen", double(n_flipped), 100, 1e9);
+    checks.within(label + "contact fraction is partial",
+                  foundation.contact_area_fraction(),
+                  0.1,
+                  0.9);
+
+    foundation.add_to_matrix(fresh);
+    checks.less(
+      label + "updated vs freshly assembled K_f (relative Frobenius norm)",
+      matrix_difference(updated, fresh),
+      1e-14);
+
+    liftoff::LA::MPI::Vector from_matrix(u), reaction(u);
+    fresh.vmult(from_matrix, u);
+    reaction = 0;
+    foundation.add_reaction(ghosted_u, reaction);
+    from_matrix -= reaction;
+    checks.less(label + "K_f u vs point-wise reaction (relative)",
+                from_matrix.l2_norm() / reaction.l2_norm(),
+                1e-13);
+  }
+} // namespace
+
+
 int
 main(int argc, char **argv)
 {
   liftoff_tests::Checks checks(argc, argv, 2);
-
-  ParameterHandler prm;
-  liftoff::MindlinPlate::declare_parameters(prm);
-  liftoff::Discretization::declare_parameters(prm);
-  liftoff::TensionlessWinklerFoundation::declare_parameters(prm);
-  std::istringstream scene("subsection Discretization\n"
-                           "  set Symmetry = full\n"
-                           "  set Cells along x = 12\n"
-                           "  set Cells along y = 10\n"
-                           "  set Polynomial degree = 2\n"
-                           "end\n"
-                           "subsection Boundary conditions\n"
-                           "  set Left = clamped\n"
-                           "  set Bottom = hard simply supported\n"
-                           "end\n"
-                           "subsection Foundation\n"
-                           "  set Stiffness = 37\n"
-                           "end\n");
-  prm.parse_input(scene, "test scene");
-
-  liftoff::MindlinPlate plate;
-  plate.parse_parameters(prm);
-  liftoff::Discretization discretization(MPI_COMM_WORLD);
-  discretization.parse_parameters(prm);
-  discretization.setup(plate);
-  liftoff::TensionlessWinklerFoundation foundation;
-  foundation.parse_parameters(prm);
-  foundation.setup(discretization);
-
-  liftoff::LA::MPI::SparseMatrix updated, fresh;
-  discretization.reinit_matrix(updated);
-  discretization.reinit_matrix(fresh);
-  foundation.add_to_matrix(updated); // all points in contact
-
-  liftoff::LA::MPI::Vector u, ghosted_u;
-  discretization.reinit_vector(u);
-  discretization.reinit_ghosted_vector(ghosted_u);
-
-  unsigned long n_flipped = 0;
-  for (unsigned int round = 0; round < 5; ++round)
-    {
-      VectorTools::interpolate(discretization.mapping,
-                               discretization.dof_handler,
-                               WavyDeflection(0.9 * round),
-                               u);
-      discretization.constraints.distribute(u);
-      ghosted_u = u;
-      n_flipped += foundation.update_contact_status(ghosted_u);
-      // Update only every other round, so some points flip twice between
-      // two updates.
-      if (round % 2 == 1)
-        foundation.update_matrix(updated);
-    }
-  foundation.update_matrix(updated);
-  checks.within("status changes seen", double(n_flipped), 100, 1e9);
-  checks.within("contact fraction is partial",
-                foundation.contact_area_fraction(),
-                0.1,
-                0.9);
-
-  foundation.add_to_matrix(fresh);
-  checks.less("updated vs freshly assembled K_f (relative Frobenius norm)",
-              matrix_difference(updated, fresh),
-              1e-14);
-
-  liftoff::LA::MPI::Vector from_matrix(u), reaction(u);
-  fresh.vmult(from_matrix, u);
-  reaction = 0;
-  foundation.add_reaction(ghosted_u, reaction);
-  from_matrix -= reaction;
-  checks.less("K_f u vs point-wise reaction (relative)",
-              from_matrix.l2_norm() / reaction.l2_norm(),
-              1e-13);
+  // Without a layer, and with one: its gradient terms go the same way.
+  for (const double shear_modulus : {0.0, 3.0})
+    check_updates(shear_modulus, checks);
   return checks.exit_code();
 }

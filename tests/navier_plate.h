@@ -110,6 +110,25 @@ namespace navier
     return sum;
   }
 
+  // The single Navier mode q = q0 sin(pi X) sin(pi Y) on a square plate
+  // on a Pasternak bed (springs k, shear layer G_p, bilateral): with the
+  // bed the first equation above gains k w - G_p Lap w, and for one mode
+  // w = W sin sin, psi = Psi grad(sin sin) the two equations give
+  //   Psi = W / (1 + alpha^2 / S),
+  //   W (alpha^4 / (1 + alpha^2 / S) + k + G_p alpha^2) = q0,
+  // alpha^2 = 2 pi^2; S -> infinity gives the Kirchhoff plate's
+  // W = q0 / (alpha^4 + k + G_p alpha^2).
+  inline double
+  pasternak_mode_amplitude(const double S,
+                           const double k,
+                           const double shear_modulus,
+                           const double q0 = 1.0)
+  {
+    const double alpha2 = 2 * M_PI * M_PI;
+    return q0
+           / (alpha2 * alpha2 / (1 + alpha2 / S) + k + shear_modulus * alpha2);
+  }
+
   struct Result
   {
     double w_centre;

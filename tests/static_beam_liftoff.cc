@@ -50,18 +50,6 @@ namespace
   constexpr double Gamma = 1e4; // the contact zone ends near x = 0.22
 
 
-  /// Bisection for a sign change of f in [lo, hi] with f(lo) > 0 >= f(hi).
-  template <typename Function>
-  double
-  bisect(const Function &f, double lo, double hi)
-  {
-    for (unsigned int i = 0; i < 60 && hi - lo > 1e-14; ++i)
-      {
-        const double mid       = 0.5 * (lo + hi);
-        (f(mid) > 0 ? lo : hi) = mid;
-      }
-    return 0.5 * (lo + hi);
-  }
 } // namespace
 
 
@@ -77,21 +65,10 @@ main(int argc, char **argv)
   // The contact half-length: the first a at which w(a), with the other
   // four conditions imposed at a, turns from positive to negative.
   liftoff_tests::TimoshenkoBeamOnFoundation beam(S, Gamma);
-  const auto                                w_at_edge = [&](const double a) {
-    beam.solve(a, F);
-    return beam.w(a);
-  };
-  double a = -1;
-  for (double x = 0.005; x < half_length; x += 0.005)
-    if (w_at_edge(x) > 0 && w_at_edge(x + 0.005) <= 0)
-      {
-        a = bisect(w_at_edge, x, x + 0.005);
-        break;
-      }
+  const double a = liftoff_tests::contact_half_length(beam, F);
   checks.within("closed form: contact half-length a", a, 0.01, 0.49);
   if (a < 0)
     return checks.exit_code(); // no lift-off: nothing to compare with
-  beam.solve(a, F);
   liftoff_tests::verify_closed_form(beam, S, Gamma, a, F, checks);
   checks.less("closed form: |w(a)| / w(0)",
               std::abs(beam.w(a)) / beam.w(0),
@@ -131,19 +108,7 @@ main(int argc, char **argv)
             return simulator->deflection_at(Point<2>(x, 0.0));
           };
 
-          // First sign change of w_h along the axis, then bisection on w_h.
-          double             a_h    = half_length;
-          const unsigned int n_scan = 1000;
-          for (unsigned int i = 1; i <= n_scan; ++i)
-            {
-              const double x0 = half_length * (i - 1) / n_scan;
-              const double x1 = half_length * i / n_scan;
-              if (w_h(x1) <= 0)
-                {
-                  a_h = bisect(w_h, x0, x1);
-                  break;
-                }
-            }
+          const double a_h = liftoff_tests::first_zero(w_h);
 
           w0_errors.push_back(std::abs(w_h(0) - w0) / w0);
           a_errors.push_back(std::abs(a_h - a) / a);

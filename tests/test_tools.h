@@ -184,19 +184,23 @@ namespace liftoff_tests
   };
 
   /// Newmark's method written out for the scalar oscillator
-  /// w'' + c w' + k w = q from rest (a_0 = q): w_0, ..., w_{n_steps}. An
+  /// w'' + c w' + k w = q from rest (a_0 = q): w_0, ..., w_{n_steps} (and
+  /// v_0, ..., v_{n_steps} in `velocities` if given). An
   /// independent reference for the plate's rigid motions on its bed.
   inline std::vector<double>
-  scalar_newmark(const double       k,
-                 const double       c,
-                 const double       q,
-                 const double       beta,
-                 const double       gamma,
-                 const double       dt,
-                 const unsigned int n_steps)
+  scalar_newmark(const double         k,
+                 const double         c,
+                 const double         q,
+                 const double         beta,
+                 const double         gamma,
+                 const double         dt,
+                 const unsigned int   n_steps,
+                 std::vector<double> *velocities = nullptr)
   {
     std::vector<double> history = {0.0};
-    double              w = 0, v = 0, a = q;
+    if (velocities)
+      *velocities = {0.0};
+    double w = 0, v = 0, a = q;
     while (history.size() < n_steps + 1)
       {
         const double w_new =
@@ -211,6 +215,8 @@ namespace liftoff_tests
         w = w_new;
         a = a_new;
         history.push_back(w);
+        if (velocities)
+          velocities->push_back(v);
       }
     return history;
   }

@@ -352,5 +352,60 @@ namespace liftoff_tests
       std::vector<double> x, w;
       double              rms = 0;
     };
+
+
+    /// Bisection for a sign change of f in [lo, hi] with f(lo) > 0 >= f(hi).
+    template <typename Function>
+    double
+    bisect(const Function &f, double lo, double hi)
+    {
+      for (unsigned int i = 0; i < 60 && hi - lo > 1e-14; ++i)
+        {
+          const double mid       = 0.5 * (lo + hi);
+          (f(mid) > 0 ? lo : hi) = mid;
+        }
+      return 0.5 * (lo + hi);
+    }
+
+
+    /// The closed form's contact half-length on a tensionless bed: the
+    /// first a at which w(a), with the other four conditions imposed at a,
+    /// turns from positive to negative; -1 if the strip does not lift off.
+    /// Leaves `beam` solved for that a.
+    inline double
+    contact_half_length(TimoshenkoBeamOnFoundation &beam, const double force)
+    {
+      const auto w_at_edge = [&](const double a) {
+        beam.solve(a, force);
+        return beam.w(a);
+      };
+      double a = -1;
+      for (double x = 0.005; x < beam_strip::half_length; x += 0.005)
+        if (w_at_edge(x) > 0 && w_at_edge(x + 0.005) <= 0)
+          {
+            a = bisect(w_at_edge, x, x + 0.005);
+            break;
+          }
+      if (a > 0)
+        beam.solve(a, force);
+      return a;
+    }
+
+
+    /// The first zero of a deflection w_h along the axis of the half strip
+    /// (scanned at n points, then bisected); 1/2 if it has none.
+    template <typename Deflection>
+    double
+    first_zero(const Deflection &w_h, const unsigned int n_scan = 1000)
+    {
+      for (unsigned int i = 1; i <= n_scan; ++i)
+        {
+          const double x0 = beam_strip::half_length * (i - 1) / n_scan;
+          const double x1 = beam_strip::half_length * i / n_scan;
+          if (w_h(x1) <= 0)
+            return bisect(w_h, x0, x1);
+        }
+      return beam_strip::half_length;
+    }
   } // namespace
 } // namespace liftoff_tests

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace liftoff
 {
@@ -74,7 +75,8 @@ namespace liftoff
    *
    * The archives hold each rank's own degrees of freedom and matrix rows, so
    * a run resumes on the same number of ranks (the mesh, rebuilt from the
-   * scene, is then partitioned and numbered the same way); anything else is
+   * scene or, for an adaptive run, loaded from the checkpoint's shared
+   * files, is then partitioned and numbered the same way); anything else is
    * refused, as is a scene that differs from the checkpoint's in anything
    * but the end time and this subsection, a checkpoint of another format,
    * and any file whose size or checksum differs from the header's.
@@ -85,8 +87,9 @@ namespace liftoff
     /// The layout of the archives this code writes and reads: 3 since the
     /// outputs keep their own records (a PlateState, the foundation, the
     /// active set, then each output); 4 since the state and every energy
-    /// record hold the energy the foundation's dashpots dissipated.
-    static constexpr unsigned int format = 4;
+    /// record hold the energy the foundation's dashpots dissipated; 5 since
+    /// history rows hold the mesh size and adaptive runs save their mesh.
+    static constexpr unsigned int format = 6;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -105,15 +108,23 @@ namespace liftoff
     static std::string
     comparable_scene(const ParameterHandler &prm);
 
-    /// Write a checkpoint of step `step`; `save` fills this rank's archive.
-    /// Collective; throws on every rank if any rank fails, and then the
-    /// previous checkpoint is untouched.
+    /// Files all ranks write together into the checkpoint folder given
+    /// (the mesh of an adaptive run); returns their names, which the
+    /// header lists with their checksums.
+    using SharedFiles =
+      std::function<std::vector<std::string>(const std::string &folder)>;
+
+    /// Write a checkpoint of step `step`; `save` fills this rank's archive,
+    /// `save_shared` (if given) writes the shared files. Collective; throws
+    /// on every rank if any rank fails, and then the previous checkpoint is
+    /// untouched.
     void
     write(const std::string                          &directory,
           const MPI_Comm                              comm,
           const unsigned int                          step,
           const std::string                          &scene,
-          const std::function<void(OutputArchive &)> &save) const;
+          const std::function<void(OutputArchive &)> &save,
+          const SharedFiles                          &save_shared = {}) const;
 
     /// Find the newest complete checkpoint in `directory`, check its
     /// header against the scene and the number of ranks and every rank's
@@ -124,6 +135,11 @@ namespace liftoff
     open(const std::string &directory,
          const MPI_Comm     comm,
          const std::string &scene);
+
+    /// The folder of the checkpoint open() found (its shared files are
+    /// read from there).
+    const std::string &
+    folder() const;
 
     /// Read this rank's archive of the checkpoint found by open(), whose
     /// checksum open() has checked on every rank.

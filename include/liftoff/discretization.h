@@ -108,6 +108,31 @@ namespace liftoff
     void
     setup(const MindlinPlate &plate);
 
+    /// Dofs, constraints (hanging nodes included) and sparsity pattern of
+    /// the mesh as it is now: after setup(), and again after the mesh has
+    /// been refined or coarsened.
+    void
+    distribute_dofs();
+
+    /// Replace the mesh by one saved with triangulation.save() (a
+    /// checkpoint of an adaptive run) and distribute the dofs on it.
+    void
+    load_mesh(const std::string &filename);
+
+    /// The level of the cells of the uniform mesh the parameters describe
+    /// (`Global refinements`): adaptive levels count from it.
+    unsigned int
+    initial_level() const;
+    /// Whether the element has the transfer matrices between a cell and its
+    /// children that hanging nodes and SolutionTransfer need (FE_Q has,
+    /// FE_Serendipity has not).
+    bool
+    supports_local_refinement() const;
+    /// Whether the constraints of any rank tie hanging nodes to other
+    /// nodes (not only fix values to zero); the same on every rank.
+    bool
+    has_hanging_nodes() const;
+
     unsigned int
     degree() const;
     /// "Q<p>" (Lagrange) or "S2" (serendipity), for logs and summaries.
@@ -181,8 +206,13 @@ namespace liftoff
 
     /// FE_Serendipity (degree 2) instead of FE_Q(fe_degree).
     bool is_serendipity = false;
+    bool has_hanging    = false;
 
     void
     make_constraints();
+    /// The `Cells along x` x `Cells along y` cells with the boundary ids of
+    /// edges and symmetry planes, replacing any mesh there was.
+    void
+    create_coarse_mesh();
   };
 } // namespace liftoff

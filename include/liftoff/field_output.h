@@ -53,6 +53,8 @@ namespace liftoff
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;
+    void
+    mesh_changed(const Discretization &discretization) override;
     /// write() when the step is due and the run writes files.
     void
     execute(const StepData &step) override;

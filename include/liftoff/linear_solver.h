@@ -75,6 +75,11 @@ namespace liftoff
     void
     prepare(const LA::MPI::SparseMatrix &A, const Discretization &disc);
 
+    /// Drop the factor and preconditioner: MUMPS's refers to the matrix it
+    /// was built from, which a new mesh rebuilds.
+    void
+    release();
+
     /// The matrix given to prepare() has been changed in place.
     void
     matrix_changed();

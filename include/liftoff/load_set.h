@@ -55,6 +55,11 @@ namespace liftoff
     void
     assemble_permanent(LA::MPI::Vector &load_vector) const;
 
+    /// Where the point loads act on the meshed part (mesh refinement keeps
+    /// their cells fine).
+    std::vector<Point<2>>
+    point_load_positions(const Discretization &discretization) const;
+
     /// Loads inside the plate, and symmetric where the model relies on it:
     /// on a half or quarter model every load must have a mirror image whose
     /// history agrees at the `n_steps + 1` times k * time_step and whose

@@ -49,6 +49,12 @@ namespace liftoff
     setup(const Discretization &discretization,
           const std::string    &directory) = 0;
 
+    /// The mesh has been refined or coarsened (Mesh refinement): whatever
+    /// the output keeps per cell or point (probe cells, point searches,
+    /// vector layouts) must be found again on `discretization`.
+    virtual void
+    mesh_changed(const Discretization &discretization) = 0;
+
     /// After every step. Collective.
     virtual void
     execute(const StepData &step) = 0;

@@ -21,6 +21,14 @@ namespace liftoff
     void
     assemble(const Discretization &discretization, const MindlinPlate &plate);
 
+    /// x^T A x for A = stiffness or mass and x a state vector (constraints
+    /// distributed): twice the strain or kinetic energy, also on a mesh
+    /// with hanging nodes. `product` is scratch of x's layout.
+    double
+    quadratic_form(const LA::MPI::SparseMatrix &A,
+                   const LA::MPI::Vector       &x,
+                   LA::MPI::Vector             &product) const;
+
     /// Solve M x = b (conjugate gradients with Jacobi: the consistent mass
     /// matrix is well conditioned on any mesh, so no factorisation is
     /// needed for the initial acceleration).
@@ -39,5 +47,8 @@ namespace liftoff
 
     LA::MPI::SparseMatrix stiffness;
     LA::MPI::SparseMatrix mass;
+
+  private:
+    const Discretization *discretization = nullptr;
   };
 } // namespace liftoff

@@ -41,6 +41,8 @@ namespace liftoff
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;
+    void
+    mesh_changed(const Discretization &discretization) override;
 
     /// Write the profiles requested for times within dt/2 of tau; in a
     /// static analysis (time step 0) write one profile unconditionally.

@@ -28,6 +28,8 @@ namespace liftoff
     setup(const Discretization &discretization,
           const std::string    &directory) override;
     void
+    mesh_changed(const Discretization &discretization) override;
+    void
     execute(const StepData &step) override;
     /// Ends the line on a terminal, so that what follows starts on its own.
     void

@@ -11,6 +11,7 @@
 #include <liftoff/field_output.h>
 #include <liftoff/initial_conditions.h>
 #include <liftoff/load_set.h>
+#include <liftoff/mesh_refinement.h>
 #include <liftoff/mindlin_plate.h>
 #include <liftoff/newmark_integrator.h>
 #include <liftoff/output.h>
@@ -121,6 +122,7 @@ namespace liftoff
     TensionlessWinklerFoundation foundation;
     LoadSet                      loads;
     NewmarkIntegrator            newmark;
+    MeshRefinement               mesh_refinement;
     ActiveSetIteration           active_set;
     TimeHistory                  time_history;
     ProfileOutput                profile_output;
@@ -152,8 +154,14 @@ namespace liftoff
     /// ghosted vector to evaluate velocities at the Gauss points.
     LA::MPI::Vector dashpot_force, ghosted_scratch;
     /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
-    /// estimate from below), once it was needed; 0 before.
+    /// estimate from below), once it was needed; 0 before (and after the
+    /// mesh changed).
     double largest_eigenvalue = 0;
+    /// New meshes of an adaptive run, and the largest change of the total
+    /// energy (kinetic + strain + foundation) a transfer caused, relative
+    /// to the energy before it.
+    unsigned int n_adaptations       = 0;
+    double       largest_energy_jump = 0;
 
     /// The checks across parts that need no mesh (and a warning about
     /// profile times a run does not reach).
@@ -174,6 +182,10 @@ namespace liftoff
     /// unconditionally stable).
     double
     stable_time_step();
+    /// Refuse a time step beyond the stability limit of a conditionally
+    /// stable scheme on the current mesh.
+    void
+    check_time_step();
     /// The loads at tau; a non-finite entry stops the run naming the load.
     void
     assemble_loads(const unsigned int step,
@@ -219,6 +231,9 @@ namespace liftoff
     run_analysis();
     void
     run_static();
+    /// One static solve on the current mesh, with its checks.
+    ActiveSetIteration::Result
+    solve_static();
     void
     run_dynamic();
     /// The static equilibrium K u + R_f(u) = load into state.u with the
@@ -240,6 +255,23 @@ namespace liftoff
     /// dashpot_force = c int_S v phi of the state.
     void
     compute_dashpot_force();
+
+    /// Mark cells and, if the mesh changes, move u, v and a to the new mesh
+    /// and rebuild what depends on it; returns whether it changed.
+    bool
+    adapt_mesh();
+    /// Matrices, foundation points, loads, vector layouts and the outputs'
+    /// point searches on the current mesh; u, v and a are kept.
+    void
+    rebuild_on_new_mesh();
+    /// After a step of an adaptive run: a new mesh when one is due, with
+    /// the contact status, force balance and factor of the time loop.
+    void
+    adapt_mesh_if_due();
+    /// The state's energies, whether or not the history writes them
+    /// (collective).
+    EnergyBalance
+    state_energies();
 
     /// The steps of run_dynamic(), in their order.
     void

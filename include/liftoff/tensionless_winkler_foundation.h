@@ -44,6 +44,12 @@ namespace liftoff
    * matrix and right-hand side as a gap, with another stiffness and gap
    * (set_dashpot_velocity()).
    *
+   * A Pasternak shear layer G_p on the springs adds the energy
+   * 1/2 G_p int_S |grad w|^2 and the matrix G_p int_S grad phi_i . grad
+   * phi_j over the same points S as the springs (all points when bilateral):
+   * the status, the matrix updates and the contact rule stay one code path.
+   * Outside contact the layer is not modelled (doc/model.md).
+   *
    * The class also keeps a system matrix's foundation term in step with the
    * status: add_to_matrix() adds the whole term once, and update_matrix()
    * adds or removes only the points whose status changed since, so an
@@ -97,8 +103,8 @@ namespace liftoff
     unsigned long
     update_matrix(LA::MPI::SparseMatrix &matrix);
 
-    /// vector += K_f(status) u, the linear part of the springs' reaction
-    /// to u (the whole reaction without a gap).
+    /// vector += K_f(status) u, the linear part of the springs' (and the
+    /// shear layer's) reaction to u (the whole reaction without a gap).
     void
     add_reaction(const LA::MPI::Vector &ghosted_solution,
                  LA::MPI::Vector       &vector) const;
@@ -115,9 +121,17 @@ namespace liftoff
     void
     add_gap_load(LA::MPI::Vector &vector) const;
 
+    /// Whether some Gauss point has g != 0 (an initial gap, not dashpots).
+    bool
+    has_initial_gap() const;
+
     /// g at a point of the meshed part (0 without a gap), for output.
     double
     gap_at(const Point<2> &p) const;
+
+    /// Whether there is a shear layer (Shear modulus > 0).
+    bool
+    has_layer() const;
 
     /// Whether there are dashpots (Damping > 0).
     bool
@@ -163,9 +177,28 @@ namespace liftoff
     gap_work(const LA::MPI::Vector &ghosted_solution) const;
 
     /// Energy stored in the springs, 1/2 Gamma int max(w - g, 0)^2 (or
-    /// (w - g)^2 when bilateral), on the meshed part.
+    /// (w - g)^2 when bilateral), and in the shear layer,
+    /// 1/2 G_p int_S |grad w|^2, on the meshed part.
     double
     energy(const LA::MPI::Vector &ghosted_solution) const;
+
+    /// The bed's normal reaction on the full plate: the force of the
+    /// springs and dashpots int_S (Gamma (w - g) + c v) over the points in
+    /// contact, its centre (the point about which it has no moment), and
+    /// the area in contact; a symmetric part's values times its copies, the
+    /// centre on the symmetry planes. The shear layer adds no force (its
+    /// G_p int_S grad w . grad 1 vanishes) and is left out. Without a
+    /// force the centre is (0, 0). `ghosted_velocity` is read only with
+    /// dashpots (collective).
+    struct Resultant
+    {
+      double   force = 0;
+      Point<2> centre;
+      double   contact_area = 0;
+    };
+    Resultant
+    resultant(const LA::MPI::Vector &ghosted_solution,
+              const LA::MPI::Vector &ghosted_velocity) const;
 
     /// Area in contact over the area of the meshed part.
     double
@@ -207,6 +240,8 @@ namespace liftoff
     std::string gap_expression = "0";
     /// c, dashpots per unit area.
     double damping = 0;
+    /// G_p, the Pasternak shear layer's modulus (0: none).
+    double shear_modulus = 0;
 
   private:
     const Discretization *discretization = nullptr;
@@ -215,6 +250,9 @@ namespace liftoff
     std::vector<unsigned int> w_dofs;
     /// phi_i(x_q) for the w shape functions: the same on every cell.
     FullMatrix<double> shape_values;
+    /// grad phi_k(x_q) for the w shape functions per (owned cell, q, k):
+    /// only with a shear layer.
+    std::vector<Tensor<1, 2>> shape_gradients;
     /// Flat per (owned cell, q) or per (owned cell, w dof) data.
     std::vector<types::global_dof_index> cell_w_dof_indices;
     std::vector<unsigned int>            cell_index;
@@ -245,17 +283,28 @@ namespace liftoff
     /// Whether dof i (by local w index within a cell c) is constrained;
     /// constrained rows and columns carry no foundation term.
     std::vector<unsigned char> cell_w_dof_is_constrained;
+    /// Whether an owned cell has a hanging w node (an adaptive mesh).
+    std::vector<unsigned char> cell_has_hanging_node;
 
     /// Record a status change of point i for update_matrix().
     void
     set_status(const unsigned int i, const unsigned char status);
 
-    /// matrix += sum_q weight[q] phi(x_q) phi(x_q)^T on owned cell c,
-    /// without the constrained rows and columns.
+    /// matrix += sum_q weight[q] phi(x_q) phi(x_q)^T + layer_weight[q]
+    /// grad phi(x_q) grad phi(x_q)^T on owned cell c (the second term only
+    /// with a layer), without the constrained rows and columns.
     void
     add_cell_term(const unsigned int         c,
                   const std::vector<double> &weight,
+                  const std::vector<double> &layer_weight,
                   LA::MPI::SparseMatrix     &matrix) const;
+
+    /// add_cell_term() for a cell with hanging nodes: the cell matrix
+    /// condensed with the constraints.
+    void
+    add_condensed(const unsigned int        c,
+                  const FullMatrix<double> &cell_matrix,
+                  LA::MPI::SparseMatrix    &matrix) const;
 
     /// w_h at the Gauss points of owned cell c.
     void
@@ -263,12 +312,30 @@ namespace liftoff
                                const unsigned int     c,
                                std::vector<double>   &w) const;
 
+    /// grad w_h at the Gauss points of owned cell c (with a layer).
+    void
+    deflection_gradient_at_gauss_points(
+      const LA::MPI::Vector     &ghosted_solution,
+      const unsigned int         c,
+      std::vector<Tensor<1, 2>> &gradient) const;
+
+    /// 1/2 G_p int_S |grad w_h|^2 over this rank's cells.
+    double
+    layer_energy(const LA::MPI::Vector &ghosted_solution) const;
+
     /// w_h - g at the Gauss points of owned cell c: how far the plate
     /// presses into the bed.
     void
     compression_at_gauss_points(const LA::MPI::Vector &ghosted_solution,
                                 const unsigned int     c,
                                 std::vector<double>   &compression) const;
+
+    /// vector += the cell vectors f(c, cell_vector) (zeroed before) of
+    /// the owned cells, condensed. Collective (compress).
+    void
+    add_cell_vectors(
+      const std::function<void(const unsigned int, Vector<double> &)> &f,
+      LA::MPI::Vector &vector) const;
 
     /// vector += coefficient int_S f phi_i, f at the Gauss points of owned
     /// cell c given by f(c, values). Collective (compress).
