@@ -82,7 +82,7 @@ namespace liftoff
   ActiveSetIteration::ActiveSetIteration(
     const Discretization         &discretization,
     TensionlessWinklerFoundation &foundation,
-    TimerOutput                  &timer)
+    SectionTimer                 &timer)
       : discretization(discretization)
       , foundation(foundation)
       , timer(timer)
@@ -123,7 +123,7 @@ namespace liftoff
   ActiveSetIteration::set_base_matrix(const LA::MPI::SparseMatrix &B)
   {
     {
-      TimerOutput::Scope t(timer, "foundation update");
+      SectionTimer::Scope t(timer, "foundation update");
       solver.release();
       discretization.reinit_matrix(matrix);
       matrix.copy_from(B);
@@ -194,7 +194,7 @@ namespace liftoff
                                              LA::MPI::Vector &ghosted_solution)
   {
     {
-      TimerOutput::Scope t(timer, "foundation update");
+      SectionTimer::Scope t(timer, "foundation update");
       if (foundation.update_matrix(matrix) > 0)
         solver.matrix_changed();
     }
@@ -239,7 +239,7 @@ namespace liftoff
   {
     // The contact rule applied to the prediction: where the plate is
     // heading.
-    TimerOutput::Scope               t(timer, "contact update");
+    SectionTimer::Scope              t(timer, "contact update");
     const std::vector<unsigned char> previous_set = foundation.contact_status();
     ghosts.copy(prediction, ghosted_solution);
     foundation.update_contact_status(ghosted_solution);
@@ -295,7 +295,7 @@ namespace liftoff
             result.lost_contact = true;
             return result;
           }
-        TimerOutput::Scope  t(timer, "contact update");
+        SectionTimer::Scope t(timer, "contact update");
         const unsigned long n_changed =
           foundation.update_contact_status(ghosted_solution);
         if (has_settled(n_changed, previous_set))

@@ -395,14 +395,26 @@ namespace liftoff
 
     make_constraints();
 
-    sparsity_pattern.reinit(locally_relevant_dofs.size(),
-                            locally_relevant_dofs.size(),
-                            locally_relevant_dofs);
+    Table<2, DoFTools::Coupling> every_component(n_components, n_components);
+    every_component.fill(DoFTools::always);
+    make_sparsity_pattern(every_component, sparsity_pattern);
+  }
+
+
+  void
+  Discretization::make_sparsity_pattern(
+    const Table<2, DoFTools::Coupling> &coupling,
+    DynamicSparsityPattern             &pattern) const
+  {
+    pattern.reinit(locally_relevant_dofs.size(),
+                   locally_relevant_dofs.size(),
+                   locally_relevant_dofs);
     DoFTools::make_sparsity_pattern(dof_handler,
-                                    sparsity_pattern,
+                                    coupling,
+                                    pattern,
                                     constraints,
                                     /*keep_constrained_dofs*/ false);
-    SparsityTools::distribute_sparsity_pattern(sparsity_pattern,
+    SparsityTools::distribute_sparsity_pattern(pattern,
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
@@ -575,6 +587,20 @@ namespace liftoff
     matrix.reinit(locally_owned_dofs,
                   locally_owned_dofs,
                   sparsity_pattern,
+                  mpi_communicator);
+  }
+
+
+  void
+  Discretization::reinit_matrix(
+    LA::MPI::SparseMatrix              &matrix,
+    const Table<2, DoFTools::Coupling> &coupling) const
+  {
+    DynamicSparsityPattern pattern;
+    make_sparsity_pattern(coupling, pattern);
+    matrix.reinit(locally_owned_dofs,
+                  locally_owned_dofs,
+                  pattern,
                   mpi_communicator);
   }
 

@@ -235,30 +235,9 @@ namespace liftoff
   }
 
 
-  LinearSolver::LinearSolver(TimerOutput &timer)
+  LinearSolver::LinearSolver(SectionTimer &timer)
       : timer(timer)
   {}
-
-
-  void
-  LinearSolver::WallClock::start()
-  {
-    started = std::chrono::steady_clock::now();
-  }
-
-
-  void
-  LinearSolver::WallClock::stop()
-  {
-    total += std::chrono::steady_clock::now() - started;
-  }
-
-
-  double
-  LinearSolver::WallClock::wall_time() const
-  {
-    return std::chrono::duration<double>(total).count();
-  }
 
 
   LinearSolver::~LinearSolver() = default;
@@ -298,7 +277,7 @@ namespace liftoff
   LinearSolver::prepare(const LA::MPI::SparseMatrix &A,
                         const Discretization        &disc)
   {
-    TimerOutput::Scope t(timer, "factorisation");
+    SectionTimer::Scope t(timer, "factorisation");
     matrix         = &A;
     discretization = &disc;
     ++n_preparations;
@@ -408,7 +387,7 @@ namespace liftoff
     Assert(matrix != nullptr, ExcMessage("LinearSolver::prepare() first."));
     if (type == Type::cg)
       {
-        TimerOutput::Scope t(timer, "solve");
+        SectionTimer::Scope t(timer, "solve");
         return conjugate_gradients(x, b, max_iterations);
       }
 
@@ -426,7 +405,7 @@ namespace liftoff
       prepare(*matrix, *discretization);
     if (!factor_is_exact && refactorization_threshold > 0)
       {
-        TimerOutput::Scope t(timer, "solve");
+        SectionTimer::Scope t(timer, "solve");
         try
           {
             const unsigned int n =
@@ -445,7 +424,7 @@ namespace liftoff
       }
     if (!factor_is_exact)
       prepare(*matrix, *discretization);
-    TimerOutput::Scope t(timer, "solve");
+    SectionTimer::Scope t(timer, "solve");
     vmult(x, b);
     return 0;
   }

@@ -56,7 +56,6 @@ namespace liftoff
                        const bool     show_progress)
       : mpi_communicator(comm)
       , pcout(std::cout, verbose && Utilities::MPI::this_mpi_process(comm) == 0)
-      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , discretization(comm)
       , active_set(discretization, foundation, timer)
       , progress_line(comm, std::cout)
@@ -267,10 +266,10 @@ namespace liftoff
           << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
           << std::endl;
     {
-      TimerOutput::Scope t(timer, "assembly");
+      SectionTimer::Scope t(timer, "assembly");
       matrices.assemble(discretization, plate);
     }
-    TimerOutput::Scope t(timer, "setup");
+    SectionTimer::Scope t(timer, "setup");
     foundation.setup(discretization);
     loads.setup(discretization);
     state.reinit(discretization);
@@ -326,7 +325,7 @@ namespace liftoff
   {
     if (largest_eigenvalue == 0)
       {
-        TimerOutput::Scope t(timer, "stability limit");
+        SectionTimer::Scope t(timer, "stability limit");
         // Every spring in contact (the status setup() leaves): the stiffest
         // the foundation can make the plate.
         LA::MPI::Vector ghosted;
@@ -523,9 +522,9 @@ namespace liftoff
   void
   Simulator::record(const ActiveSetIteration::Result &iteration)
   {
-    TimerOutput::Scope t(timer, "output");
-    const bool         is_static = analysis == Analysis::static_analysis;
-    const StepData     step{state,
+    SectionTimer::Scope t(timer, "output");
+    const bool          is_static = analysis == Analysis::static_analysis;
+    const StepData      step{state,
                         discretization,
                         foundation,
                         iteration,
@@ -629,7 +628,7 @@ namespace liftoff
   void
   Simulator::settle_under_permanent_loads()
   {
-    TimerOutput::Scope t(timer, "permanent loads");
+    SectionTimer::Scope t(timer, "permanent loads");
     // The initial displacement is measured from the settled state.
     LA::MPI::Vector initial_displacement = state.u;
     state.u                              = 0;
@@ -671,7 +670,7 @@ namespace liftoff
   Simulator::adapt_mesh()
   {
     {
-      TimerOutput::Scope t(timer, "mesh refinement");
+      SectionTimer::Scope t(timer, "mesh refinement");
       if (!mesh_refinement.mark_cells(discretization,
                                       foundation,
                                       loads.point_load_positions(
@@ -690,10 +689,10 @@ namespace liftoff
   Simulator::rebuild_on_new_mesh()
   {
     {
-      TimerOutput::Scope t(timer, "assembly");
+      SectionTimer::Scope t(timer, "assembly");
       matrices.assemble(discretization, plate);
     }
-    TimerOutput::Scope t(timer, "setup");
+    SectionTimer::Scope t(timer, "setup");
     foundation.setup(discretization);
     loads.setup(discretization);
     for (auto *vector : {&state.load,
@@ -785,7 +784,7 @@ namespace liftoff
       settle_under_permanent_loads();
     assemble_loads(0, 0.0, state.load);
     {
-      TimerOutput::Scope t(timer, "initial acceleration");
+      SectionTimer::Scope t(timer, "initial acceleration");
       if (foundation.has_damping())
         set_dashpots_to_velocity();
       foundation.update_contact_status(state.ghosted_u);
@@ -821,7 +820,7 @@ namespace liftoff
   void
   Simulator::resume_from_checkpoint()
   {
-    TimerOutput::Scope t(timer, "checkpoint");
+    SectionTimer::Scope t(timer, "checkpoint");
     if (mesh_refinement.is_enabled())
       {
         // The run's mesh is the checkpoint's; everything on it is rebuilt
@@ -854,7 +853,7 @@ namespace liftoff
   Simulator::assemble_right_hand_side(const unsigned int step)
   {
     assemble_loads(step, step * newmark.time_step, next_load);
-    TimerOutput::Scope t(timer, "right hand side");
+    SectionTimer::Scope t(timer, "right hand side");
     newmark.right_hand_side(matrices.mass,
                             state.u,
                             state.v,
@@ -950,7 +949,7 @@ namespace liftoff
       }
     if (newmark.needs_force_balance())
       {
-        TimerOutput::Scope t(timer, "right hand side");
+        SectionTimer::Scope t(timer, "right hand side");
         if (foundation.has_damping())
           set_dashpots_to_velocity();
         force_balance(state.load, state.balance);
@@ -972,7 +971,7 @@ namespace liftoff
                                   state.step == newmark.n_steps(),
                                   mpi_communicator)))
       return;
-    TimerOutput::Scope t(timer, "checkpoint");
+    SectionTimer::Scope t(timer, "checkpoint");
     // An adaptive run's mesh cannot be rebuilt from the scene.
     Checkpoint::SharedFiles save_mesh;
     if (mesh_refinement.is_enabled())
@@ -1105,8 +1104,7 @@ namespace liftoff
     summary.add("peak memory per rank, max [MB]", peak_memory_mb);
     summary.add("wall time [s]", wall_clock.wall_time());
     RunSummary::Section sections;
-    for (const auto &[section, seconds] :
-         timer.get_summary_data(TimerOutput::OutputData::total_wall_time))
+    for (const auto &[section, seconds] : timer.wall_times())
       sections.emplace_back(section, seconds);
     summary.add("wall time by section [s]", sections);
 

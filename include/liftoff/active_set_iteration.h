@@ -1,7 +1,7 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/timer.h>
+#include <liftoff/section_timer.h>
 
 #include <liftoff/discretization.h>
 #include <liftoff/ghost_update.h>
@@ -59,7 +59,7 @@ namespace liftoff
 
     ActiveSetIteration(const Discretization         &discretization,
                        TensionlessWinklerFoundation &foundation,
-                       TimerOutput                  &timer);
+                       SectionTimer                 &timer);
 
     /// Use B from now on (a new mesh or time step): builds B + K_f(S) for
     /// the current set and factorises it. B may be destroyed afterwards.
@@ -115,7 +115,7 @@ namespace liftoff
   private:
     const Discretization         &discretization;
     TensionlessWinklerFoundation &foundation;
-    TimerOutput                  &timer;
+    SectionTimer                 &timer;
     /// B + K_f(S), kept in step with S.
     LA::MPI::SparseMatrix matrix;
     /// Declared after `matrix`: a factorisation must die before its matrix.

@@ -3,8 +3,10 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/table.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools_cache.h>
@@ -168,9 +170,17 @@ namespace liftoff
     double
     share_of_point_load(const Point<2> &p) const;
 
-    /// Sparse matrix and vectors laid out on this discretization.
+    /// Sparse matrix and vectors laid out on this discretization. A matrix
+    /// has the plate's pattern (every component couples with every other
+    /// in a cell), or with `coupling` (n_components x n_components) one in
+    /// which only the components it names couple: the mass matrix couples
+    /// each component with itself only, and a product with it in the
+    /// smaller pattern skips two thirds of the entries.
     void
     reinit_matrix(LA::MPI::SparseMatrix &matrix) const;
+    void
+    reinit_matrix(LA::MPI::SparseMatrix              &matrix,
+                  const Table<2, DoFTools::Coupling> &coupling) const;
     void
     reinit_vector(LA::MPI::Vector &vector) const;
     void
@@ -210,6 +220,12 @@ namespace liftoff
 
     void
     make_constraints();
+    /// The pattern of the couplings `coupling` allows, with the
+    /// constraints condensed, of the rows this rank owns and those it
+    /// writes to.
+    void
+    make_sparsity_pattern(const Table<2, DoFTools::Coupling> &coupling,
+                          DynamicSparsityPattern             &pattern) const;
     /// The `Cells along x` x `Cells along y` cells with the boundary ids of
     /// edges and symmetry planes, replacing any mesh there was.
     void

@@ -1,9 +1,9 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
+#include <liftoff/section_timer.h>
 
 #include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
@@ -68,7 +68,7 @@ namespace liftoff
 
     /// Section "factorisation" for factorisations and preconditioner
     /// set-ups, "solve" for the rest of a solve.
-    explicit LinearSolver(TimerOutput &timer);
+    explicit LinearSolver(SectionTimer &timer);
     ~LinearSolver();
 
     /// Factorise A, or build its preconditioner. A must outlive the solves.
@@ -101,29 +101,12 @@ namespace liftoff
 
     /// Factorisations or preconditioner set-ups so far.
     unsigned int n_preparations = 0;
-    /// A stopwatch of wall time only: deal.II's Timer also reads the CPU
-    /// time (getrusage) and reduces over its communicator at every stop,
-    /// which cost more than a substitution of a small factor.
-    class WallClock
-    {
-    public:
-      void
-      start();
-      void
-      stop();
-      /// Seconds between starts and stops so far.
-      double
-      wall_time() const;
-
-    private:
-      std::chrono::steady_clock::time_point started;
-      std::chrono::steady_clock::duration   total{0};
-    };
-
     /// Forward and back substitutions with a stored factor so far, and the
     /// wall time they took.
     mutable unsigned int n_substitutions = 0;
-    mutable WallClock    substitution_timer;
+    /// (A wall-time stopwatch: deal.II's Timer also reads the CPU time,
+    /// which costs more than a substitution of a small factor.)
+    mutable WallClock substitution_timer;
     /// CG iterations so far.
     unsigned long n_cg_iterations = 0;
 
@@ -159,7 +142,7 @@ namespace liftoff
     unsigned int max_iterations            = 10000;
     unsigned int refactorization_threshold = 8;
 
-    TimerOutput                 &timer;
+    SectionTimer                &timer;
     const Discretization        *discretization = nullptr;
     const LA::MPI::SparseMatrix *matrix         = nullptr;
     /// The factor belongs to the matrix as it is now.

@@ -5,6 +5,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <liftoff/section_timer.h>
+
 #include <liftoff/active_set_iteration.h>
 #include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
@@ -113,7 +115,7 @@ namespace liftoff
   private:
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
-    TimerOutput        timer;
+    SectionTimer       timer;
     Timer              wall_clock;
 
     MindlinPlate                 plate;
