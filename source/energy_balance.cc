@@ -13,7 +13,8 @@ namespace liftoff
               LA::MPI::Vector                    &product)
   {
     EnergyBalance e;
-    e.kinetic = 0.5 * copies * matrices.quadratic_form(matrices.mass, v, product);
+    e.kinetic =
+      0.5 * copies * matrices.quadratic_form(matrices.mass, v, product);
     e.strain =
       0.5 * copies * matrices.quadratic_form(matrices.stiffness, u, product);
     e.foundation = copies * foundation.energy(ghosted_u);
