@@ -270,7 +270,7 @@ namespace liftoff
   bool
   LoadSet::is_empty() const
   {
-    return loads.empty();
+    return loads.empty() && body_force == nullptr;
   }
 
 

@@ -110,7 +110,11 @@ namespace liftoff
                       Patterns::Integer(0, 12),
                       "Refine the cells holding a point load this many times "
                       "before the first step (or the first static solve), "
-                      "up to Maximum level.");
+                      "up to Maximum level. A dynamic run that does not "
+                      "start at rest also adapts the mesh this many times to "
+                      "its initial displacement, by the Indicators, before "
+                      "the first step: an error in the initial state is "
+                      "carried by the waves to the end of the run.");
     prm.leave_subsection();
   }
 
@@ -198,6 +202,13 @@ namespace liftoff
   MeshRefinement::n_static_cycles() const
   {
     return enabled ? static_cycles : 0;
+  }
+
+
+  unsigned int
+  MeshRefinement::n_initial_refinements() const
+  {
+    return enabled ? initial_refinements : 0;
   }
 
 

@@ -767,6 +767,24 @@ namespace liftoff
 
 
   void
+  Simulator::adapt_to_initial_state()
+  {
+    if (initial_conditions.is_at_rest(discretization))
+      return;
+    for (unsigned int r = 0; r < mesh_refinement.n_initial_refinements(); ++r)
+      {
+        foundation.update_contact_status(state.ghosted_u);
+        if (!adapt_mesh())
+          break;
+        // The fields themselves, not their interpolant on the old mesh.
+        initial_conditions.interpolate(discretization, state.u, state.v);
+        state.ghosted_u = state.u;
+        check_time_step();
+      }
+  }
+
+
+  void
   Simulator::build_base_matrix(LA::MPI::SparseMatrix &base) const
   {
     discretization.reinit_matrix(base);
@@ -780,6 +798,7 @@ namespace liftoff
   {
     // check_before_run() set the initial state. The initial acceleration
     // solves M a0 = F(0) - (K + K_f(u0)) u0 with the contact set of u0.
+    adapt_to_initial_state();
     if (loads.has_permanent_loads())
       settle_under_permanent_loads();
     assemble_loads(0, 0.0, state.load);

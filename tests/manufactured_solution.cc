@@ -1,8 +1,6 @@
 // Test 7: manufactured solution of the dynamic Mindlin plate on a bilateral
-// Winkler foundation, clamped on all edges.
-//
-// Exact fields u_c = T(t) A_c F_c(X) G_c(Y) (X = x + 1/2, Y = y + 1/2 in
-// [0, 1]), zero on the boundary as clamping requires, with
+// Winkler foundation, clamped on all edges (manufactured_fields.h: the
+// fields, the forcing from the strong form, the scene), with
 //   T(t) = cos(omega t) + 0.5 sin(omega t)  (T'(0) != 0: the initial
 //          velocity is exercised too).
 // Trigonometric fields, for the spatial error:
@@ -11,23 +9,8 @@
 // Bubble fields, for the time error: B = X(1-X) Y(1-Y) and
 //   w = T B, psi_x = T c1 B, psi_y = T c2 B,
 // which lie in the Q2 space (the spatial error is zero for p >= 2).
-// The forcing is the strong form of the equations of motion, obtained by
-// varying the energy
-//   1/2 int [psi_x,x^2 + psi_y,y^2 + 2 nu psi_x,x psi_y,y
-//            + (1-nu)/2 (psi_x,y + psi_y,x)^2]
-//   + S/2 int |grad w - psi|^2 + Gamma/2 int w^2
-// and adding the inertia (1 on w, I = Delta^2/12 on psi):
-//   f_w = w_tt - S div(grad w - psi) + Gamma w
-//   m_x = I psi_x,tt - [psi_x,xx + nu psi_y,yx
-//                       + (1-nu)/2 (psi_x,yy + psi_y,xy)] - S (w_x - psi_x)
-//   m_y = I psi_y,tt - [psi_y,yy + nu psi_x,xy
-//                       + (1-nu)/2 (psi_y,xx + psi_x,yx)] - S (w_y - psi_y)
-// All test functions vanish on the clamped boundary, so the weak form has no
-// boundary terms and the body force (integrated against all three
-// components by the library) is the whole right hand side. strong_form()
-// evaluates these expressions from analytic derivatives of the fields; it
-// is checked against a closed form derived by hand for the trigonometric
-// fields, and its derivatives against finite differences.
+// strong_form() is checked against a closed form derived by hand for the
+// trigonometric fields, and its derivatives against finite differences.
 //
 // (a) Space: trigonometric fields, small time step and slow T, so the L2
 //     error of w at the end time is the spatial error; expected order p + 1.
@@ -41,6 +24,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include "manufactured_fields.h"
 #include "test_tools.h"
 
 #include <array>
@@ -56,87 +40,9 @@ namespace
 {
   using namespace dealii;
 
-  // Material: Delta = 0.2 is thick enough that full integration does not
-  // lock; nu is not the default so that a dropped nu would show.
-  constexpr double thickness_ratio  = 0.2;
-  constexpr double poisson_ratio    = 0.25;
-  constexpr double shear_correction = 5.0 / 6.0;
-  constexpr double gamma_foundation = 10.0;
-  constexpr double c1               = 0.6;   // amplitudes of the rotations,
-  constexpr double c2               = -0.35; // unequal so x/y mix-ups show
-
-  const double S = 6.0 * shear_correction * (1.0 - poisson_ratio)
-                   / (thickness_ratio * thickness_ratio);
-  const double I = thickness_ratio * thickness_ratio / 12.0;
-
-  /// T(t) = cos(omega t) + 0.5 sin(omega t) and its derivatives.
-  struct TimeFactor
-  {
-    double omega;
-    double
-    value(const double t) const
-    {
-      return std::cos(omega * t) + 0.5 * std::sin(omega * t);
-    }
-    double
-    first(const double t) const
-    {
-      return omega * (-std::sin(omega * t) + 0.5 * std::cos(omega * t));
-    }
-    double
-    second(const double t) const
-    {
-      return -omega * omega * value(t);
-    }
-  };
-
-  /// A function of one variable s in [0, 1] vanishing at both ends:
-  /// sin(k pi s), or the bubble s (1 - s) (k = 0), with two derivatives.
-  struct Profile
-  {
-    unsigned int k;
-    double
-    value(const double s) const
-    {
-      return k == 0 ? s * (1 - s) : std::sin(k * M_PI * s);
-    }
-    double
-    first(const double s) const
-    {
-      return k == 0 ? 1 - 2 * s : k * M_PI * std::cos(k * M_PI * s);
-    }
-    double
-    second(const double s) const
-    {
-      return k == 0 ? -2.0 : -std::pow(k * M_PI, 2) * std::sin(k * M_PI * s);
-    }
-  };
-
-  /// Exact fields u_c = T(t) A_c F_c(X) G_c(Y) for c = w, psi_x, psi_y.
-  struct Fields
-  {
-    std::string            name;
-    TimeFactor             T;
-    std::array<double, 3>  amplitude;
-    std::array<Profile, 3> along_x, along_y;
-
-    /// u_c(x, y, t) as a muParser expression times T(0) or T'(0).
-    std::string
-    expression(const double time_factor) const
-    {
-      const auto profile = [](const Profile &f, const std::string &s) {
-        return f.k == 0 ? "(" + s + ")*(1-(" + s + "))"
-                        : "sin(" + std::to_string(f.k) + "*pi*(" + s + "))";
-      };
-      std::ostringstream text;
-      text << std::setprecision(17);
-      for (unsigned int c = 0; c < 3; ++c)
-        text << (c > 0 ? "; " : "") << time_factor * amplitude[c] << "*"
-             << profile(along_x[c], "x+0.5") << "*"
-             << profile(along_y[c], "y+0.5");
-      return text.str();
-    }
-  };
+  using namespace liftoff_tests::manufactured;
+  constexpr double c1 = 0.6;   // amplitudes of the rotations,
+  constexpr double c2 = -0.35; // unequal so x/y mix-ups show
 
   /// Trigonometric fields: not in any FE space, so the spatial error shows.
   Fields
@@ -145,8 +51,8 @@ namespace
     return {"trigonometric",
             T,
             {{1.0, c1, c2}},
-            {{Profile{1}, Profile{2}, Profile{1}}},
-            {{Profile{1}, Profile{1}, Profile{2}}}};
+            {{sine(1), sine(2), sine(1)}},
+            {{sine(1), sine(1), sine(2)}}};
   }
 
   /// Bubble fields X(1-X) Y(1-Y): they lie in the Q2 space, all integrals
@@ -158,134 +64,8 @@ namespace
     return {"bubble",
             T,
             {{1.0, c1, c2}},
-            {{Profile{0}, Profile{0}, Profile{0}}},
-            {{Profile{0}, Profile{0}, Profile{0}}}};
-  }
-
-  /// Values and derivatives of the three fields at a point and time.
-  struct Derivatives
-  {
-    std::array<double, 3> u, u_tt, u_x, u_y, u_xx, u_yy, u_xy;
-  };
-
-  Derivatives
-  derivatives(const Fields &f, const Point<2> &p, const double t)
-  {
-    Derivatives  d;
-    const double X = p[0] + 0.5, Y = p[1] + 0.5;
-    const double T0 = f.T.value(t), T2 = f.T.second(t);
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        const Profile &F = f.along_x[c], &G = f.along_y[c];
-        const double   A = f.amplitude[c];
-        d.u[c]           = A * T0 * F.value(X) * G.value(Y);
-        d.u_tt[c]        = A * T2 * F.value(X) * G.value(Y);
-        d.u_x[c]         = A * T0 * F.first(X) * G.value(Y);
-        d.u_y[c]         = A * T0 * F.value(X) * G.first(Y);
-        d.u_xx[c]        = A * T0 * F.second(X) * G.value(Y);
-        d.u_yy[c]        = A * T0 * F.value(X) * G.second(Y);
-        d.u_xy[c]        = A * T0 * F.first(X) * G.first(Y);
-      }
-    return d;
-  }
-
-  /// The strong form of the equations of motion (see the top) applied to
-  /// fields given with their derivatives.
-  std::array<double, 3>
-  strong_form(const Derivatives &d)
-  {
-    const double nu = poisson_ratio, twist = 0.5 * (1 - nu);
-    return {{d.u_tt[0] - S * (d.u_xx[0] + d.u_yy[0] - d.u_x[1] - d.u_y[2])
-               + gamma_foundation * d.u[0],
-             I * d.u_tt[1]
-               - (d.u_xx[1] + nu * d.u_xy[2] + twist * (d.u_yy[1] + d.u_xy[2]))
-               - S * (d.u_x[0] - d.u[1]),
-             I * d.u_tt[2]
-               - (d.u_yy[2] + nu * d.u_xy[1] + twist * (d.u_xx[2] + d.u_xy[1]))
-               - S * (d.u_y[0] - d.u[2])}};
-  }
-
-  /// A quantity of the manufactured solution at time get_time(): the exact
-  /// (w, psi_x, psi_y), or the forcing (f_w, m_x, m_y) that produces it.
-  class ManufacturedField : public Function<2>
-  {
-  public:
-    using Quantity = std::array<double, 3> (*)(const Derivatives &);
-
-    ManufacturedField(const Fields &fields, const Quantity quantity)
-        : Function<2>(3)
-        , fields(fields)
-        , quantity(quantity)
-    {}
-
-    void
-    vector_value(const Point<2> &p, Vector<double> &values) const override
-    {
-      const auto q = quantity(derivatives(fields, p, this->get_time()));
-      for (unsigned int c = 0; c < 3; ++c)
-        values[c] = q[c];
-    }
-
-    double
-    value(const Point<2> &p, const unsigned int component) const override
-    {
-      return quantity(derivatives(fields, p, this->get_time()))[component];
-    }
-
-  private:
-    const Fields   fields;
-    const Quantity quantity;
-  };
-
-  std::array<double, 3>
-  exact_values(const Derivatives &d)
-  {
-    return d.u;
-  }
-
-  /// The strong form with every derivative taken by central differences
-  /// of the field values, against the same with the analytic derivatives:
-  /// checks derivatives(). Returns the largest difference over sample
-  /// points relative to the largest forcing.
-  double
-  finite_difference_check(const Fields &fields)
-  {
-    const double h  = 1e-4;
-    const auto   at = [&](const double x, const double y, const double t) {
-      return derivatives(fields, Point<2>(x, y), t).u;
-    };
-    double max_difference = 0, max_forcing = 0;
-    for (const double t : {0.0, 0.37, 1.1})
-      for (const double x : {-0.41, -0.13, 0.05, 0.33})
-        for (const double y : {-0.37, -0.02, 0.21, 0.44})
-          {
-            Derivatives fd;
-            fd.u = at(x, y, t);
-            for (unsigned int k = 0; k < 3; ++k)
-              {
-                const double c = fd.u[k];
-                fd.u_tt[k] =
-                  (at(x, y, t + h)[k] - 2 * c + at(x, y, t - h)[k]) / (h * h);
-                fd.u_xx[k] =
-                  (at(x + h, y, t)[k] - 2 * c + at(x - h, y, t)[k]) / (h * h);
-                fd.u_yy[k] =
-                  (at(x, y + h, t)[k] - 2 * c + at(x, y - h, t)[k]) / (h * h);
-                fd.u_xy[k] = (at(x + h, y + h, t)[k] - at(x + h, y - h, t)[k]
-                              - at(x - h, y + h, t)[k] + at(x - h, y - h, t)[k])
-                             / (4 * h * h);
-                fd.u_x[k] = (at(x + h, y, t)[k] - at(x - h, y, t)[k]) / (2 * h);
-                fd.u_y[k] = (at(x, y + h, t)[k] - at(x, y - h, t)[k]) / (2 * h);
-              }
-            const auto approximate = strong_form(fd);
-            const auto exact = strong_form(derivatives(fields, {x, y}, t));
-            for (unsigned int k = 0; k < 3; ++k)
-              {
-                max_difference =
-                  std::max(max_difference, std::abs(approximate[k] - exact[k]));
-                max_forcing = std::max(max_forcing, std::abs(exact[k]));
-              }
-          }
-    return max_difference / max_forcing;
+            {{bubble(), bubble(), bubble()}},
+            {{bubble(), bubble(), bubble()}}};
   }
 
   /// The forcing of the trigonometric fields derived by hand from the
@@ -353,64 +133,31 @@ namespace
                    const std::string &element         = "lagrange")
   {
     std::ostringstream scene;
-    scene << std::setprecision(17) << "subsection Analysis\n"
+    scene << std::setprecision(17) << plate_scene(fields, degree, cells)
+          << "subsection Analysis\n"
           << "  set Type = dynamic\n"
           << "end\n"
-          << liftoff_tests::square_plate(thickness_ratio,
-                                         poisson_ratio,
-                                         shear_correction)
-          << "subsection Foundation\n"
-          << "  set Model = bilateral\n"
-          << "  set Stiffness = " << gamma_foundation << "\n"
-          << "end\n"
-          << liftoff_tests::all_edges("clamped");
-    scene << "subsection Discretization\n"
-          << "  set Symmetry = full\n"
-          << "  set Cells along x = " << cells << "\n"
-          << "  set Cells along y = " << cells << "\n"
-          << "  set Polynomial degree = " << degree << "\n"
+          << "subsection Discretization\n"
           << "  set Shear integration = " << shear_treatment << "\n"
           << "  set Element = " << element << "\n"
-          << "end\n"
-          << "subsection Initial conditions\n"
-          << "  set Displacement = " << fields.expression(fields.T.value(0))
-          << "\n"
-          << "  set Velocity = " << fields.expression(fields.T.first(0)) << "\n"
           << "end\n"
           << "subsection Time integration\n"
           << "  set Time step = " << time_step << "\n"
           << "  set End time = " << end_time << "\n"
-          << "end\n"
-          << "subsection Output\n"
-          << "  set Write energies = false\n"
           << "end\n";
 
     const auto        start = std::chrono::steady_clock::now();
     ManufacturedField force(fields, strong_form);
     {
-      const auto        sim  = liftoff_tests::run_scene(scene.str(), &force);
-      const auto       &disc = sim->get_discretization();
+      const auto        sim = liftoff_tests::run_scene(scene.str(), &force);
       ManufacturedField exact(fields, exact_values);
       exact.set_time(end_time);
-
-      // solution() is the ghosted vector, as integrate_difference needs.
-      const auto error_of = [&](const ComponentSelectFunction<2> &select) {
-        Vector<float> cellwise(disc.triangulation.n_active_cells());
-        VectorTools::integrate_difference(disc.mapping,
-                                          disc.dof_handler,
-                                          sim->solution(),
-                                          exact,
-                                          cellwise,
-                                          QGauss<2>(degree + 3),
-                                          VectorTools::L2_norm,
-                                          &select);
-        return VectorTools::compute_global_error(disc.triangulation,
-                                                 cellwise,
-                                                 VectorTools::L2_norm);
-      };
-      const double w_error = error_of(ComponentSelectFunction<2>(0, 3));
+      const double w_error =
+        error_of(*sim, exact, ComponentSelectFunction<2>(0, 3));
       const double psi_error =
-        error_of(ComponentSelectFunction<2>(std::make_pair(1u, 3u), 3));
+        error_of(*sim,
+                 exact,
+                 ComponentSelectFunction<2>(std::make_pair(1u, 3u), 3));
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();

@@ -41,7 +41,7 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// No load is on (every Magnitude is 0).
+    /// No load is on (every Magnitude is 0) and no body force is set.
     bool
     is_empty() const;
 

@@ -57,6 +57,9 @@ namespace liftoff
     /// Refine-and-solve cycles after the first solve of a static analysis.
     unsigned int
     n_static_cycles() const;
+    /// `Initial refinements` (0 when not adaptive).
+    unsigned int
+    n_initial_refinements() const;
 
     /// Before the first step: refine the cells holding the point loads
     /// `Initial refinements` times (no state to move yet).

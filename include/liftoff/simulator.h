@@ -266,6 +266,11 @@ namespace liftoff
     /// point searches on the current mesh; u, v and a are kept.
     void
     rebuild_on_new_mesh();
+    /// Before the first step of an adaptive dynamic run that does not start
+    /// at rest: `Initial refinements` adaptations to the initial
+    /// displacement, the initial conditions interpolated anew on each mesh.
+    void
+    adapt_to_initial_state();
     /// After a step of an adaptive run: a new mesh when one is due, with
     /// the contact status, force balance and factor of the time loop.
     void
