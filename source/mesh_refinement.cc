@@ -84,10 +84,14 @@ namespace liftoff
                       "indicators that are coarsened at each adaptation "
                       "(Refine fraction + Coarsen fraction <= 1).");
     prm.declare_entry("Maximum number of cells",
-                      "0",
-                      Patterns::Integer(0),
+                      "auto",
+                      Patterns::Anything(),
                       "Refine no further once the mesh would exceed this "
-                      "many cells (Kelly refinement only); 0: no limit.");
+                      "many cells (Kelly refinement only): a number, 0 for "
+                      "no limit, or auto: 4 times the cells of the uniform "
+                      "mesh of Discretization. (Without a limit, Kelly "
+                      "refinement of a wave that fills the plate ends with "
+                      "every cell at Maximum level.)");
     prm.declare_entry("Minimum level",
                       "0",
                       Patterns::Integer(-12, 12),
@@ -123,12 +127,18 @@ namespace liftoff
   MeshRefinement::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh refinement");
-    enabled             = prm.get_bool("Adaptive");
-    interval            = prm.get_integer("Interval");
-    static_cycles       = prm.get_integer("Static cycles");
-    refine_fraction     = prm.get_double("Refine fraction");
-    coarsen_fraction    = prm.get_double("Coarsen fraction");
-    max_n_cells         = prm.get_integer("Maximum number of cells");
+    enabled                 = prm.get_bool("Adaptive");
+    interval                = prm.get_integer("Interval");
+    static_cycles           = prm.get_integer("Static cycles");
+    refine_fraction         = prm.get_double("Refine fraction");
+    coarsen_fraction        = prm.get_double("Coarsen fraction");
+    const std::string cells = prm.get("Maximum number of cells");
+    AssertThrow(cells == "auto" || Patterns::Integer(0).match(cells),
+                ExcMessage("Mesh refinement/Maximum number of cells = <" + cells
+                           + ">: expected a whole number of cells (0: no "
+                             "limit) or auto."));
+    max_n_cells =
+      cells == "auto" ? auto_cell_limit : Utilities::string_to_int(cells);
     min_level           = prm.get_integer("Minimum level");
     max_level           = prm.get_integer("Maximum level");
     front_band          = prm.get_integer("Front band");
@@ -181,6 +191,19 @@ namespace liftoff
                              "Discretization/Global refinements = "
                            + std::to_string(discretization.initial_level())
                            + " levels below the uniform one."));
+  }
+
+
+  unsigned int
+  MeshRefinement::cell_limit(const Discretization &discretization) const
+  {
+    if (max_n_cells == 0)
+      return std::numeric_limits<unsigned int>::max();
+    if (max_n_cells != auto_cell_limit)
+      return max_n_cells;
+    // The uniform mesh: the coarse mesh with Global refinements.
+    return 4 * discretization.triangulation.n_global_coarse_cells()
+           * (1u << (2 * discretization.initial_level()));
   }
 
 
@@ -356,8 +379,7 @@ namespace liftoff
         kelly_indicators(discretization, ghosted_solution),
         refine_fraction,
         coarsen_fraction,
-        max_n_cells > 0 ? max_n_cells
-                        : std::numeric_limits<unsigned int>::max());
+        cell_limit(discretization));
     else
       // Without Kelly nothing else coarsens: the cells the front has left
       // behind (and the loads, if they move) go back towards the uniform

@@ -8,6 +8,7 @@
 #include <liftoff/linear_algebra.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 
+#include <limits>
 #include <vector>
 
 namespace liftoff
@@ -85,12 +86,18 @@ namespace liftoff
             const std::vector<LA::MPI::Vector *> &vectors) const;
 
   private:
-    bool         enabled             = false;
-    unsigned int interval            = 10;
-    unsigned int static_cycles       = 3;
-    double       refine_fraction     = 0.3;
-    double       coarsen_fraction    = 0.1;
-    unsigned int max_n_cells         = 0;
+    bool         enabled          = false;
+    unsigned int interval         = 10;
+    unsigned int static_cycles    = 3;
+    double       refine_fraction  = 0.3;
+    double       coarsen_fraction = 0.1;
+    /// `Maximum number of cells`; auto_cell_limit for `auto`.
+    unsigned int                  max_n_cells = auto_cell_limit;
+    static constexpr unsigned int auto_cell_limit =
+      std::numeric_limits<unsigned int>::max();
+    /// The limit on the number of cells for refine_and_coarsen_fixed_number.
+    unsigned int
+                 cell_limit(const Discretization &discretization) const;
     int          min_level           = 0;
     unsigned int max_level           = 3;
     unsigned int front_band          = 1;
