@@ -742,15 +742,12 @@ namespace liftoff
     if (!adapt_mesh())
       return;
     // The state on the new mesh: its contact status at the new Gauss
-    // points, the load and force balance there, the system matrix and its
-    // factor (once per mesh); with dashpots, as at the end of a step.
-    if (foundation.has_damping())
-      set_dashpots_to_velocity();
-    foundation.update_contact_status(state.ghosted_u);
-    assemble_loads(state.step, state.tau, state.load);
-    force_balance(state.load, state.balance);
-    if (foundation.has_damping())
-      compute_dashpot_force();
+    // points, the load and force balance there, an acceleration in
+    // balance with them, the system matrix and its factor (once per mesh).
+    {
+      SectionTimer::Scope t(timer, "mesh refinement");
+      equilibrate(state.step, state.tau, "the acceleration after a new mesh");
+    }
     {
       LA::MPI::SparseMatrix base;
       build_base_matrix(base);
@@ -794,6 +791,24 @@ namespace liftoff
 
 
   void
+  Simulator::equilibrate(const unsigned int step,
+                         const double       tau,
+                         const std::string &what)
+  {
+    if (foundation.has_damping())
+      set_dashpots_to_velocity();
+    foundation.update_contact_status(state.ghosted_u);
+    assemble_loads(step, tau, state.load);
+    force_balance(state.load, state.balance);
+    if (foundation.has_damping())
+      compute_dashpot_force();
+    matrices.solve_with_mass(state.a, state.balance);
+    discretization.constraints.distribute(state.a);
+    require_finite_state(what, {&state.a}, {}, state.load);
+  }
+
+
+  void
   Simulator::start_from_initial_state()
   {
     // check_before_run() set the initial state. The initial acceleration
@@ -801,21 +816,9 @@ namespace liftoff
     adapt_to_initial_state();
     if (loads.has_permanent_loads())
       settle_under_permanent_loads();
-    assemble_loads(0, 0.0, state.load);
     {
       SectionTimer::Scope t(timer, "initial acceleration");
-      if (foundation.has_damping())
-        set_dashpots_to_velocity();
-      foundation.update_contact_status(state.ghosted_u);
-      force_balance(state.load, state.balance);
-      if (foundation.has_damping())
-        compute_dashpot_force();
-      matrices.solve_with_mass(state.a, state.balance);
-      discretization.constraints.distribute(state.a);
-      require_finite_state("the initial acceleration",
-                           {&state.a},
-                           {},
-                           state.load);
+      equilibrate(0, 0.0, "the initial acceleration");
     }
     // The energies with the contact status of the initial state (the shear
     // layer's is taken over it), before the first iterate replaces it.

@@ -266,6 +266,15 @@ namespace liftoff
     /// point searches on the current mesh; u, v and a are kept.
     void
     rebuild_on_new_mesh();
+    /// The state's contact status, load (at `step`, `tau`) and force
+    /// balance, with dashpots as at the end of a step, and the
+    /// acceleration of the equation of motion M a = balance: at the start,
+    /// and on a new mesh, where the interpolated acceleration is in balance
+    /// with nothing (`what` names it in an error).
+    void
+    equilibrate(const unsigned int step,
+                const double       tau,
+                const std::string &what);
     /// Before the first step of an adaptive dynamic run that does not start
     /// at rest: `Initial refinements` adaptations to the initial
     /// displacement, the initial conditions interpolated anew on each mesh.
