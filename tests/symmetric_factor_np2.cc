@@ -41,34 +41,32 @@ namespace
   one_solve(const MPI_Comm comm)
   {
     ParameterHandler prm;
-    liftoff::MindlinPlate::declare_parameters(prm);
-    liftoff::Discretization::declare_parameters(prm);
-    liftoff::TensionlessWinklerFoundation::declare_parameters(prm);
-    liftoff::LinearSolver::declare_parameters(prm);
-    std::istringstream scene("subsection Discretization\n"
-                             "  set Symmetry = full\n"
-                             "  set Cells along x = 12\n"
-                             "  set Cells along y = 10\n"
-                             "  set Polynomial degree = 2\n"
-                             "end\n"
-                             "subsection Boundary conditions\n"
-                             "  set Left = clamped\n"
-                             "  set Bottom = hard simply supported\n"
-                             "end\n"
-                             "subsection Foundation\n"
-                             "  set Stiffness = 37\n"
-                             "end\n");
+    for (const auto declare :
+         {&liftoff::MindlinPlate::declare_parameters,
+          &liftoff::Discretization::declare_parameters,
+          &liftoff::TensionlessWinklerFoundation::declare_parameters,
+          &liftoff::LinearSolver::declare_parameters})
+      declare(prm);
+    using liftoff_tests::set;
+    std::istringstream scene(
+      set("Discretization/Symmetry", "full")
+      + set("Discretization/Cells along x", 10)
+      + set("Discretization/Cells along y", 12)
+      + set("Discretization/Polynomial degree", 2)
+      + set("Boundary conditions/Right", "clamped")
+      + set("Boundary conditions/Top", "hard simply supported")
+      + set("Foundation/Stiffness", 37));
     prm.parse_input(scene, "test scene");
     liftoff::MindlinPlate plate;
     plate.parse_parameters(prm);
     liftoff::Discretization discretization(comm);
     discretization.parse_parameters(prm);
     discretization.setup(plate);
+    liftoff::PlateMatrices matrices;
+    matrices.assemble(discretization, plate);
     liftoff::TensionlessWinklerFoundation foundation;
     foundation.parse_parameters(prm);
     foundation.setup(discretization);
-    liftoff::PlateMatrices matrices;
-    matrices.assemble(discretization, plate);
 
     liftoff::LA::MPI::SparseMatrix A;
     discretization.reinit_matrix(A);
@@ -85,10 +83,8 @@ namespace
     OneSolve result;
     for (const bool cholesky : {true, false})
       {
-        std::istringstream package(std::string("subsection Linear solver\n"
-                                               "  set Direct solver package = ")
-                                   + (cholesky ? "mumps" : "mumps lu")
-                                   + "\nend\n");
+        std::istringstream package(set("Linear solver/Direct solver package",
+                                       cholesky ? "mumps" : "mumps lu"));
         prm.parse_input(package, "package");
         liftoff::SectionTimer timer;
         liftoff::LinearSolver solver(timer);
