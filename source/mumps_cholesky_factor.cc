@@ -25,13 +25,6 @@ namespace liftoff
     {
       return infog[i - 1];
     }
-    /// INFOG entries that count: MUMPS gives millions as negative numbers
-    /// when a count exceeds its integers.
-    double
-    count(const int i) const
-    {
-      return INFOG(i) >= 0 ? INFOG(i) : -1e6 * INFOG(i);
-    }
   };
 
 
@@ -231,17 +224,4 @@ namespace liftoff
                  comm);
   }
 
-
-  double
-  MumpsCholeskyFactor::n_factor_entries() const
-  {
-    return mumps->count(29);
-  }
-
-
-  double
-  MumpsCholeskyFactor::factorization_memory_mb() const
-  {
-    return mumps->INFOG(22);
-  }
 } // namespace liftoff

@@ -46,14 +46,6 @@ namespace liftoff
     void
     substitute(LA::MPI::Vector &x, const LA::MPI::Vector &b);
 
-    /// Entries of the factor (INFOG(29)) and the memory MUMPS used to
-    /// factorise, summed over the ranks (INFOG(22), MB), for the summary
-    /// and the benchmarks.
-    double
-    n_factor_entries() const;
-    double
-    factorization_memory_mb() const;
-
   private:
     /// DMUMPS_STRUC_C, which MUMPS's header declares as an unnamed struct.
     struct Mumps;
