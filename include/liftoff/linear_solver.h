@@ -27,8 +27,8 @@ namespace liftoff
    * sparse Cholesky factor (A is symmetric positive definite), CHOLMOD's
    * on one rank and MUMPS's (MumpsCholeskyFactor) on several, otherwise
    * with a sparse LU of Trilinos Amesos (MUMPS or KLU, on any number of
-   * ranks). While A is the factorised matrix, a
-   * solve is one forward and back substitution. After A has changed
+   * ranks). While A is the factorised matrix, a solve is one forward and
+   * back substitution. After A has changed
    * (matrix_changed()), the stored factor preconditions conjugate gradients on
    * the new A; the change, a few Gauss points' springs, is small against M /
    * (beta dt^2), so CG needs one or two iterations. A is factorised anew
