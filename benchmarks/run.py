@@ -261,8 +261,10 @@ def write_tables(new_rows):
             rows = list(csv.DictReader(f))
     rows = [derived(r) for r in rows + new_rows]
     with open(RESULTS_CSV, "w", newline="") as f:
+        # "\n": the csv module's default "\r\n" would rewrite every line
+        # of the committed file at each run.
         writer = csv.DictWriter(f, fieldnames=[k for k, _ in COLUMNS],
-                                extrasaction="ignore")
+                                extrasaction="ignore", lineterminator="\n")
         writer.writeheader()
         writer.writerows(rows)
     lines = ["# Benchmark results",

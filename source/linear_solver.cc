@@ -2,6 +2,7 @@
 #include <deal.II/lac/solver_cg.h>
 
 #include <liftoff/linear_solver.h>
+#include <liftoff/mumps_cholesky_factor.h>
 #include <liftoff/selection.h>
 
 #include <Epetra_Comm.h>
@@ -176,6 +177,7 @@ namespace liftoff
     const Selection<LinearSolver::Package> packages = {
       {"cholmod", LinearSolver::Package::cholmod},
       {"mumps", LinearSolver::Package::mumps},
+      {"mumps lu", LinearSolver::Package::mumps_lu},
       {"klu", LinearSolver::Package::klu}};
   } // namespace
 
@@ -194,12 +196,15 @@ namespace liftoff
       "Direct solver package",
       "cholmod",
       packages.pattern(),
-      "Factorisation for Type = direct. cholmod: CHOLMOD's sparse Cholesky "
-      "factor (SuiteSparse), the fastest on one rank; it is serial, so on "
-      "several ranks, or for a matrix that is not positive definite, MUMPS's "
-      "LU is used instead. mumps: Trilinos Amesos MUMPS, an LU factorised in "
-      "parallel. klu: Trilinos Amesos KLU, an LU that gathers the matrix on "
-      "one rank.");
+      "Factorisation for Type = direct. cholmod: a sparse Cholesky factor, "
+      "CHOLMOD's (SuiteSparse) on one rank, the fastest there; CHOLMOD is "
+      "serial, so on several ranks MUMPS's Cholesky factor. mumps: MUMPS's "
+      "Cholesky factor (symmetric positive definite mode) on any number of "
+      "ranks, factorised in parallel. With either, a matrix that is not "
+      "positive definite is factorised with MUMPS's LU instead. mumps lu: "
+      "Trilinos Amesos MUMPS, an LU (twice the factor of a Cholesky one) "
+      "factorised in parallel. klu: Trilinos Amesos KLU, an LU that gathers "
+      "the matrix on one rank.");
     prm.declare_entry("Refactorisation threshold",
                       "8",
                       Patterns::Integer(0),
@@ -248,6 +253,8 @@ namespace liftoff
   {
     if (cholesky)
       return "CHOLMOD Cholesky";
+    if (mumps_cholesky)
+      return "MUMPS Cholesky";
     if (direct)
       return package == Package::klu ? "KLU LU" : "MUMPS LU";
     return type == Type::cg ? "none (CG + AMG)" : "none";
@@ -269,6 +276,7 @@ namespace liftoff
   {
     direct.reset();
     cholesky.reset();
+    mumps_cholesky.reset();
     amg.reset();
   }
 
@@ -290,22 +298,27 @@ namespace liftoff
         // Release the old factor before the new one is built.
         direct.reset();
         cholesky.reset();
+        mumps_cholesky.reset();
         // The number of ranks is the same on all of them, and so is the
-        // test of positive definiteness (one rank), so every rank takes the
-        // same branch.
-        if (package == Package::cholmod
-            && A.trilinos_matrix().Comm().NumProc() == 1)
+        // test of positive definiteness (CHOLMOD's on one rank, MUMPS's
+        // global status), so every rank takes the same branch.
+        const bool one_rank = A.trilinos_matrix().Comm().NumProc() == 1;
+        if (package == Package::cholmod && one_rank)
           {
             cholesky = std::make_unique<CholeskyFactor>();
             if (cholesky->factorize(A.trilinos_matrix()))
               return;
             cholesky.reset();
-            if (!has_reported_fallback)
-              std::cout << "liftoff: CHOLMOD found the system matrix not "
-                           "positive definite; factorising it with MUMPS's "
-                           "LU instead."
-                        << std::endl;
-            has_reported_fallback = true;
+            report_fallback("CHOLMOD");
+          }
+        else if (package == Package::cholmod || package == Package::mumps)
+          {
+            mumps_cholesky =
+              std::make_unique<MumpsCholeskyFactor>(A.get_mpi_communicator());
+            if (mumps_cholesky->factorize(A))
+              return;
+            mumps_cholesky.reset();
+            report_fallback("MUMPS's Cholesky factorisation");
           }
         direct_control.set_max_steps(1);
         direct = std::make_unique<TrilinosWrappers::SolverDirect>(
@@ -332,6 +345,20 @@ namespace liftoff
 
 
   void
+  LinearSolver::report_fallback(const std::string &factorisation)
+  {
+    if (!has_reported_fallback
+        && Utilities::MPI::this_mpi_process(matrix->get_mpi_communicator())
+             == 0)
+      std::cout << "liftoff: " << factorisation
+                << " found the system matrix not positive definite; "
+                   "factorising it with MUMPS's LU instead."
+                << std::endl;
+    has_reported_fallback = true;
+  }
+
+
+  void
   LinearSolver::matrix_changed()
   {
     factor_is_exact = false;
@@ -347,6 +374,8 @@ namespace liftoff
     substitution_timer.start();
     if (cholesky)
       cholesky->substitute(dst.begin(), src.begin());
+    else if (mumps_cholesky)
+      mumps_cholesky->substitute(dst, src);
     else
       direct->solve(dst, src);
     substitution_timer.stop();

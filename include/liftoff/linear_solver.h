@@ -16,16 +16,19 @@ namespace liftoff
 {
   using namespace dealii;
 
+  class MumpsCholeskyFactor;
+
   /**
    * Solves A x = b for a matrix that changes a little between solves: the
    * effective matrix of a time step plus the foundation term of the current
    * contact set.
    *
-   * `direct` factorises A once and keeps the factor: by default with
-   * CHOLMOD's sparse Cholesky factor L L^T (A is symmetric positive
-   * definite; on one rank), otherwise with a sparse LU of Trilinos Amesos
-   * (MUMPS or KLU, on any number of ranks). While A is the factorised matrix, a
-   * solve is one forward and back substitution. After A has changed
+   * `direct` factorises A once and keeps the factor: by default with a
+   * sparse Cholesky factor (A is symmetric positive definite), CHOLMOD's
+   * on one rank and MUMPS's (MumpsCholeskyFactor) on several, otherwise
+   * with a sparse LU of Trilinos Amesos (MUMPS or KLU, on any number of
+   * ranks). While A is the factorised matrix, a solve is one forward and
+   * back substitution. After A has changed
    * (matrix_changed()), the stored factor preconditions conjugate gradients on
    * the new A; the change, a few Gauss points' springs, is small against M /
    * (beta dt^2), so CG needs one or two iterations. A is factorised anew
@@ -54,10 +57,13 @@ namespace liftoff
     /// `Direct solver package`.
     enum class Package
     {
-      /// CHOLMOD's Cholesky factor where it can (one rank, a positive
-      /// definite matrix), MUMPS's LU otherwise.
+      /// A Cholesky factor: CHOLMOD's on one rank, MUMPS's on several;
+      /// MUMPS's LU for a matrix that is not positive definite.
       cholmod,
+      /// MUMPS's Cholesky factor on any number of ranks (LU as above).
       mumps,
+      /// MUMPS's LU (Trilinos Amesos).
+      mumps_lu,
       klu
     };
 
@@ -90,7 +96,8 @@ namespace liftoff
     unsigned int
     solve(LA::MPI::Vector &x, const LA::MPI::Vector &b);
 
-    /// The factor in use, for the summary ("CHOLMOD Cholesky", "MUMPS LU").
+    /// The factor in use, for the summary ("CHOLMOD Cholesky", "MUMPS
+    /// Cholesky", "MUMPS LU").
     std::string
     factor_name() const;
 
@@ -156,7 +163,13 @@ namespace liftoff
     /// CHOLMOD's factor; kept out of this header.
     class CholeskyFactor;
     std::unique_ptr<CholeskyFactor>                    cholesky;
+    std::unique_ptr<MumpsCholeskyFactor>               mumps_cholesky;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+
+    /// Say once (rank 0) that `factorisation` found the matrix not
+    /// positive definite and MUMPS's LU takes over.
+    void
+    report_fallback(const std::string &factorisation);
 
     /// CG to the tolerance in at most `max_steps` iterations; throws
     /// SolverControl::NoConvergence otherwise.
