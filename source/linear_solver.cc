@@ -43,8 +43,6 @@ namespace liftoff
     CholeskyFactor &
     operator=(const CholeskyFactor &) = delete;
 
-    /// Factorise A (all rows on this rank). Returns false if A is not
-    /// positive definite (or CHOLMOD fails otherwise).
     // The matrix in CHOLMOD's form, or nullptr if it cannot be allocated.
     cholmod_sparse *
     lower_triangle(const Epetra_CrsMatrix &A)
@@ -96,6 +94,8 @@ namespace liftoff
     }
 
 
+    /// Factorise A (all rows on this rank). Returns false if A is not
+    /// positive definite (or CHOLMOD fails otherwise).
     bool
     factorize(const Epetra_CrsMatrix &A)
     {
