@@ -86,12 +86,15 @@ namespace liftoff
     prm.declare_entry("Maximum number of cells",
                       "auto",
                       Patterns::Anything(),
-                      "Refine no further once the mesh would exceed this "
-                      "many cells (Kelly refinement only): a number, 0 for "
-                      "no limit, or auto: 4 times the cells of the uniform "
-                      "mesh of Discretization. (Without a limit, Kelly "
-                      "refinement of a wave that fills the plate ends with "
-                      "every cell at Maximum level.)");
+                      "Refine nothing once the mesh has this many cells (the "
+                      "cells of the contact front and the loads then keep "
+                      "their level; Kelly still coarsens its Coarsen "
+                      "fraction), so a mesh exceeds it by at most one "
+                      "adaptation: a number, 0 for no limit, or auto: 4 "
+                      "times the cells of the uniform mesh of "
+                      "Discretization. (Without a limit, refining a wave "
+                      "that fills the plate ends with every cell at Maximum "
+                      "level.)");
     prm.declare_entry("Minimum level",
                       "0",
                       Patterns::Integer(-12, 12),
@@ -336,14 +339,16 @@ namespace liftoff
   template <class Predicate>
   void
   MeshRefinement::force_refinement(Discretization  &discretization,
-                                   const Predicate &is_wanted) const
+                                   const Predicate &is_wanted,
+                                   const bool       refine) const
   {
     for (const auto &cell :
          discretization.triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && is_wanted(cell))
         {
           cell->clear_coarsen_flag();
-          cell->set_refine_flag();
+          if (refine)
+            cell->set_refine_flag();
         }
   }
 
@@ -373,13 +378,19 @@ namespace liftoff
                              const LA::MPI::Vector &ghosted_solution) const
   {
     auto &tria = discretization.triangulation;
+    // At or above the cell limit nothing is refined, and Kelly coarsens
+    // its fraction. (deal.II's own limit would coarsen as many cells as it
+    // takes to get back under it; its choice then depended on the number
+    // of ranks: 1 and 2 ranks took different meshes, mpi_consistency_np2.)
+    const unsigned int limit = cell_limit(discretization);
+    const bool         full  = tria.n_global_active_cells() >= limit;
     if (uses_kelly)
       parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
         tria,
         kelly_indicators(discretization, ghosted_solution),
-        refine_fraction,
+        full ? 0.0 : refine_fraction,
         coarsen_fraction,
-        cell_limit(discretization));
+        full ? std::numeric_limits<unsigned int>::max() : limit);
     else
       // Without Kelly nothing else coarsens: the cells the front has left
       // behind (and the loads, if they move) go back towards the uniform
@@ -390,16 +401,20 @@ namespace liftoff
     if (uses_front)
       {
         const auto in_band = front_cells(discretization, foundation);
-        force_refinement(discretization, [&](const auto &cell) {
-          return in_band[cell->active_cell_index()];
-        });
+        force_refinement(
+          discretization,
+          [&](const auto &cell) { return in_band[cell->active_cell_index()]; },
+          !full);
       }
     if (uses_point_loads)
-      force_refinement(discretization, [&](const auto &cell) {
-        return std::any_of(points.begin(), points.end(), [&](const auto &p) {
-          return holds_point(cell, p);
-        });
-      });
+      force_refinement(
+        discretization,
+        [&](const auto &cell) {
+          return std::any_of(points.begin(), points.end(), [&](const auto &p) {
+            return holds_point(cell, p);
+          });
+        },
+        !full);
     limit_levels(discretization);
     tria.prepare_coarsening_and_refinement();
 

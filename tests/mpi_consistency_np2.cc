@@ -5,8 +5,8 @@
 // with the nine-node element (Q2) and with the eight-node serendipity
 // element (S2, reduced shear integration), whose unknowns must also be
 // those of its vertices and edges alone, and on an adaptive mesh (Q2,
-// refined and coarsened every 5 steps), whose meshes must be the same at
-// every step.
+// refined and coarsened every 5 steps; and above Kelly's cell limit),
+// whose meshes must be the same at every step.
 
 #include <deal.II/base/mpi.h>
 
@@ -94,6 +94,21 @@ main(int argc, char **argv)
                                  "  set Initial refinements = 1\n"
                                  "end\n";
   compare_1_and_2_ranks("Q2 adaptive", adaptive, 0, checks);
+  // Above Kelly's cell limit (the front and the loads refine past it),
+  // from an initial displacement (the mesh first adapts to it): deal.II's
+  // coarsening back to the limit chose other meshes on 1 and 2 ranks.
+  compare_1_and_2_ranks("Q2 adaptive, above the cell limit",
+                        adaptive
+                          + "subsection Mesh refinement\n"
+                            "  set Maximum number of cells = 100\n"
+                            "  set Initial refinements = 2\n"
+                            "end\n"
+                            "subsection Initial conditions\n"
+                            "  set Displacement = "
+                            "0.01*exp(-50*((x-0.1)^2+y^2)); 0; 0\n"
+                            "end\n",
+                        0,
+                        checks);
   const int code = checks.exit_code();
   return dealii::Utilities::MPI::max(code, MPI_COMM_WORLD);
 }

@@ -115,12 +115,13 @@ namespace liftoff
     std::vector<bool>
     front_cells(const Discretization               &discretization,
                 const TensionlessWinklerFoundation &foundation) const;
-    /// Flag for refinement (and unflag for coarsening) every owned cell
-    /// where `is_wanted` holds.
+    /// Unflag for coarsening, and with `refine` flag for refinement, every
+    /// owned cell where `is_wanted` holds.
     template <class Predicate>
     void
     force_refinement(Discretization  &discretization,
-                     const Predicate &is_wanted) const;
+                     const Predicate &is_wanted,
+                     const bool       refine = true) const;
     /// Clear the flags that would leave [min level, max level].
     void
     limit_levels(Discretization &discretization) const;
