@@ -6,6 +6,8 @@
 #include <boost/serialization/array_wrapper.hpp>
 
 #include <liftoff/checkpoint.h>
+
+#include <Epetra_CrsMatrix.h>
 #include <liftoff/output_files.h>
 
 #include <zlib.h>
@@ -254,13 +256,24 @@ namespace liftoff
   }
 
 
+  // Both walk the owned rows in order and each row's entries in Epetra's
+  // storage order. (deal.II's matrix iterator copies a row at every step
+  // into a fresh vector: on a million unknowns that took minutes, at each
+  // factorisation of a run that writes checkpoints and at each checkpoint.)
   std::vector<double>
   matrix_values(const LA::MPI::SparseMatrix &A)
   {
-    std::vector<double> values;
-    values.reserve(A.trilinos_matrix().NumMyNonzeros());
-    for (const auto &entry : A)
-      values.push_back(entry.value());
+    const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
+    std::vector<double>     values;
+    values.reserve(matrix.NumMyNonzeros());
+    for (int row = 0; row < matrix.NumMyRows(); ++row)
+      {
+        int     n_in_row   = 0;
+        double *row_values = nullptr;
+        int    *columns    = nullptr;
+        matrix.ExtractMyRowView(row, n_in_row, row_values, columns);
+        values.insert(values.end(), row_values, row_values + n_in_row);
+      }
     return values;
   }
 
@@ -268,16 +281,31 @@ namespace liftoff
   void
   set_matrix_values(const std::vector<double> &values, LA::MPI::SparseMatrix &A)
   {
-    const std::size_t n = A.trilinos_matrix().NumMyNonzeros();
+    const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
+    const std::size_t       n      = matrix.NumMyNonzeros();
     AssertThrow(values.size() == n,
                 ExcMessage(
                   "The checkpoint holds " + std::to_string(values.size())
                   + " matrix entries where this rank has " + std::to_string(n)
                   + ": it was written for another mesh."));
-    // The same order as matrix_values() walks.
-    auto next = values.begin();
-    for (auto entry = A.begin(); entry != A.end(); ++entry)
-      entry->value() = *next++;
+    auto                                          next = values.begin();
+    std::vector<LA::MPI::SparseMatrix::size_type> global_columns;
+    for (int row = 0; row < matrix.NumMyRows(); ++row)
+      {
+        int     n_in_row   = 0;
+        double *row_values = nullptr;
+        int    *columns    = nullptr;
+        matrix.ExtractMyRowView(row, n_in_row, row_values, columns);
+        global_columns.resize(n_in_row);
+        for (int k = 0; k < n_in_row; ++k)
+          global_columns[k] = matrix.ColMap().GID(columns[k]);
+        A.set(matrix.RowMap().GID(row),
+              n_in_row,
+              global_columns.data(),
+              &*next,
+              /*elide_zero_values*/ false);
+        next += n_in_row;
+      }
     A.compress(VectorOperation::insert);
   }
 
