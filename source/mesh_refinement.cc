@@ -140,8 +140,8 @@ namespace liftoff
                 ExcMessage("Mesh refinement/Maximum number of cells = <" + cells
                            + ">: expected a whole number of cells (0: no "
                              "limit) or auto."));
-    max_n_cells =
-      cells == "auto" ? auto_cell_limit : Utilities::string_to_int(cells);
+    cell_limit_auto     = cells == "auto";
+    max_n_cells         = cell_limit_auto ? 0 : Utilities::string_to_int(cells);
     min_level           = prm.get_integer("Minimum level");
     max_level           = prm.get_integer("Maximum level");
     front_band          = prm.get_integer("Front band");
@@ -200,13 +200,12 @@ namespace liftoff
   unsigned int
   MeshRefinement::cell_limit(const Discretization &discretization) const
   {
-    if (max_n_cells == 0)
-      return std::numeric_limits<unsigned int>::max();
-    if (max_n_cells != auto_cell_limit)
-      return max_n_cells;
-    // The uniform mesh: the coarse mesh with Global refinements.
-    return 4 * discretization.triangulation.n_global_coarse_cells()
-           * (1u << (2 * discretization.initial_level()));
+    if (cell_limit_auto)
+      // The uniform mesh: the coarse mesh with Global refinements.
+      return 4 * discretization.triangulation.n_global_coarse_cells()
+             * (1u << (2 * discretization.initial_level()));
+    return max_n_cells > 0 ? max_n_cells
+                           : std::numeric_limits<unsigned int>::max();
   }
 
 

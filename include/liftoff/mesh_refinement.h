@@ -91,10 +91,9 @@ namespace liftoff
     unsigned int static_cycles    = 3;
     double       refine_fraction  = 0.3;
     double       coarsen_fraction = 0.1;
-    /// `Maximum number of cells`; auto_cell_limit for `auto`.
-    unsigned int                  max_n_cells = auto_cell_limit;
-    static constexpr unsigned int auto_cell_limit =
-      std::numeric_limits<unsigned int>::max();
+    /// `Maximum number of cells` (0: no limit), unless it is `auto`.
+    unsigned int max_n_cells     = 0;
+    bool         cell_limit_auto = true;
     /// The limit on the number of cells for refine_and_coarsen_fixed_number.
     unsigned int
                  cell_limit(const Discretization &discretization) const;
