@@ -2,7 +2,10 @@
 # Debian 12 packages liftoff needs: deal.II 9.4 (with Trilinos, PETSc, p4est,
 # MPI, HDF5), MUMPS's parallel C interface (which liftoff calls itself; the
 # deal.II package pulls it in only indirectly, through Trilinos Amesos and
-# PETSc), OpenMPI's launcher, CMake, a compiler, and for the scripts
+# PETSc), OpenBLAS (the dense blocks of the sparse factorisations: a
+# factorisation of the benchmark M takes half the time of the reference
+# BLAS's; the serial build, so MPI ranks do not compete with BLAS threads
+# for the cores), OpenMPI's launcher, CMake, a compiler, and for the scripts
 # numpy, pandas and matplotlib (the study tool, the plots) and h5py (the
 # test of the HDF5 output).
 #   scripts/install-dependencies.sh           what the build and tests need
@@ -11,7 +14,7 @@
 #                                             (about 1 GB; its test is
 #                                             skipped without them)
 set -euo pipefail
-packages=(libdeal.ii-dev libmumps-dev openmpi-bin cmake g++ make python3-numpy
+packages=(libdeal.ii-dev libmumps-dev libopenblas0-serial openmpi-bin cmake g++ make python3-numpy
           python3-pandas python3-matplotlib python3-h5py)
 if [ "${1:-}" = "--viewer" ]; then
   packages+=(python3-paraview xvfb)

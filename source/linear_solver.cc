@@ -110,13 +110,10 @@ namespace liftoff
                                  && cholmod_factorize(lower, factor, &common)
                                  && common.status == CHOLMOD_OK;
       cholmod_free_sparse(&lower, &common);
-      // The supernodal factorisation (dense blocks, BLAS 3) is the faster
-      // one to compute, the simplicial form the faster one to substitute
-      // with: with the reference BLAS of Debian, 2.2 against 2.9 ms on the
-      // benchmark S and 105 against 143 ms on M (doc/performance.md).
-      if (is_factorized && factor->is_super)
-        cholmod_change_factor(
-          CHOLMOD_REAL, true, false, true, true, factor, &common);
+      // The factor stays supernodal (dense blocks): with OpenBLAS its
+      // substitution is the faster one too (M: 48 against 63 ms for the
+      // simplicial form), and converting needs both forms in memory at
+      // once (M: 8 % more peak memory). doc/performance.md, seventh session.
       return is_factorized && common.status == CHOLMOD_OK;
     }
 
