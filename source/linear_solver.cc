@@ -213,6 +213,20 @@ namespace liftoff
                       "1e-12",
                       Patterns::Double(0.0, 1.0),
                       "Relative residual at which CG stops.");
+    prm.declare_entry(
+      "Trial tolerance",
+      "0",
+      Patterns::Double(0.0, 1.0),
+      "Relative residual at which CG stops while the contact set may still "
+      "change: such a solution only decides the next set. Once a set "
+      "holds, the solve is continued to `Tolerance` and the set asked "
+      "again, so the answer keeps `Tolerance`. 1e-6 saves 13 to 32 % of the "
+      "substitutions of the benchmark S and 27 % of the solve time of M, "
+      "but a point whose deflection lies within the trial error of zero "
+      "may take another status than with full solves, which the contact "
+      "tolerance's band then keeps: at round-off the set depends on the "
+      "solver. Values at or below `Tolerance` (the default 0) solve every "
+      "time to `Tolerance`.");
     prm.declare_entry("Maximum iterations",
                       "10000",
                       Patterns::Integer(1),
@@ -230,6 +244,7 @@ namespace liftoff
                              "Linear solver/Direct solver package");
     refactorization_threshold = prm.get_integer("Refactorisation threshold");
     tolerance                 = prm.get_double("Tolerance");
+    trial_tolerance           = prm.get_double("Trial tolerance");
     max_iterations            = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
     AssertThrow(tolerance > 0,
@@ -380,13 +395,21 @@ namespace liftoff
   }
 
 
+  bool
+  LinearSolver::has_looser_trials() const
+  {
+    return trial_tolerance > tolerance;
+  }
+
+
   unsigned int
   LinearSolver::conjugate_gradients(LA::MPI::Vector       &x,
                                     const LA::MPI::Vector &b,
-                                    const unsigned int     max_steps)
+                                    const unsigned int     max_steps,
+                                    const double           relative_tolerance)
   {
     SolverControl             control(max_steps,
-                          std::max(tolerance * b.l2_norm(), 1e-300),
+                          std::max(relative_tolerance * b.l2_norm(), 1e-300),
                           false,
                           false);
     SolverCG<LA::MPI::Vector> cg(control);
@@ -408,13 +431,18 @@ namespace liftoff
 
 
   unsigned int
-  LinearSolver::solve(LA::MPI::Vector &x, const LA::MPI::Vector &b)
+  LinearSolver::solve(LA::MPI::Vector       &x,
+                      const LA::MPI::Vector &b,
+                      const Accuracy         accuracy)
   {
+    const double relative_tolerance = accuracy == Accuracy::trial
+                                        ? std::max(trial_tolerance, tolerance)
+                                        : tolerance;
     Assert(matrix != nullptr, ExcMessage("LinearSolver::prepare() first."));
     if (type == Type::cg)
       {
         SectionTimer::Scope t(timer, "solve");
-        return conjugate_gradients(x, b, max_iterations);
+        return conjugate_gradients(x, b, max_iterations, relative_tolerance);
       }
 
     // With the matrix unchanged since its last solves, CG costs more than
@@ -434,11 +462,11 @@ namespace liftoff
         SectionTimer::Scope t(timer, "solve");
         try
           {
-            const unsigned int n =
-              conjugate_gradients(x, b, refactorization_threshold);
+            const unsigned int n = conjugate_gradients(
+              x, b, refactorization_threshold, relative_tolerance);
             if (cholesky)
               cg_excess_flops +=
-                (n - 1.0) * cholesky->substitution_flops()
+                (std::max(n, 1u) - 1.0) * cholesky->substitution_flops()
                 + (n + 1.0) * 2 * matrix->trilinos_matrix().NumGlobalNonzeros();
             return n;
           }

@@ -9,6 +9,8 @@
 #include <liftoff/linear_solver.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 
+#include <optional>
+
 namespace liftoff
 {
   using namespace dealii;
@@ -131,15 +133,30 @@ namespace liftoff
     /// The solution's copies to its ghosted form, with one import kept.
     GhostUpdate ghosts;
 
+    /// Whether x solves the system to the accuracy it was asked for: a
+    /// `trial` solution is only checked for a set that holds the plate.
     bool
     is_solution_of_system(const LA::MPI::Vector &x,
-                          const LA::MPI::Vector &b) const;
+                          const LA::MPI::Vector &b,
+                          LinearSolver::Accuracy accuracy) const;
 
     /// Bring the matrix in step with the foundation's set and solve.
     void
-    solve_with_current_set(const LA::MPI::Vector &rhs,
-                           LA::MPI::Vector       &solution,
-                           LA::MPI::Vector       &ghosted_solution);
+    solve_with_current_set(
+      const LA::MPI::Vector &rhs,
+      LA::MPI::Vector       &solution,
+      LA::MPI::Vector       &ghosted_solution,
+      LinearSolver::Accuracy accuracy = LinearSolver::Accuracy::final);
+
+    /// solve_with_current_set() and the contact rule applied to the
+    /// solution: the number of statuses changed, or no value when the
+    /// solution is not one of the system (a plate that needs contact has
+    /// lost it). Collective.
+    std::optional<unsigned long>
+    solve_and_update_set(const LA::MPI::Vector &rhs,
+                         LA::MPI::Vector       &solution,
+                         LA::MPI::Vector       &ghosted_solution,
+                         LinearSolver::Accuracy accuracy);
 
     /// No status changed in the last update, and with a start from the
     /// prediction none within the round-off band differs from

@@ -90,11 +90,26 @@ namespace liftoff
     void
     matrix_changed();
 
+    /// How accurate a solve must be: `final` to `Tolerance`; `trial` to
+    /// `Trial tolerance`, for a solution that only decides the next contact
+    /// set (ActiveSetIteration solves to `final` once the set holds).
+    enum class Accuracy
+    {
+      final,
+      trial
+    };
+
     /// Solve A x = b with the matrix given to prepare(); x holds the
     /// initial guess on entry. Returns the CG iterations (0 for a plain
     /// substitution).
     unsigned int
-    solve(LA::MPI::Vector &x, const LA::MPI::Vector &b);
+    solve(LA::MPI::Vector       &x,
+          const LA::MPI::Vector &b,
+          Accuracy               accuracy = Accuracy::final);
+
+    /// Whether a `trial` solve may stop short of a `final` one.
+    bool
+    has_looser_trials() const;
 
     /// The factor in use, for the summary ("CHOLMOD Cholesky", "MUMPS
     /// Cholesky", "MUMPS LU").
@@ -146,6 +161,7 @@ namespace liftoff
     Package      package                   = Package::cholmod;
     bool         has_reported_fallback     = false;
     double       tolerance                 = 1e-12;
+    double       trial_tolerance           = 1e-12;
     unsigned int max_iterations            = 10000;
     unsigned int refactorization_threshold = 8;
 
@@ -176,6 +192,7 @@ namespace liftoff
     unsigned int
     conjugate_gradients(LA::MPI::Vector       &x,
                         const LA::MPI::Vector &b,
-                        const unsigned int     max_steps);
+                        const unsigned int     max_steps,
+                        const double           relative_tolerance);
   };
 } // namespace liftoff
