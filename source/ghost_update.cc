@@ -1,5 +1,6 @@
 #include <liftoff/ghost_update.h>
 
+#include <Epetra_BlockMap.h>
 #include <Epetra_Import.h>
 
 namespace liftoff
@@ -10,13 +11,31 @@ namespace liftoff
   GhostUpdate::~GhostUpdate() = default;
 
 
+  bool
+  GhostUpdate::is_same_layout(const Epetra_BlockMap &source,
+                              const Epetra_BlockMap &target)
+  {
+    for (const KnownLayouts &known : known_layouts)
+      if (known.source->DataPtr() == source.DataPtr()
+          && known.target->DataPtr() == target.DataPtr())
+        return known.same;
+    // The vectors of a run are few (a dozen); a new mesh brings new ones.
+    if (known_layouts.size() >= 16)
+      known_layouts.clear();
+    known_layouts.push_back({std::make_unique<Epetra_BlockMap>(source),
+                             std::make_unique<Epetra_BlockMap>(target),
+                             target.SameAs(source)});
+    return known_layouts.back().same;
+  }
+
+
   void
   GhostUpdate::copy(const LA::MPI::Vector &owned, LA::MPI::Vector &ghosted)
   {
     const Epetra_BlockMap &source = owned.trilinos_vector().Map();
     const Epetra_BlockMap &target = ghosted.trilinos_vector().Map();
     // Vectors of one layout (one rank): a plain copy.
-    if (target.SameAs(source))
+    if (is_same_layout(source, target))
       {
         copy_values(owned, ghosted);
         return;
@@ -26,8 +45,8 @@ namespace liftoff
     // SameAs is collective and its answer the same on every rank, so
     // every rank builds the import or none does.
     const bool is_current = importer != nullptr;
-    if (!(is_current && importer->SourceMap().SameAs(source)
-          && importer->TargetMap().SameAs(target)))
+    if (!(is_current && is_same_layout(importer->SourceMap(), source)
+          && is_same_layout(importer->TargetMap(), target)))
       importer = std::make_unique<Epetra_Import>(target, source);
     const int ierr = ghosted.trilinos_vector().Import(owned.trilinos_vector(),
                                                       *importer,
