@@ -1,7 +1,10 @@
+#include <deal.II/base/utilities.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/initial_conditions.h>
 #include <liftoff/scene_input.h>
+
+#include <cstdlib>
 
 namespace liftoff
 {
@@ -33,6 +36,15 @@ namespace liftoff
         field.text     = prm.get(field.name);
         field.function = parse_expression<2>(
           "Initial conditions/" + field.name, field.text, 3, "x,y", false);
+        field.is_zero = true;
+        for (const std::string &component :
+             Utilities::split_string_list(field.text, ';'))
+          {
+            char        *end   = nullptr;
+            const double value = std::strtod(component.c_str(), &end);
+            field.is_zero &=
+              (end != component.c_str() && *end == '\0' && value == 0.0);
+          }
       }
     prm.leave_subsection();
   }
@@ -43,10 +55,13 @@ namespace liftoff
                                  const Field          &field,
                                  LA::MPI::Vector      &values) const
   {
-    VectorTools::interpolate(disc.mapping,
-                             disc.dof_handler,
-                             *field.function,
-                             values);
+    if (field.is_zero)
+      values = 0;
+    else
+      VectorTools::interpolate(disc.mapping,
+                               disc.dof_handler,
+                               *field.function,
+                               values);
     disc.constraints.distribute(values);
   }
 

@@ -43,6 +43,10 @@ namespace liftoff
     {
       std::string                        name, text;
       std::unique_ptr<FunctionParser<2>> function;
+      /// Every component is the number 0: the field is set to 0 instead of
+      /// interpolated (0.7 s per field at a million unknowns, and a run
+      /// asks up to three times).
+      bool is_zero = false;
     };
     /// Displacement, then velocity.
     std::array<Field, 2> fields;
