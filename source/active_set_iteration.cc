@@ -87,49 +87,58 @@ namespace liftoff
       , foundation(foundation)
       , timer(timer)
       , solver(timer)
-  {}
-
-
-  void
-  ActiveSetIteration::prepare_for_checkpoints()
   {
-    solver.keeps_prepared_values = true;
+    solver.rebuild_matrix = [this]() { rebuild_matrix(); };
   }
 
 
   void
   ActiveSetIteration::save(OutputArchive &archive) const
   {
-    archive << matrix_values(matrix);
+    archive << matrix_values(matrix) << factorised_status;
     solver.save(archive);
   }
 
 
   void
-  ActiveSetIteration::load(InputArchive                &archive,
-                           const LA::MPI::SparseMatrix &B)
+  ActiveSetIteration::load(InputArchive &archive, const BaseMatrix &write)
   {
-    // The same structure as set_base_matrix() builds; the values follow.
-    discretization.reinit_matrix(matrix);
-    matrix.copy_from(B);
+    // The factor is rebuilt from the matrix it was built from, and then
+    // the matrix is given the values it had.
     std::vector<double> current;
-    archive >> current;
+    archive >> current >> factorised_status;
+    write_base = write;
+    discretization.reinit_matrix(matrix);
+    write_base(matrix);
+    foundation.add_to_matrix(factorised_status, matrix);
     solver.load(archive, matrix, discretization);
     set_matrix_values(current, matrix);
   }
 
 
   void
-  ActiveSetIteration::set_base_matrix(const LA::MPI::SparseMatrix &B)
+  ActiveSetIteration::set_base_matrix(const BaseMatrix &write)
   {
     {
       SectionTimer::Scope t(timer, "foundation update");
       solver.release();
+      write_base = write;
       discretization.reinit_matrix(matrix);
-      matrix.copy_from(B);
+      write_base(matrix);
       foundation.add_to_matrix(matrix);
+      factorised_status = foundation.status_in_matrix();
     }
     solver.prepare(matrix, discretization);
+  }
+
+
+  void
+  ActiveSetIteration::rebuild_matrix()
+  {
+    SectionTimer::Scope t(timer, "foundation update");
+    write_base(matrix);
+    factorised_status = foundation.status_in_matrix();
+    foundation.add_to_matrix(factorised_status, matrix);
   }
 
 

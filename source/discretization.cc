@@ -397,7 +397,14 @@ namespace liftoff
 
     Table<2, DoFTools::Coupling> every_component(n_components, n_components);
     every_component.fill(DoFTools::always);
-    make_sparsity_pattern(every_component, sparsity_pattern);
+    // The dynamic pattern (a vector per row) lives only until the
+    // compressed one is built from it.
+    DynamicSparsityPattern pattern;
+    make_sparsity_pattern(every_component, pattern);
+    sparsity_pattern.reinit(locally_owned_dofs,
+                            locally_owned_dofs,
+                            pattern,
+                            mpi_communicator);
   }
 
 
@@ -584,10 +591,7 @@ namespace liftoff
   void
   Discretization::reinit_matrix(LA::MPI::SparseMatrix &matrix) const
   {
-    matrix.reinit(locally_owned_dofs,
-                  locally_owned_dofs,
-                  sparsity_pattern,
-                  mpi_communicator);
+    matrix.reinit(sparsity_pattern);
   }
 
 

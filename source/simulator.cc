@@ -547,7 +547,9 @@ namespace liftoff
     const bool needs_contact    = !discretization.has_kinematic_support();
     active_set.requires_contact = needs_contact;
     foundation.activate_all();
-    active_set.set_base_matrix(matrices.stiffness);
+    active_set.set_base_matrix([this](LA::MPI::SparseMatrix &base) {
+      base.copy_from(matrices.stiffness);
+    });
 
     const auto result = active_set.solve(load, state.u, state.ghosted_u);
     active_set.requires_contact = false;
@@ -645,8 +647,6 @@ namespace liftoff
   void
   Simulator::run_dynamic()
   {
-    if (writes_files())
-      active_set.prepare_for_checkpoints();
     if (resume_step == 0)
       start_from_initial_state();
     else
@@ -748,11 +748,7 @@ namespace liftoff
       SectionTimer::Scope t(timer, "mesh refinement");
       equilibrate(state.step, state.tau, "the acceleration after a new mesh");
     }
-    {
-      LA::MPI::SparseMatrix base;
-      build_base_matrix(base);
-      active_set.set_base_matrix(base);
-    }
+    active_set.set_base_matrix(effective_base_matrix());
     check_time_step();
     state.energies      = energies();
     const double after  = stored();
@@ -784,12 +780,13 @@ namespace liftoff
   }
 
 
-  void
-  Simulator::build_base_matrix(LA::MPI::SparseMatrix &base) const
+  ActiveSetIteration::BaseMatrix
+  Simulator::effective_base_matrix() const
   {
-    discretization.reinit_matrix(base);
-    base.copy_from(matrices.stiffness);
-    base.add(newmark.mass_factor(), matrices.mass);
+    return [this](LA::MPI::SparseMatrix &base) {
+      base.copy_from(matrices.stiffness);
+      base.add(newmark.mass_factor(), matrices.mass);
+    };
   }
 
 
@@ -831,13 +828,7 @@ namespace liftoff
     // The first iterate is the bilateral problem.
     foundation.activate_all();
     foundation.set_matrix_velocity_factor(newmark.velocity_factor());
-    {
-      // The effective matrix without the foundation is needed only to
-      // build the system matrix.
-      LA::MPI::SparseMatrix base;
-      build_base_matrix(base);
-      active_set.set_base_matrix(base);
-    }
+    active_set.set_base_matrix(effective_base_matrix());
     record({});
   }
 
@@ -855,10 +846,8 @@ namespace liftoff
         rebuild_on_new_mesh();
       }
     foundation.set_matrix_velocity_factor(newmark.velocity_factor());
-    LA::MPI::SparseMatrix base;
-    build_base_matrix(base);
     checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
-      serialize(archive, Checkpoint::format, &base);
+      serialize(archive, Checkpoint::format);
     });
     // The dashpots' force of the saved state, for the next step's
     // dissipation.
@@ -1036,9 +1025,7 @@ namespace liftoff
 
   template <class Archive>
   void
-  Simulator::serialize(Archive                     &archive,
-                       const unsigned int           version,
-                       const LA::MPI::SparseMatrix *base)
+  Simulator::serialize(Archive &archive, const unsigned int version)
   {
     // The time loop's whole state, bit for bit: the next step's right-hand
     // side needs the state, its active-set iteration starts from the
@@ -1047,7 +1034,7 @@ namespace liftoff
     archive &state;
     transfer(archive, foundation);
     if constexpr (Archive::is_loading::value)
-      active_set.load(archive, *base);
+      active_set.load(archive, effective_base_matrix());
     else
       active_set.save(archive);
     for (Output *output : outputs)

@@ -556,6 +556,19 @@ namespace liftoff
   void
   TensionlessWinklerFoundation::add_to_matrix(LA::MPI::SparseMatrix &matrix)
   {
+    add_to_matrix(in_contact, matrix);
+    in_matrix = in_contact;
+    points_to_update.clear();
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_to_matrix(
+    const std::vector<unsigned char> &status,
+    LA::MPI::SparseMatrix            &matrix) const
+  {
+    AssertThrow(status.size() == in_contact.size(),
+                ExcMessage("A contact status of another mesh."));
     std::vector<double> weight(n_q_points), layer_weight(n_q_points);
     for (unsigned int c = 0; c < cell_index.size(); ++c)
       {
@@ -563,16 +576,21 @@ namespace liftoff
         for (unsigned int q = 0; q < n_q_points; ++q)
           {
             const unsigned int i = c * n_q_points + q;
-            weight[q]            = in_contact[i] * matrix_stiffness * jxw[i];
-            layer_weight[q]      = in_contact[i] * shear_modulus * jxw[i];
-            any                  = any || in_contact[i];
+            weight[q]            = status[i] * matrix_stiffness * jxw[i];
+            layer_weight[q]      = status[i] * shear_modulus * jxw[i];
+            any                  = any || status[i];
           }
         if (any)
           add_cell_term(c, weight, layer_weight, matrix);
       }
     matrix.compress(VectorOperation::add);
-    in_matrix = in_contact;
-    points_to_update.clear();
+  }
+
+
+  const std::vector<unsigned char> &
+  TensionlessWinklerFoundation::status_in_matrix() const
+  {
+    return in_matrix;
   }
 
 

@@ -9,6 +9,7 @@
 #include <liftoff/linear_solver.h>
 #include <liftoff/tensionless_winkler_foundation.h>
 
+#include <functional>
 #include <optional>
 
 namespace liftoff
@@ -63,10 +64,16 @@ namespace liftoff
                        TensionlessWinklerFoundation &foundation,
                        SectionTimer                 &timer);
 
+    /// Writes the values of B into a matrix of the plate's pattern
+    /// (Discretization::reinit_matrix), replacing all it held.
+    using BaseMatrix = std::function<void(LA::MPI::SparseMatrix &)>;
+
     /// Use B from now on (a new mesh or time step): builds B + K_f(S) for
-    /// the current set and factorises it. B may be destroyed afterwards.
+    /// the current set and factorises it. B is written into the system
+    /// matrix itself, so no second matrix of the plate's size is alive
+    /// while the factor is built (L: 330 MB of the peak).
     void
-    set_base_matrix(const LA::MPI::SparseMatrix &B);
+    set_base_matrix(const BaseMatrix &write_base);
 
     /// Solve; `solution` holds the initial guess on entry and the result
     /// on exit (owned entries, constraints distributed), `ghosted_solution`
@@ -85,19 +92,15 @@ namespace liftoff
     LinearSolver &
     linear_solver();
 
-    /// Keep what save() needs (a copy of the factorised matrix's values).
-    void
-    prepare_for_checkpoints();
-
     /// The system matrix B + K_f(S) as it is, round-off included, and the
-    /// factor the solver holds.
+    /// set of the matrix the solver's factor was built from.
     void
     save(OutputArchive &archive) const;
     /// Instead of set_base_matrix(): the matrix and factor of save(), with
-    /// B giving the structure. The foundation's own status must be loaded
-    /// as well.
+    /// the B that was given to set_base_matrix() then. The foundation's
+    /// own status must be loaded first.
     void
-    load(InputArchive &archive, const LA::MPI::SparseMatrix &B);
+    load(InputArchive &archive, const BaseMatrix &write_base);
 
     unsigned int max_iterations = 50;
     CycleRule    cycle_rule     = CycleRule::union_of_cycle;
@@ -120,10 +123,20 @@ namespace liftoff
     SectionTimer                 &timer;
     /// B + K_f(S), kept in step with S.
     LA::MPI::SparseMatrix matrix;
+    BaseMatrix            write_base;
+    /// The S of the matrix the solver's factor was built from, which
+    /// B + K_f(S) gives again bit for bit (by rebuild_matrix()).
+    std::vector<unsigned char> factorised_status;
     /// Declared after `matrix`: a factorisation must die before its matrix.
     LinearSolver solver;
     /// rhs + f_g(S) when the foundation has a gap.
     LA::MPI::Vector rhs_with_gap;
+
+    /// B + K_f(S) for the S the matrix holds, written afresh (before a
+    /// factorisation: the factor is then of a matrix that can be built
+    /// again from B and S).
+    void
+    rebuild_matrix();
 
     /// The right-hand side of the system for the current set: `rhs`, plus
     /// the springs' push on the gap f_g(S) if the foundation has one (the

@@ -88,8 +88,10 @@ namespace liftoff
     /// outputs keep their own records (a PlateState, the foundation, the
     /// active set, then each output); 4 since the state and every energy
     /// record hold the energy the foundation's dashpots dissipated; 5 since
-    /// history rows hold the mesh size and adaptive runs save their mesh.
-    static constexpr unsigned int format = 6;
+    /// history rows hold the mesh size and adaptive runs save their mesh;
+    /// 7 since the active set keeps the contact status its factor was built
+    /// from instead of a copy of the matrix's values then.
+    static constexpr unsigned int format = 7;
 
     static void
     declare_parameters(ParameterHandler &prm);

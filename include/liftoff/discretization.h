@@ -11,6 +11,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <liftoff/linear_algebra.h>
 #include <liftoff/mindlin_plate.h>
@@ -175,7 +176,9 @@ namespace liftoff
     /// in a cell), or with `coupling` (n_components x n_components) one in
     /// which only the components it names couple: the mass matrix couples
     /// each component with itself only, and a product with it in the
-    /// smaller pattern skips two thirds of the entries.
+    /// smaller pattern skips two thirds of the entries. The matrices of
+    /// the plate's pattern share one Epetra graph (the pattern's), so each
+    /// costs its values only.
     void
     reinit_matrix(LA::MPI::SparseMatrix &matrix) const;
     void
@@ -206,13 +209,13 @@ namespace liftoff
     unsigned int                     fe_degree    = 1;
     TransverseShearStrain::Treatment shear_treatment =
       TransverseShearStrain::Treatment::mitc;
-    Symmetry                     modelled_part = Symmetry::full;
-    unsigned int                 n_cells_x     = 10;
-    unsigned int                 n_cells_y     = 10;
-    unsigned int                 n_refinements = 0;
-    std::array<EdgeCondition, 4> edges;
-    DynamicSparsityPattern       sparsity_pattern;
-    GridTools::Cache<2>          cache;
+    Symmetry                          modelled_part = Symmetry::full;
+    unsigned int                      n_cells_x     = 10;
+    unsigned int                      n_cells_y     = 10;
+    unsigned int                      n_refinements = 0;
+    std::array<EdgeCondition, 4>      edges;
+    TrilinosWrappers::SparsityPattern sparsity_pattern;
+    GridTools::Cache<2>               cache;
 
     /// FE_Serendipity (degree 2) instead of FE_Q(fe_degree).
     bool is_serendipity = false;

@@ -10,6 +10,7 @@
 #include <liftoff/linear_algebra.h>
 
 #include <chrono>
+#include <functional>
 #include <memory>
 
 namespace liftoff
@@ -137,20 +138,21 @@ namespace liftoff
     void
     vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const;
 
-    /// Keep a copy of the values of each matrix given to prepare(), for
-    /// save(). The factor (or preconditioner) of a matrix that has been
-    /// changed in place since is only reproduced from the values it was
-    /// built from: the changes, added and taken away again, leave other
-    /// round-off in the matrix than a fresh assembly would.
-    bool keeps_prepared_values = false;
+    /// Writes the matrix given to prepare() anew from the parts it was
+    /// built from, before each later factorisation of it. Every factor is
+    /// then of a matrix that its owner can build again, and a checkpoint
+    /// keeps those parts instead of a copy of the values (L: 218 MB); the
+    /// matrix as changed in place holds other round-off than a fresh build.
+    /// Without it the matrix is factorised as it is.
+    std::function<void()> rebuild_matrix;
 
-    /// What it takes to continue with the same factor: the values it was
-    /// built from and whether the matrix still equals them.
+    /// What it takes to continue with the same factor, besides the matrix
+    /// it was built from: whether the matrix still equals that one, and
+    /// the count towards the next factorisation.
     void
     save(OutputArchive &archive) const;
-    /// Rebuild the factor of save() for A, which must have the structure
-    /// of the matrix saved from; A is left holding the values the factor
-    /// was built from.
+    /// prepare() with A, which must hold the values the saved factor was
+    /// built from, and the state of save().
     void
     load(InputArchive          &archive,
          LA::MPI::SparseMatrix &A,
@@ -173,7 +175,6 @@ namespace liftoff
     /// Floating-point operations CG has spent since the last factorisation
     /// beyond one substitution per solve (CHOLMOD only).
     double                                          cg_excess_flops = 0;
-    std::vector<double>                             prepared_values;
     SolverControl                                   direct_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
     /// CHOLMOD's factor; kept out of this header.
@@ -187,6 +188,10 @@ namespace liftoff
     void
     report_fallback(const std::string &factorisation);
 
+    /// Factorise the matrix of prepare() again, as rebuild_matrix() writes
+    /// it.
+    void
+    refactorise();
     /// CG to the tolerance in at most `max_steps` iterations; throws
     /// SolverControl::NoConvergence otherwise.
     unsigned int

@@ -307,17 +307,15 @@ namespace liftoff
     void
     stop_if_signalled(const int signal);
 
-    /// K + c M, the effective matrix without the foundation.
-    void
-    build_base_matrix(LA::MPI::SparseMatrix &base) const;
+    /// K + c M, the effective matrix without the foundation, for
+    /// ActiveSetIteration to write into its system matrix.
+    ActiveSetIteration::BaseMatrix
+    effective_base_matrix() const;
     /// The whole state of the time loop, bit for bit, in one list for
-    /// both directions (a checkpoint of format `version`). Loading needs
-    /// the base matrix, which fixes the structure of the system matrix.
+    /// both directions (a checkpoint of format `version`).
     template <class Archive>
     void
-    serialize(Archive                     &archive,
-              const unsigned int           version,
-              const LA::MPI::SparseMatrix *base = nullptr);
+    serialize(Archive &archive, const unsigned int version);
     /// The state's energies (zero unless the history writes them).
     EnergyBalance
     energies();

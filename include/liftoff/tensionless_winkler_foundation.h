@@ -96,6 +96,17 @@ namespace liftoff
     /// and remember that `matrix` now holds it.
     void
     add_to_matrix(LA::MPI::SparseMatrix &matrix);
+    /// Add the K_f of `status` (a contact_status() of this mesh) to
+    /// `matrix`, which then holds no status that update_matrix() knows of:
+    /// to build again a matrix that was built from that status.
+    void
+    add_to_matrix(const std::vector<unsigned char> &status,
+                  LA::MPI::SparseMatrix            &matrix) const;
+
+    /// The status whose K_f the matrix of add_to_matrix() and
+    /// update_matrix() holds.
+    const std::vector<unsigned char> &
+    status_in_matrix() const;
 
     /// Bring the K_f held in `matrix` (by add_to_matrix()) up to date with
     /// the status: only the points that changed are touched. Returns the
