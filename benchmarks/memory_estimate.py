@@ -2,7 +2,7 @@
 """Measured peak memory of liftoff against the estimate that refuses scenes
 too large for the machine (Discretization::estimate_size, doc/reliability.md).
 
-    /usr/bin/python3 benchmarks/memory_estimate.py build/liftoff [--quick]
+    /usr/bin/python3 benchmarks/memory_estimate.py build/liftoff [--quick] [--fit]
 
 Runs a free square plate under a central point force (full model, 2 steps,
 no VTU) over meshes, degrees, solvers and rank counts, reads "peak memory
@@ -18,36 +18,57 @@ import sys
 import tempfile
 
 # Must equal the constants in source/discretization.cc.
-BYTES_PER_CELL, BYTES_PER_DOF, BYTES_PER_ENTRY, BYTES_PER_FACTOR_UNIT = 2550, 170, 88, 120
+BYTES_PER_CELL, BYTES_PER_DOF, BYTES_PER_ENTRY = 510, 1480, 33
+# Per N log2(N) of a symmetric (Cholesky) and of an LU factor.
+BYTES_PER_FACTOR_UNIT = {"cholesky": 32, "lu": 113}
 RANK_IMBALANCE = 1.2
 START_UP_MB = 161.5
 
-CASES = [  # ranks, degree, cells per side, refinements, solver type, package
-    (1, 1, 32, 0, "direct", "mumps"), (1, 1, 64, 0, "direct", "mumps"),
-    (1, 1, 128, 0, "direct", "mumps"), (1, 1, 256, 0, "direct", "mumps"),
-    (1, 1, 400, 0, "direct", "mumps"), (1, 2, 16, 0, "direct", "mumps"),
-    (1, 2, 32, 0, "direct", "mumps"), (1, 2, 64, 0, "direct", "mumps"),
-    (1, 2, 128, 0, "direct", "mumps"), (1, 2, 200, 0, "direct", "mumps"),
-    (1, 3, 64, 0, "direct", "mumps"), (1, 3, 128, 0, "direct", "mumps"),
-    (1, 1, 64, 0, "cg", "mumps"), (1, 1, 256, 0, "cg", "mumps"),
-    (1, 2, 128, 0, "cg", "mumps"), (1, 1, 32, 3, "direct", "mumps"),
-    (1, 1, 400, 0, "cg", "mumps"), (1, 3, 64, 0, "cg", "mumps"),
-    (1, 2, 200, 0, "cg", "mumps"), (2, 1, 256, 0, "direct", "mumps"),
-    (2, 2, 128, 0, "direct", "mumps"), (2, 1, 256, 0, "cg", "mumps"),
-    (1, 1, 256, 0, "direct", "klu"), (2, 1, 256, 0, "direct", "klu"),
+# ranks, degree, cells per side, refinements, solver type, package. The
+# default package is CHOLMOD's Cholesky factor on one rank and MUMPS's on
+# several.
+CASES = [
+    (1, 1, 64, 0, "direct", "cholmod"), (1, 1, 128, 0, "direct", "cholmod"),
+    (1, 1, 256, 0, "direct", "cholmod"), (1, 1, 400, 0, "direct", "cholmod"),
+    (1, 2, 32, 0, "direct", "cholmod"), (1, 2, 64, 0, "direct", "cholmod"),
+    (1, 2, 128, 0, "direct", "cholmod"), (1, 2, 200, 0, "direct", "cholmod"),
+    (1, 3, 64, 0, "direct", "cholmod"), (1, 3, 128, 0, "direct", "cholmod"),
+    (1, 1, 32, 3, "direct", "cholmod"),
+    (1, 1, 64, 0, "cg", "cholmod"), (1, 1, 256, 0, "cg", "cholmod"),
+    (1, 1, 400, 0, "cg", "cholmod"), (1, 2, 128, 0, "cg", "cholmod"),
+    (1, 2, 200, 0, "cg", "cholmod"), (1, 3, 64, 0, "cg", "cholmod"),
+    (1, 1, 256, 0, "direct", "mumps lu"), (1, 2, 128, 0, "direct", "mumps lu"),
+    (1, 1, 400, 0, "direct", "mumps lu"),
+    (1, 1, 256, 0, "direct", "mumps"),
+    (1, 1, 256, 0, "direct", "klu"),
+    (2, 1, 256, 0, "direct", "cholmod"), (2, 2, 128, 0, "direct", "cholmod"),
+    (2, 1, 256, 0, "direct", "mumps lu"), (2, 1, 256, 0, "cg", "cholmod"),
+    (2, 1, 256, 0, "direct", "klu"),
 ]
-QUICK = [CASES[1], CASES[6], CASES[12]]
+QUICK = [CASES[0], CASES[5], CASES[11]]
 
 
-def estimate_mb(ranks, p, n, refinements, solver, package):
+def factor_kind(solver, package):
+    """The factor the estimate charges: none, a Cholesky or an LU factor."""
+    if solver == "cg":
+        return None
+    return "lu" if package in ("mumps lu", "klu") else "cholesky"
+
+
+def counts(p, n, refinements):
     nx = n * 2**refinements
     cells = nx * nx
     dofs = 3 * (p * nx + 1) ** 2
     couplings = ((2*p + 1)**2 + 2*(p - 1)*(2*p + 1)*(p + 1) + (p - 1)**2*(p + 1)**2) / p**2
-    entries = dofs * 3 * couplings
+    return cells, dofs, dofs * 3 * couplings
+
+
+def estimate_mb(ranks, p, n, refinements, solver, package):
+    cells, dofs, entries = counts(p, n, refinements)
     shared = BYTES_PER_CELL * cells + BYTES_PER_DOF * dofs + BYTES_PER_ENTRY * entries
-    factor = 0 if solver == "cg" else BYTES_PER_FACTOR_UNIT * dofs * math.log2(dofs)
-    share = 1 if ranks == 1 or (solver == "direct" and package == "klu") else RANK_IMBALANCE / ranks
+    kind = factor_kind(solver, package)
+    factor = 0 if kind is None else BYTES_PER_FACTOR_UNIT[kind] * dofs * math.log2(dofs)
+    share = 1 if ranks == 1 or package == "klu" and kind else RANK_IMBALANCE / ranks
     return (shared + factor) * share / 2**20, dofs
 
 
@@ -94,6 +115,7 @@ def main():
     print("| ranks | p | cells | refinements | solver | unknowns | measured peak [MB] "
           "| start-up + estimate [MB] | deviation |")
     print("|---|---|---|---|---|---|---|---|---|")
+    one_rank = []
     with tempfile.TemporaryDirectory() as directory:
         for case in cases:
             ranks, p, n, refinements, solver, package = case
@@ -103,6 +125,30 @@ def main():
             print(f"| {ranks} | {p} | {n}x{n} | {refinements} | "
                   f"{'cg' if solver == 'cg' else package} | {dofs} | {measured:.0f} | "
                   f"{total:.0f} | {100 * (total / measured - 1):+.0f} % |", flush=True)
+            if ranks == 1:
+                one_rank.append((case, measured))
+    if "--fit" in sys.argv:
+        fit(one_rank)
+
+
+def fit(runs):
+    """Least squares of the one-rank peaks (less start-up) in relative
+    terms, so small and large scenes weigh alike: bytes per cell, unknown,
+    matrix entry, and per N log2 N of a Cholesky and of an LU factor."""
+    import numpy
+    rows, targets = [], []
+    for (ranks, p, n, refinements, solver, package), measured in runs:
+        cells, dofs, entries = counts(p, n, refinements)
+        kind = factor_kind(solver, package)
+        unit = dofs * math.log2(dofs)
+        row = [cells, dofs, entries, unit if kind == "cholesky" else 0,
+               unit if kind == "lu" else 0]
+        target = (measured - START_UP_MB) * 2**20
+        rows.append([x / target for x in row])
+        targets.append(1.0)
+    constants, *_ = numpy.linalg.lstsq(numpy.array(rows), numpy.array(targets), rcond=None)
+    print("fit: bytes per cell, unknown, matrix entry, Cholesky and LU factor unit:",
+          " ".join(f"{c:.0f}" for c in constants))
 
 
 if __name__ == "__main__":

@@ -43,15 +43,20 @@ namespace liftoff
                                              {"mitc", Treatment::mitc}};
 
     // What the memory estimate charges, fitted to the peak memory of runs
-    // of 3e3 to 5e5 unknowns with p = 1, 2, 3 on one rank
-    // (doc/reliability.md): per cell (mesh, quadrature data of the
-    // foundation), per unknown (vectors, DoF maps), per matrix entry (the
-    // sparsity pattern and the matrices) and per N log2(N) of a direct
-    // factor (nested dissection of a 2D mesh fills in like N log N).
-    constexpr double bytes_per_cell         = 2550;
-    constexpr double bytes_per_dof          = 170;
-    constexpr double bytes_per_matrix_entry = 88;
-    constexpr double bytes_per_factor_unit  = 120;
+    // of 1e4 to 5e5 unknowns with p = 1, 2, 3 on one rank
+    // (doc/reliability.md, benchmarks/memory_estimate.py --fit): per cell
+    // (mesh, quadrature data of the foundation), per unknown (vectors, DoF
+    // maps), per matrix entry (the shared sparsity pattern and the
+    // matrices' values) and per N log2(N) of a direct factor (nested
+    // dissection of a 2D mesh fills in like N log N), a symmetric one
+    // (CHOLMOD, MUMPS Cholesky) or an LU factor (MUMPS, KLU). The per-unknown
+    // and per-entry figures trade off (entries grow with unknowns for a
+    // given degree); together they fit within -8 % and +12 %.
+    constexpr double bytes_per_cell          = 510;
+    constexpr double bytes_per_dof           = 1480;
+    constexpr double bytes_per_matrix_entry  = 33;
+    constexpr double bytes_per_cholesky_unit = 32;
+    constexpr double bytes_per_lu_unit       = 113;
     // The largest of several ranks holds more than its share: 0.6 of the
     // total on two ranks, measured.
     constexpr double rank_imbalance = 1.2;
@@ -107,7 +112,6 @@ namespace liftoff
       : mpi_communicator(comm)
       , triangulation(comm)
       , dof_handler(triangulation)
-      , cache(triangulation, mapping)
   {
     edges.fill(EdgeCondition::free);
   }
@@ -253,13 +257,14 @@ namespace liftoff
                           + bytes_per_dof * estimate.n_dofs
                           + bytes_per_matrix_entry * estimate.n_matrix_entries;
     const double factor_bytes =
-      factor == Factor::none
-        ? 0.0
-        : bytes_per_factor_unit * estimate.n_dofs * std::log2(estimate.n_dofs);
+      (factor == Factor::none       ? 0.0
+       : factor == Factor::cholesky ? bytes_per_cholesky_unit
+                                    : bytes_per_lu_unit)
+      * estimate.n_dofs * std::log2(estimate.n_dofs);
     // KLU gathers the matrix and its factor on rank 0, which then holds
     // about what a single rank would (1228 MB on 2 ranks, 1248 MB on 1,
     // measured).
-    const double share       = (n_ranks == 1 || factor == Factor::on_rank_0)
+    const double share       = (n_ranks == 1 || factor == Factor::lu_on_rank_0)
                                  ? 1.0
                                  : rank_imbalance / n_ranks;
     estimate.memory_per_rank = (shared + factor_bytes) * share;
@@ -499,7 +504,16 @@ namespace liftoff
   const GridTools::Cache<2> &
   Discretization::grid_cache() const
   {
-    return cache;
+    if (!cache)
+      cache = std::make_unique<GridTools::Cache<2>>(triangulation, mapping);
+    return *cache;
+  }
+
+
+  void
+  Discretization::release_grid_cache() const
+  {
+    cache.reset();
   }
 
 

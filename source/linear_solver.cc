@@ -262,8 +262,10 @@ namespace liftoff
   {
     if (type == Type::cg)
       return Discretization::Factor::none;
-    return package == Package::klu ? Discretization::Factor::on_rank_0
-                                   : Discretization::Factor::distributed;
+    if (package == Package::klu)
+      return Discretization::Factor::lu_on_rank_0;
+    return package == Package::mumps_lu ? Discretization::Factor::lu
+                                        : Discretization::Factor::cholesky;
   }
 
 

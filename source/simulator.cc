@@ -444,6 +444,8 @@ namespace liftoff
     has_taken_over_output = (start != Start::resume);
     for (Output *output : outputs)
       output->setup(discretization, output_directory);
+    // Every point of the scene has found its cell.
+    discretization.release_grid_cache();
     run_analysis();
   }
 
@@ -709,6 +711,7 @@ namespace liftoff
     state.ghosted_u = state.u;
     for (Output *output : outputs)
       output->mesh_changed(discretization);
+    discretization.release_grid_cache();
     largest_eigenvalue = 0;
   }
 

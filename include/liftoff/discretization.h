@@ -53,13 +53,16 @@ namespace liftoff
   class Discretization
   {
   public:
-    /// Where a direct solver keeps its factor: none (CG and AMG), spread
-    /// over the ranks (MUMPS) or on rank 0 (KLU).
+    /// The factor of a direct solver, for the memory estimate: none (CG and
+    /// AMG), a Cholesky factor (CHOLMOD on one rank, MUMPS spread over the
+    /// ranks), an LU factor spread over the ranks (MUMPS) or an LU factor
+    /// on rank 0 (KLU).
     enum class Factor
     {
       none,
-      distributed,
-      on_rank_0
+      cholesky,
+      lu,
+      lu_on_rank_0
     };
 
     /// The size of the discretization the parameters ask for, known
@@ -191,9 +194,13 @@ namespace liftoff
 
     /// The search trees of the mesh, for finding the cells around points
     /// (GridTools::find_active_cell_around_point); built when first asked
-    /// for and kept until the mesh changes.
+    /// for, kept until release_grid_cache().
     const GridTools::Cache<2> &
     grid_cache() const;
+    /// Free the search trees once the scene's points are found (L: 64 MB
+    /// of vertex-to-cell maps that the time loop does not use).
+    void
+    release_grid_cache() const;
 
     MPI_Comm                                mpi_communicator;
     parallel::distributed::Triangulation<2> triangulation;
@@ -209,13 +216,13 @@ namespace liftoff
     unsigned int                     fe_degree    = 1;
     TransverseShearStrain::Treatment shear_treatment =
       TransverseShearStrain::Treatment::mitc;
-    Symmetry                          modelled_part = Symmetry::full;
-    unsigned int                      n_cells_x     = 10;
-    unsigned int                      n_cells_y     = 10;
-    unsigned int                      n_refinements = 0;
-    std::array<EdgeCondition, 4>      edges;
-    TrilinosWrappers::SparsityPattern sparsity_pattern;
-    GridTools::Cache<2>               cache;
+    Symmetry                                     modelled_part = Symmetry::full;
+    unsigned int                                 n_cells_x     = 10;
+    unsigned int                                 n_cells_y     = 10;
+    unsigned int                                 n_refinements = 0;
+    std::array<EdgeCondition, 4>                 edges;
+    TrilinosWrappers::SparsityPattern            sparsity_pattern;
+    mutable std::unique_ptr<GridTools::Cache<2>> cache;
 
     /// FE_Serendipity (degree 2) instead of FE_Q(fe_degree).
     bool is_serendipity = false;
