@@ -51,7 +51,8 @@ namespace liftoff
     // dissection of a 2D mesh fills in like N log N), a symmetric one
     // (CHOLMOD, MUMPS Cholesky) or an LU factor (MUMPS, KLU). The per-unknown
     // and per-entry figures trade off (entries grow with unknowns for a
-    // given degree); together they fit within -8 % and +12 %.
+    // given degree); together they fit the one-rank runs within -8 % and
+    // +12 %, the two-rank ones within -12 % and +6 %.
     constexpr double bytes_per_cell          = 510;
     constexpr double bytes_per_dof           = 1480;
     constexpr double bytes_per_matrix_entry  = 33;

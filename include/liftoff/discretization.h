@@ -197,8 +197,8 @@ namespace liftoff
     /// for, kept until release_grid_cache().
     const GridTools::Cache<2> &
     grid_cache() const;
-    /// Free the search trees once the scene's points are found (L: 64 MB
-    /// of vertex-to-cell maps that the time loop does not use).
+    /// Free the search trees once the scene's points are found: the time
+    /// loop does not use them (L, p = 1: 248 MB of the peak).
     void
     release_grid_cache() const;
 
