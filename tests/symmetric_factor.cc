@@ -6,7 +6,7 @@
 // lift-off: the plate of the symmetry tests (many set changes per step) and
 // the paper's Example 2 beam under its pulsating force (a set that changes
 // seldom, where CHOLMOD factorises again instead of iterating CG). So must
-// CHOLMOD's factor with trial solves (`Trial tolerance`).
+// CHOLMOD's factor with trial solves (`Trial tolerance`, the default).
 
 #include "symmetric_scene.h"
 #include "test_tools.h"
@@ -48,13 +48,18 @@ main(int argc, char **argv)
         return liftoff_tests::run_scene(scene + "subsection Linear solver\n"
                                         + settings + "end\n");
       };
-      const auto cholmod = solver(" set Direct solver package = cholmod\n");
-      const auto mumps   = solver(" set Direct solver package = mumps lu\n");
+      // Every solve to `Tolerance`, except in `trials` (the default).
+      const std::string full = " set Trial tolerance = 0\n";
+      const auto        cholmod =
+        solver(full + " set Direct solver package = cholmod\n");
+      const auto mumps =
+        solver(full + " set Direct solver package = mumps lu\n");
       const auto mumps_cholesky =
-        solver(" set Direct solver package = mumps\n");
-      const auto        fresh  = solver(" set Direct solver package = klu\n"
-                                        " set Refactorisation threshold = 0\n");
-      const auto        trials = solver(" set Trial tolerance = 1e-6\n");
+        solver(full + " set Direct solver package = mumps\n");
+      const auto        fresh  = solver(full
+                                + " set Direct solver package = klu\n"
+                                          " set Refactorisation threshold = 0\n");
+      const auto        trials = solver("");
       const std::string what   = std::string(name) + ": ";
       checks.within(what + "CHOLMOD's Cholesky factor is the one used",
                     cholmod->linear_solver().factor_name()

@@ -171,15 +171,15 @@ namespace liftoff
                          LA::MPI::Vector       &ghosted_solution,
                          LinearSolver::Accuracy accuracy);
 
-    /// No status changed in the last update, and with a start from the
-    /// prediction none within the round-off band differs from
-    /// `previous_set` (those are restored). Collective.
+    /// No status changed in the last update, and none within the round-off
+    /// band differs from `start_set`, the set the step began with (those
+    /// are restored). Collective.
     bool
     has_settled(const unsigned long               n_changed,
-                const std::vector<unsigned char> &previous_set);
+                const std::vector<unsigned char> &start_set);
     /// Give the foundation the set the contact rule gives the prediction
-    /// (ghosted_solution is set to it); returns the set it had before.
-    std::vector<unsigned char>
+    /// (ghosted_solution is set to it).
+    void
     start_from_prediction(const LA::MPI::Vector &prediction,
                           LA::MPI::Vector       &ghosted_solution);
     /// Solve with the union of the sets visited[first], ... (a cycle).

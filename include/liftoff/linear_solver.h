@@ -163,7 +163,7 @@ namespace liftoff
     Package      package                   = Package::cholmod;
     bool         has_reported_fallback     = false;
     double       tolerance                 = 1e-12;
-    double       trial_tolerance           = 1e-12;
+    double       trial_tolerance           = 1e-6;
     unsigned int max_iterations            = 10000;
     unsigned int refactorization_threshold = 8;
 
