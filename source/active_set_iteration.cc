@@ -325,7 +325,8 @@ namespace liftoff
         std::optional<unsigned long> n_changed =
           solve_and_update_set(rhs, solution, ghosted_solution, accuracy);
         if (n_changed && *n_changed == 0
-            && accuracy == LinearSolver::Accuracy::trial)
+            && accuracy == LinearSolver::Accuracy::trial
+            && !solver.last_solve_met_tolerance())
           n_changed = solve_and_update_set(rhs,
                                            solution,
                                            ghosted_solution,

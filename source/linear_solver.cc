@@ -387,14 +387,22 @@ namespace liftoff
   }
 
 
+  bool
+  LinearSolver::last_solve_met_tolerance() const
+  {
+    return met_tolerance;
+  }
+
+
   unsigned int
   LinearSolver::conjugate_gradients(LA::MPI::Vector       &x,
                                     const LA::MPI::Vector &b,
                                     const unsigned int     max_steps,
                                     const double           relative_tolerance)
   {
+    const double              b_norm = b.l2_norm();
     SolverControl             control(max_steps,
-                          std::max(relative_tolerance * b.l2_norm(), 1e-300),
+                          std::max(relative_tolerance * b_norm, 1e-300),
                           false,
                           false);
     SolverCG<LA::MPI::Vector> cg(control);
@@ -411,6 +419,9 @@ namespace liftoff
         throw;
       }
     n_cg_iterations += control.last_step();
+    // The residual norm is CG's reduction over all ranks: every rank
+    // decides alike.
+    met_tolerance = control.last_value() <= tolerance * b_norm;
     return control.last_step();
   }
 
@@ -465,6 +476,7 @@ namespace liftoff
       refactorise();
     SectionTimer::Scope t(timer, "solve");
     vmult(x, b);
+    met_tolerance = true;
     return 0;
   }
 

@@ -112,6 +112,11 @@ namespace liftoff
     bool
     has_looser_trials() const;
 
+    /// Whether the last solve met `Tolerance`, as a substitution with a
+    /// factor of the matrix itself does even when a trial was asked for.
+    bool
+    last_solve_met_tolerance() const;
+
     /// The factor in use, for the summary ("CHOLMOD Cholesky", "MUMPS
     /// Cholesky", "MUMPS LU").
     std::string
@@ -172,6 +177,8 @@ namespace liftoff
     const LA::MPI::SparseMatrix *matrix         = nullptr;
     /// The factor belongs to the matrix as it is now.
     bool factor_is_exact = false;
+    /// See last_solve_met_tolerance().
+    bool met_tolerance = false;
     /// Floating-point operations CG has spent since the last factorisation
     /// beyond one substitution per solve (CHOLMOD only).
     double                                          cg_excess_flops = 0;
