@@ -425,6 +425,10 @@ namespace liftoff
     flags.cycle                    = step;
     flags.write_higher_order_cells = higher_order_cells;
     flags.physical_units           = field_units;
+    // zlib's fastest level: its best compression was a third of the
+    // writing time (Example 2 pulse, 100 files) for files about 10 %
+    // smaller.
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
 
     const MPI_Comm    comm = disc.mpi_communicator;

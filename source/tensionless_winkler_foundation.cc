@@ -136,6 +136,7 @@ namespace liftoff
                                                                     : update_default));
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     cell_w_dof_indices.clear();
+    local_positions.clear();
     cell_w_dof_is_constrained.clear();
     cell_has_hanging_node.clear();
     cell_index.clear();
@@ -387,17 +388,46 @@ namespace liftoff
   }
 
 
+  const int *
+  TensionlessWinklerFoundation::positions_in(const LA::MPI::Vector &u) const
+  {
+    const Epetra_BlockMap &map = u.trilinos_vector().Map();
+    for (const auto &known : local_positions)
+      if (known.map->DataPtr() == map.DataPtr())
+        return known.positions.data();
+    // The program's ghosted vectors come in a few layouts (solution,
+    // velocity, scratch); a few more would mean layouts made per call.
+    if (local_positions.size() == 4)
+      local_positions.erase(local_positions.begin());
+    LocalPositions known;
+    known.map = std::make_unique<Epetra_BlockMap>(map);
+    known.positions.reserve(cell_w_dof_indices.size());
+    for (const auto index : cell_w_dof_indices)
+      {
+        const int position = map.LID(static_cast<int>(index));
+        AssertThrow(position >= 0,
+                    ExcMessage("The foundation reads w_h from a vector "
+                               "without the ghost entries of its cells."));
+        known.positions.push_back(position);
+      }
+    local_positions.push_back(std::move(known));
+    return local_positions.back().positions.data();
+  }
+
+
   void
   TensionlessWinklerFoundation::deflection_at_gauss_points(
     const LA::MPI::Vector &u,
     const unsigned int     c,
     std::vector<double>   &w) const
   {
-    const unsigned int n_w = w_dofs.size();
+    const unsigned int n_w       = w_dofs.size();
+    const int         *positions = positions_in(u) + c * n_w;
+    const double      *values    = u.trilinos_vector()[0];
     w.assign(n_q_points, 0.0);
     for (unsigned int k = 0; k < n_w; ++k)
       {
-        const double u_k = u(cell_w_dof_indices[c * n_w + k]);
+        const double u_k = values[positions[k]];
         for (unsigned int q = 0; q < n_q_points; ++q)
           w[q] += shape_values(q, k) * u_k;
       }
@@ -686,11 +716,13 @@ namespace liftoff
     const unsigned int         c,
     std::vector<Tensor<1, 2>> &gradient) const
   {
-    const unsigned int n_w = w_dofs.size();
+    const unsigned int n_w       = w_dofs.size();
+    const int         *positions = positions_in(u) + c * n_w;
+    const double      *values    = u.trilinos_vector()[0];
     gradient.assign(n_q_points, Tensor<1, 2>());
     for (unsigned int k = 0; k < n_w; ++k)
       {
-        const double u_k = u(cell_w_dof_indices[c * n_w + k]);
+        const double u_k = values[positions[k]];
         for (unsigned int q = 0; q < n_q_points; ++q)
           gradient[q] += u_k * shape_gradients[(c * n_q_points + q) * n_w + k];
       }

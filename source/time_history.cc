@@ -6,6 +6,8 @@
 
 #include <liftoff/time_history.h>
 
+#include <charconv>
+
 #include <iomanip>
 
 namespace liftoff
@@ -213,28 +215,58 @@ namespace liftoff
   }
 
 
+  namespace
+  {
+    /// `value` as a stream of precision 12 writes it (printf's %.12g), by
+    /// std::to_chars: the stream's formatting took 7 % of the Example 2
+    /// pulse's run (20 000 rows).
+    void
+    put(std::ostream &out, const double value)
+    {
+      char       text[32];
+      const auto end = std::to_chars(std::begin(text),
+                                     std::end(text),
+                                     value,
+                                     std::chars_format::general,
+                                     12)
+                         .ptr;
+      out.write(text, end - text);
+    }
+
+
+    void
+    put(std::ostream &out, const std::initializer_list<double> values)
+    {
+      for (const double value : values)
+        {
+          out << ',';
+          put(out, value);
+        }
+    }
+  } // namespace
+
+
   void
   TimeHistory::write_row(const Row &row)
   {
     std::ostream &out = file.stream();
-    out << std::setprecision(12) << row.tau;
+    put(out, row.tau);
     for (const double value : row.probe_w)
-      out << ',' << value;
-    out << ',' << row.contact_fraction << ',' << row.max_uplift << ','
-        << row.iterations << ',' << row.cycle_length << ',' << row.n_cells
-        << ',' << row.n_dofs;
+      put(out, {value});
+    put(out, {row.contact_fraction, row.max_uplift});
+    out << ',' << row.iterations << ',' << row.cycle_length << ','
+        << row.n_cells << ',' << row.n_dofs;
     if (write_energies)
       {
         const EnergyBalance &e = row.energies;
-        out << ',' << e.kinetic << ',' << e.strain << ',' << e.foundation << ','
-            << e.work;
+        put(out, {e.kinetic, e.strain, e.foundation, e.work});
         if (write_dissipated)
-          out << ',' << e.dissipated;
-        out << ',' << row.balance_error;
+          put(out, {e.dissipated});
+        put(out, {row.balance_error});
       }
     if (write_resultant)
-      out << ',' << row.resultant << ',' << row.resultant_x << ','
-          << row.resultant_y << ',' << row.contact_area;
+      put(out,
+          {row.resultant, row.resultant_x, row.resultant_y, row.contact_area});
     out << '\n';
   }
 

@@ -317,6 +317,24 @@ namespace liftoff
                   const FullMatrix<double> &cell_matrix,
                   LA::MPI::SparseMatrix    &matrix) const;
 
+    /// Where the entries of cell_w_dof_indices sit in the local storage
+    /// (owned and ghost entries) of ghosted vectors of one layout. Epetra
+    /// finds a global index in a ghosted layout through a hash table, which
+    /// made up most of a contact update (one lookup per cell and w dof).
+    /// Kept per layout: the copy of the map holds Epetra's map data, so its
+    /// address, which identifies the layout, cannot pass to another map.
+    struct LocalPositions
+    {
+      std::unique_ptr<Epetra_BlockMap> map;
+      std::vector<int>                 positions;
+    };
+    mutable std::vector<LocalPositions> local_positions;
+
+    /// The positions of cell_w_dof_indices in the storage of u, which
+    /// must hold every one of them (a ghosted vector).
+    const int *
+    positions_in(const LA::MPI::Vector &u) const;
+
     /// w_h at the Gauss points of owned cell c.
     void
     deflection_at_gauss_points(const LA::MPI::Vector &ghosted_solution,
