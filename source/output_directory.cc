@@ -26,6 +26,11 @@ namespace liftoff
 
     const std::string lock_name = "liftoff.lock";
 
+    /// What the lock file holds back for the summary files (each a few
+    /// hundred bytes, written under a temporary name first): two blocks of
+    /// up to 8 KiB.
+    constexpr off_t summary_space = 16 * 1024;
+
     // The names that Simulator, RunSummary, TimeHistory, ProfileOutput,
     // FieldOutput and Checkpoint write, with their temporary names
     // (write_file_atomically).
@@ -80,6 +85,22 @@ namespace liftoff
       return gethostname(name, sizeof(name) - 1) == 0 ? name : "unknown";
     }
 
+    /// Name this process in the lock file, for the message of a refused
+    /// run; the lock holds without it (a full disk). Whatever the file held
+    /// goes, and with it the space kept for the summary.
+    void
+    write_holder(const int descriptor)
+    {
+      const std::string holder =
+        "pid " + std::to_string(getpid()) + " on host " + host_name() + "\n";
+      const bool is_written =
+        ftruncate(descriptor, 0) == 0
+        && pwrite(descriptor, holder.data(), holder.size(), 0)
+             == static_cast<ssize_t>(holder.size());
+      (void)is_written;
+    }
+
+
     /// Lock `folder`/liftoff.lock and write pid and host into it; returns
     /// the descriptor that holds the lock.
     int
@@ -124,15 +145,7 @@ namespace liftoff
           if (fstat(descriptor, &opened) == 0 && stat(name.c_str(), &named) == 0
               && opened.st_ino == named.st_ino && opened.st_dev == named.st_dev)
             {
-              // Who holds it, for the message of a refused run; the lock
-              // holds without it (a full disk).
-              const std::string holder = "pid " + std::to_string(getpid())
-                                         + " on host " + host_name() + "\n";
-              const bool is_written =
-                ftruncate(descriptor, 0) == 0
-                && pwrite(descriptor, holder.data(), holder.size(), 0)
-                     == static_cast<ssize_t>(holder.size());
-              (void)is_written;
+              write_holder(descriptor);
               return descriptor;
             }
           close(descriptor);
@@ -158,7 +171,38 @@ namespace liftoff
                            fs::create_directories(path);
                          if (fs::is_directory(path))
                            lock_descriptor = lock(path);
+                         keep_space_for_summary();
                        });
+  }
+
+
+  void
+  OutputDirectory::keep_space_for_summary()
+  {
+    if (lock_descriptor < 0)
+      return;
+    // Blocks allocated beyond the end of the lock file: it still reads as
+    // the holder's line. File systems without fallocate(2) (NFS) keep
+    // nothing back.
+    if (fallocate(lock_descriptor, FALLOC_FL_KEEP_SIZE, 0, summary_space) == 0
+        || errno != ENOSPC)
+      return;
+    unlink((path + "/" + lock_name).c_str());
+    close(lock_descriptor);
+    lock_descriptor = -1;
+    AssertThrow(false,
+                ExcMessage("its disk has less than "
+                           + std::to_string(summary_space / 1024)
+                           + " KiB free, which a run keeps for summary.txt "
+                             "and summary.json until it ends."));
+  }
+
+
+  void
+  OutputDirectory::release_space_for_summary() const
+  {
+    if (lock_descriptor >= 0)
+      write_holder(lock_descriptor);
   }
 
 

@@ -1125,7 +1125,11 @@ namespace liftoff
 
     pcout << summary.text();
     if (writes_files())
-      summary.write(output_directory, mpi_communicator);
+      {
+        if (output_folder)
+          output_folder->release_space_for_summary();
+        summary.write(output_directory, mpi_communicator);
+      }
   }
 
 

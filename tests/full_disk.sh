@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # A full disk in the middle of a run, on N_RANKS ranks (1 by default):
 # liftoff writes into a small tmpfs that fills
-# - while a VTU piece is written (200 kB, fields every 20 steps), or
+# - while a VTU piece is written (200 kB, fields every 20 steps),
 # - while rank 0 alone writes history.csv (64 kB, no fields, no
-#   checkpoints, history rows for 2000 steps: about 240 kB).
+#   checkpoints, history rows for 2000 steps: about 240 kB), or
+# - because another program fills it (dd) once history.csv has been
+#   written: the summary must still fit (liftoff holds space back for it).
+#   Without that, whether it fits depended on how many rows the first
+#   write held, that is on the machine's speed.
 # Every rank must stop (exit code 1 within the 60 s `timeout` allows; a
 # hang ends with 124) with a message that names the file and the cause,
 # leave no temporary file, and keep every file it has complete: the history
@@ -34,7 +38,10 @@ fill() {
   umount "$disk"
   mount -t tmpfs -o size="$1" tmpfs "$disk"
   printf '%s\n' "${@:4}" > scene.prm
-  "${run[@]}" scene.prm >stdout.txt 2>stderr.txt
+  "${run[@]}" scene.prm >stdout.txt 2>stderr.txt &
+  pid=$!
+  [ -z "${fill_from_outside:-}" ] || fill_once_history_is_written
+  wait "$pid"
   status=$?
   cat stderr.txt
   [ "$status" -eq 1 ]; check $? "$2: exit code 1 ($status; 124 = hang)"
@@ -43,6 +50,14 @@ fill() {
   grep -q '^status: failed' "$disk/out/summary.txt"; check $? "$2: summary.txt says failed"
   [ ! -e "$disk/out/history.csv" ] || history_is_complete "$disk/out"
   check $? "$2: every row of history.csv (if any) has ${n_columns:-all} columns"
+}
+# Another program takes every free block once history.csv is there.
+fill_once_history_is_written() {
+  while kill -0 "$pid" 2>/dev/null && [ ! -e "$disk/out/history.csv" ]; do
+    sleep 0.05
+  done
+  dd if=/dev/zero of="$disk/filler" bs=4k 2>/dev/null
+  echo "filled from outside: $(df -k --output=avail "$disk" | tail -1) KiB left"
 }
 plate=('subsection Loads' '  subsection Point load 1' '    set Magnitude = 1' '  end' 'end')
 
@@ -61,4 +76,26 @@ fill 64k "history.csv" 'history\.csv failed \(disk full' \
   'subsection Time integration' '  set Time step = 1e-4' '  set End time = 0.2' 'end' \
   "subsection Output" "  set Directory = $disk/out" '  set VTU interval = 0' 'end' \
   'subsection Checkpoint' '  set Interval = 0' '  set Wall time interval = 0' 'end'
+
+# A disk without the space for the summary is refused before anything is
+# written.
+umount "$disk"
+mount -t tmpfs -o size=12k tmpfs "$disk"
+printf '%s\n' "${plate[@]}" "subsection Output" "  set Directory = $disk/out" 'end' > scene.prm
+"${run[@]}" scene.prm >stdout.txt 2>stderr.txt
+status=$?
+[ "$status" -eq 1 ] && grep -q 'Output/Directory = .* less than 16 KiB free' stderr.txt &&
+  [ -z "$(ls -A "$disk/out")" ]
+check $? "a disk with 12 KiB: refused ($status) with a message naming Output/Directory, nothing written"
+
+# About 50 000 steps: far longer than the 1 s before the first write.
+fill_from_outside=1
+fill 16m "filled from outside" 'history\.csv failed \(disk full' \
+  'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 8' \
+  '  set Cells along y = 8' '  set Polynomial degree = 2' 'end' "${plate[@]}" \
+  'subsection Time integration' '  set Time step = 1e-4' '  set End time = 5' 'end' \
+  "subsection Output" "  set Directory = $disk/out" '  set VTU interval = 0' 'end' \
+  'subsection Checkpoint' '  set Interval = 0' '  set Wall time interval = 0' 'end'
+[ -s "$disk/out/history.csv" ]
+check $? "filled from outside: history.csv keeps the rows written before"
 finish

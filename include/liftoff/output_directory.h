@@ -17,7 +17,10 @@ namespace liftoff
    * behind does not count; another liftoff (a second run, a resume) is
    * refused with the holder's pid and host while it is held. On a file
    * system without flock the run goes on with a warning that the folder is
-   * unguarded.
+   * unguarded. The lock file also holds back 16 KiB of disk (allocated
+   * beyond its end) until the summary is written, so that a disk that fills
+   * during the run still takes the summary saying that the run failed; a
+   * disk with less free space is refused at the start.
    *
    * liftoff's entries are the files it writes (used_parameters.prm,
    * summary.txt, history.csv, profiles.csv, solution.pvd,
@@ -68,11 +71,23 @@ namespace liftoff
     void
     remove_fields_after(const unsigned int step) const;
 
+    /// Give back the disk space held for the summary since the folder was
+    /// locked, just before the summary is written: a disk that another
+    /// program (or the run's own files) filled meanwhile still takes a
+    /// summary that says the run failed. Rank 0 only; no communication.
+    void
+    release_space_for_summary() const;
+
   private:
     std::string path;
     MPI_Comm    comm;
     /// The locked file's descriptor on rank 0, or -1.
     int lock_descriptor = -1;
+
+    /// Allocate the summary's space in the lock file (rank 0); refuse a
+    /// disk without it.
+    void
+    keep_space_for_summary();
 
     /// liftoff's entries of the folder, relative to it (rank 0).
     std::vector<std::string>
