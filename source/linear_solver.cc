@@ -1,156 +1,19 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/solver_cg.h>
 
+#include <liftoff/cholesky_factor.h>
 #include <liftoff/linear_solver.h>
 #include <liftoff/mumps_cholesky_factor.h>
 #include <liftoff/selection.h>
 
 #include <Epetra_Comm.h>
 #include <Epetra_CrsMatrix.h>
-#include <cholmod.h>
 
 #include <algorithm>
 #include <tuple>
 
 namespace liftoff
 {
-  /**
-   * CHOLMOD's sparse Cholesky factor of a symmetric positive definite
-   * matrix held on one rank, with its fill-reducing ordering (AMD or
-   * METIS, CHOLMOD's choice). A substitution reuses the workspace of the
-   * previous one, so it allocates nothing.
-   */
-  class LinearSolver::CholeskyFactor
-  {
-  public:
-    CholeskyFactor()
-    {
-      cholmod_start(&common);
-      // Errors are reported through `common.status`, not printed.
-      common.print         = 0;
-      common.error_handler = nullptr;
-    }
-
-    ~CholeskyFactor()
-    {
-      for (cholmod_dense **d : {&x, &y, &e})
-        cholmod_free_dense(d, &common);
-      cholmod_free_factor(&factor, &common);
-      cholmod_finish(&common);
-    }
-
-    CholeskyFactor(const CholeskyFactor &) = delete;
-    CholeskyFactor &
-    operator=(const CholeskyFactor &) = delete;
-
-    // A view of A's own arrays in CHOLMOD's form. On one rank the rows
-    // and columns are numbered 0, ..., n-1 in order, and A is symmetric,
-    // so its rows are its columns: row i's entries with column j >= i (the
-    // upper triangle by rows) are column i of the lower triangle, which is
-    // all CHOLMOD reads with stype -1. Nothing is copied (L: 170 MB).
-    static cholmod_sparse
-    lower_triangle_view(const Epetra_CrsMatrix &A)
-    {
-      const Epetra_Map &columns = A.ColMap();
-      AssertThrow(A.StorageOptimized() && A.RowMap().LinearMap()
-                    && A.RowMap().MinMyGID() == 0 && columns.LinearMap()
-                    && columns.MinMyGID() == 0
-                    && columns.NumMyElements() == A.NumMyRows(),
-                  ExcMessage("CHOLMOD needs the whole matrix on one rank in "
-                             "Epetra's packed storage, numbered in order."));
-      int    *offsets = nullptr;
-      int    *indices = nullptr;
-      double *values  = nullptr;
-      A.ExtractCrsDataPointers(offsets, indices, values);
-      cholmod_sparse view{};
-      view.nrow  = A.NumMyRows();
-      view.ncol  = A.NumMyRows();
-      view.nzmax = A.NumMyNonzeros();
-      view.p     = offsets;
-      view.i     = indices;
-      view.x     = values;
-      view.stype = -1;
-      view.itype = CHOLMOD_INT;
-      view.xtype = CHOLMOD_REAL;
-      view.dtype = CHOLMOD_DOUBLE;
-      // (Epetra sorts each row, but does not say so publicly; CHOLMOD's
-      // permuted transpose sorts anyway.)
-      view.sorted = false;
-      view.packed = true;
-      return view;
-    }
-
-
-    /// Factorise A (all rows on this rank). Returns false if A is not
-    /// positive definite (or CHOLMOD fails otherwise).
-    bool
-    factorize(const Epetra_CrsMatrix &A)
-    {
-      n                    = A.NumMyRows();
-      n_entries_of_matrix  = A.NumMyNonzeros();
-      cholmod_sparse lower = lower_triangle_view(A);
-      cholmod_free_factor(&factor, &common);
-      factor                   = cholmod_analyze(&lower, &common);
-      const bool is_factorized = factor != nullptr
-                                 && cholmod_factorize(&lower, factor, &common)
-                                 && common.status == CHOLMOD_OK;
-      // The factor stays supernodal (dense blocks): with OpenBLAS its
-      // substitution is the faster one too (M: 48 against 63 ms for the
-      // simplicial form), and converting needs both forms in memory at
-      // once (M: 8 % more peak memory). doc/performance.md, seventh session.
-      return is_factorized && common.status == CHOLMOD_OK;
-    }
-
-    /// The cost of a factorisation and of one forward and back substitution
-    /// in floating-point operations. CHOLMOD counts those of the numerical
-    /// factorisation; the rest (extracting the matrix, the ordering, the
-    /// elimination tree) grows with the entries of A. Measured on one core
-    /// (doc/performance.md), a factorisation took 90 substitutions on the
-    /// Example 2 beam (246 unknowns; 2.4 by the count alone) and 58 on the
-    /// benchmark S (12 675; 35 by the count): 150 operations per entry of
-    /// A for the rest fits both within 20 %.
-    double
-    factorization_cost() const
-    {
-      return common.fl + 150.0 * n_entries_of_matrix;
-    }
-    double
-    substitution_flops() const
-    {
-      return 4 * common.lnz;
-    }
-
-    /// x = A^{-1} b, both of length n.
-    void
-    substitute(double *x_out, const double *b_in)
-    {
-      cholmod_dense b;
-      b.nrow  = n;
-      b.ncol  = 1;
-      b.nzmax = n;
-      b.d     = n;
-      b.x     = const_cast<double *>(b_in);
-      b.z     = nullptr;
-      b.xtype = CHOLMOD_REAL;
-      b.dtype = CHOLMOD_DOUBLE;
-      AssertThrow(
-        cholmod_solve2(
-          CHOLMOD_A, factor, &b, nullptr, &x, nullptr, &y, &e, &common),
-        ExcMessage("CHOLMOD's substitution failed."));
-      const double *solution = static_cast<const double *>(x->x);
-      std::copy(solution, solution + n, x_out);
-    }
-
-  private:
-    cholmod_common  common;
-    int             n                   = 0;
-    double          n_entries_of_matrix = 0;
-    cholmod_factor *factor              = nullptr;
-    // The solution and CHOLMOD's workspace, kept between substitutions.
-    cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
-  };
-
-
   namespace
   {
     const Selection<LinearSolver::Type> types =

@@ -17,6 +17,7 @@ namespace liftoff
 {
   using namespace dealii;
 
+  class CholeskyFactor;
   class MumpsCholeskyFactor;
 
   /**
@@ -181,11 +182,9 @@ namespace liftoff
     bool met_tolerance = false;
     /// Floating-point operations CG has spent since the last factorisation
     /// beyond one substitution per solve (CHOLMOD only).
-    double                                          cg_excess_flops = 0;
-    SolverControl                                   direct_control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
-    /// CHOLMOD's factor; kept out of this header.
-    class CholeskyFactor;
+    double                                             cg_excess_flops = 0;
+    SolverControl                                      direct_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
     std::unique_ptr<CholeskyFactor>                    cholesky;
     std::unique_ptr<MumpsCholeskyFactor>               mumps_cholesky;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;

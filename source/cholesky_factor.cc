@@ -1,0 +1,331 @@
+#include <deal.II/base/exceptions.h>
+
+#include <liftoff/cholesky_factor.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
+
+#include <algorithm>
+
+extern "C" {
+// BLAS and LAPACK, which deal.II links; lapack_templates.h has no
+// wrappers for the triangular inverse and the triangular solve with a
+// matrix right-hand side.
+void
+dtrtri_(const char *uplo,
+        const char *diag,
+        const int  *n,
+        double     *a,
+        const int  *lda,
+        int        *info);
+void
+dtrsm_(const char   *side,
+       const char   *uplo,
+       const char   *trans,
+       const char   *diag,
+       const int    *m,
+       const int    *n,
+       const double *alpha,
+       const double *a,
+       const int    *lda,
+       double       *b,
+       const int    *ldb);
+void
+dgemv_(const char   *trans,
+       const int    *m,
+       const int    *n,
+       const double *alpha,
+       const double *a,
+       const int    *lda,
+       const double *x,
+       const int    *incx,
+       const double *beta,
+       double       *y,
+       const int    *incy);
+}
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // A view of A's own arrays in CHOLMOD's form. On one rank the rows
+    // and columns are numbered 0, ..., n-1 in order, and A is symmetric,
+    // so its rows are its columns: row i's entries with column j >= i (the
+    // upper triangle by rows) are column i of the lower triangle, which is
+    // all CHOLMOD reads with stype -1. Nothing is copied (L: 170 MB).
+    cholmod_sparse
+    lower_triangle_view(const Epetra_CrsMatrix &A)
+    {
+      const Epetra_Map &columns = A.ColMap();
+      AssertThrow(A.StorageOptimized() && A.RowMap().LinearMap()
+                    && A.RowMap().MinMyGID() == 0 && columns.LinearMap()
+                    && columns.MinMyGID() == 0
+                    && columns.NumMyElements() == A.NumMyRows(),
+                  ExcMessage("CHOLMOD needs the whole matrix on one rank in "
+                             "Epetra's packed storage, numbered in order."));
+      int    *offsets = nullptr;
+      int    *indices = nullptr;
+      double *values  = nullptr;
+      A.ExtractCrsDataPointers(offsets, indices, values);
+      cholmod_sparse view{};
+      view.nrow  = A.NumMyRows();
+      view.ncol  = A.NumMyRows();
+      view.nzmax = A.NumMyNonzeros();
+      view.p     = offsets;
+      view.i     = indices;
+      view.x     = values;
+      view.stype = -1;
+      view.itype = CHOLMOD_INT;
+      view.xtype = CHOLMOD_REAL;
+      view.dtype = CHOLMOD_DOUBLE;
+      // (Epetra sorts each row, but does not say so publicly; CHOLMOD's
+      // permuted transpose sorts anyway.)
+      view.sorted = false;
+      view.packed = true;
+      return view;
+    }
+
+    /// Below this many entries a block is multiplied by a plain loop: a
+    /// BLAS call costs more than the product there. (On the benchmarks M
+    /// and L, 4096 was as fast as any threshold from 256 to 16384 within
+    /// the 5 % spread of the runs, and 3 to 12 % faster than BLAS for
+    /// every block.)
+    constexpr int small_block = 4096;
+  } // namespace
+
+
+  CholeskyFactor::CholeskyFactor()
+  {
+    cholmod_start(&common);
+    // Errors are reported through `common.status`, not printed.
+    common.print         = 0;
+    common.error_handler = nullptr;
+  }
+
+
+  CholeskyFactor::~CholeskyFactor()
+  {
+    for (cholmod_dense **d : {&x, &y, &e})
+      cholmod_free_dense(d, &common);
+    cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+
+
+  bool
+  CholeskyFactor::factorize(const Epetra_CrsMatrix &A)
+  {
+    n                    = A.NumMyRows();
+    n_entries_of_matrix  = A.NumMyNonzeros();
+    inversion_flops      = 0;
+    cholmod_sparse lower = lower_triangle_view(A);
+    cholmod_free_factor(&factor, &common);
+    factor                   = cholmod_analyze(&lower, &common);
+    const bool is_factorized = factor != nullptr
+                               && cholmod_factorize(&lower, factor, &common)
+                               && common.status == CHOLMOD_OK;
+    // The factor stays supernodal (dense blocks): its substitution is the
+    // faster one (M: 48 against 63 ms for CHOLMOD's simplicial form), and
+    // converting needs both forms in memory at once (M: 8 % more peak
+    // memory). doc/performance.md, seventh session.
+    if (is_factorized && factor->is_super)
+      invert_diagonal_blocks();
+    return is_factorized;
+  }
+
+
+  bool
+  CholeskyFactor::is_supernodal() const
+  {
+    return factor != nullptr && factor->is_super;
+  }
+
+
+  void
+  CholeskyFactor::invert_diagonal_blocks()
+  {
+    const int *super = static_cast<const int *>(factor->super);
+    const int *pi    = static_cast<const int *>(factor->pi);
+    const int *px    = static_cast<const int *>(factor->px);
+    double    *lx    = static_cast<double *>(factor->x);
+    int        rows  = 0;
+    for (std::size_t s = 0; s < factor->nsuper; ++s)
+      {
+        const int n_columns = super[s + 1] - super[s];
+        const int n_rows    = pi[s + 1] - pi[s];
+        const int n_below   = n_rows - n_columns;
+        rows                = std::max(rows, n_rows);
+        // Column-major, n_rows x n_columns. CHOLMOD leaves the strict upper
+        // part of the triangle's block unspecified; G's product reads it.
+        double *block = lx + px[s];
+        for (int j = 1; j < n_columns; ++j)
+          std::fill(block + j * n_rows, block + j * n_rows + j, 0.0);
+        // L_rs L_ss^{-1} needs L_ss itself, so it comes first.
+        const double one = 1;
+        if (n_below > 0)
+          dtrsm_("R",
+                 "L",
+                 "N",
+                 "N",
+                 &n_below,
+                 &n_columns,
+                 &one,
+                 block,
+                 &n_rows,
+                 block + n_columns,
+                 &n_rows);
+        int info = 0;
+        dtrtri_("L", "N", &n_columns, block, &n_rows, &info);
+        // L's diagonal is positive once cholmod_factorize succeeded.
+        AssertThrow(info == 0,
+                    ExcMessage("Inverting a block of CHOLMOD's factor failed "
+                               "(LAPACK's dtrtri: info = "
+                               + std::to_string(info) + ")."));
+        inversion_flops += double(n_columns) * n_columns * n_columns / 3.0
+                           + double(n_below) * n_columns * n_columns;
+      }
+    permuted.resize(n);
+    block_vector.resize(rows);
+  }
+
+
+  void
+  CholeskyFactor::substitute(double *x_out, const double *b_in)
+  {
+    if (factor->is_super)
+      {
+        substitute_supernodal(x_out, b_in);
+        return;
+      }
+    cholmod_dense b;
+    b.nrow  = n;
+    b.ncol  = 1;
+    b.nzmax = n;
+    b.d     = n;
+    b.x     = const_cast<double *>(b_in);
+    b.z     = nullptr;
+    b.xtype = CHOLMOD_REAL;
+    b.dtype = CHOLMOD_DOUBLE;
+    AssertThrow(cholmod_solve2(
+                  CHOLMOD_A, factor, &b, nullptr, &x, nullptr, &y, &e, &common),
+                ExcMessage("CHOLMOD's substitution failed."));
+    const double *solution = static_cast<const double *>(x->x);
+    std::copy(solution, solution + n, x_out);
+  }
+
+
+  void
+  CholeskyFactor::substitute_supernodal(double *x_out, const double *b_in)
+  {
+    const int    *super   = static_cast<const int *>(factor->super);
+    const int    *pi      = static_cast<const int *>(factor->pi);
+    const int    *px      = static_cast<const int *>(factor->px);
+    const int    *row     = static_cast<const int *>(factor->s);
+    const int    *perm    = static_cast<const int *>(factor->Perm);
+    const double *lx      = static_cast<const double *>(factor->x);
+    const int     n_super = factor->nsuper;
+    double       *v       = permuted.data();
+    double       *t       = block_vector.data();
+    const int     inc     = 1;
+    const double  one = 1, zero = 0;
+
+    for (int k = 0; k < n; ++k)
+      v[k] = b_in[perm[k]];
+
+    // L y = P b. A supernode's first rows are its own columns, k1, k1 + 1,
+    // ...; the rows below are listed in `row`.
+    for (int s = 0; s < n_super; ++s)
+      {
+        const int     k1        = super[s];
+        const int     n_columns = super[s + 1] - k1;
+        const int     n_rows    = pi[s + 1] - pi[s];
+        const double *G         = lx + px[s];
+        if (n_rows * n_columns < small_block)
+          {
+            std::fill(t, t + n_rows, 0.0);
+            for (int j = 0; j < n_columns; ++j)
+              {
+                const double  vj     = v[k1 + j];
+                const double *column = G + j * n_rows;
+                for (int i = 0; i < n_rows; ++i)
+                  t[i] += column[i] * vj;
+              }
+          }
+        else
+          dgemv_("N",
+                 &n_rows,
+                 &n_columns,
+                 &one,
+                 G,
+                 &n_rows,
+                 v + k1,
+                 &inc,
+                 &zero,
+                 t,
+                 &inc);
+        std::copy(t, t + n_columns, v + k1);
+        const int *below = row + pi[s];
+        for (int i = n_columns; i < n_rows; ++i)
+          v[below[i]] -= t[i];
+      }
+
+    // L^T z = y, then x = P^T z.
+    for (int s = n_super - 1; s >= 0; --s)
+      {
+        const int     k1        = super[s];
+        const int     n_columns = super[s + 1] - k1;
+        const int     n_rows    = pi[s + 1] - pi[s];
+        const double *G         = lx + px[s];
+        const int    *below     = row + pi[s];
+        std::copy(v + k1, v + k1 + n_columns, t);
+        for (int i = n_columns; i < n_rows; ++i)
+          t[i] = -v[below[i]];
+        if (n_rows * n_columns < small_block)
+          for (int j = 0; j < n_columns; ++j)
+            {
+              const double *column = G + j * n_rows;
+              double        sum    = 0;
+              for (int i = 0; i < n_rows; ++i)
+                sum += column[i] * t[i];
+              v[k1 + j] = sum;
+            }
+        else
+          dgemv_("T",
+                 &n_rows,
+                 &n_columns,
+                 &one,
+                 G,
+                 &n_rows,
+                 t,
+                 &inc,
+                 &zero,
+                 v + k1,
+                 &inc);
+      }
+    for (int k = 0; k < n; ++k)
+      x_out[perm[k]] = v[k];
+  }
+
+
+  double
+  CholeskyFactor::factorization_cost() const
+  {
+    // CHOLMOD counts the operations of the numerical factorisation; the
+    // rest (extracting the matrix, the ordering, the elimination tree)
+    // grows with the entries of A. Measured on one core
+    // (doc/performance.md), a factorisation took 90 substitutions on the
+    // Example 2 beam (246 unknowns; 2.4 by the count alone) and 58 on the
+    // benchmark S (12 675; 35 by the count): 150 operations per entry of A
+    // for the rest fits both within 20 %.
+    return common.fl + inversion_flops + 150.0 * n_entries_of_matrix;
+  }
+
+
+  double
+  CholeskyFactor::substitution_flops() const
+  {
+    return 4 * common.lnz;
+  }
+} // namespace liftoff
