@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <liftoff/cholesky_factor.h>
 
@@ -120,6 +121,7 @@ namespace liftoff
     n                    = A.NumMyRows();
     n_entries_of_matrix  = A.NumMyNonzeros();
     inversion_flops      = 0;
+    smallest_rcond       = 1;
     cholmod_sparse lower = lower_triangle_view(A);
     cholmod_free_factor(&factor, &common);
     factor                   = cholmod_analyze(&lower, &common);
@@ -130,20 +132,65 @@ namespace liftoff
     // faster one (M: 48 against 63 ms for CHOLMOD's simplicial form), and
     // converting needs both forms in memory at once (M: 8 % more peak
     // memory). doc/performance.md, seventh session.
-    if (is_factorized && factor->is_super)
-      invert_diagonal_blocks();
+    is_inverted = is_factorized && factor->is_super
+                  && blocks_are_well_conditioned() && invert_diagonal_blocks();
     return is_factorized;
   }
 
 
   bool
-  CholeskyFactor::is_supernodal() const
+  CholeskyFactor::has_inverted_blocks() const
   {
-    return factor != nullptr && factor->is_super;
+    return is_inverted;
   }
 
 
-  void
+  double
+  CholeskyFactor::smallest_block_rcond() const
+  {
+    return smallest_rcond;
+  }
+
+
+  bool
+  CholeskyFactor::blocks_are_well_conditioned()
+  {
+    // The partitioned inverse's error grows with the condition of the
+    // inverted blocks (Higham and Pothen, SIAM J. Sci. Comput. 15, 1994),
+    // CHOLMOD's triangular solves' does not: a factor with an
+    // ill-conditioned block keeps them.
+    const int          *super = static_cast<const int *>(factor->super);
+    const int          *pi    = static_cast<const int *>(factor->pi);
+    const int          *px    = static_cast<const int *>(factor->px);
+    const double       *lx    = static_cast<const double *>(factor->x);
+    std::vector<double> work;
+    std::vector<types::blas_int> integer_work;
+    smallest_rcond = 1;
+    for (std::size_t s = 0; s < factor->nsuper; ++s)
+      {
+        const types::blas_int n_columns = super[s + 1] - super[s];
+        const types::blas_int n_rows    = pi[s + 1] - pi[s];
+        work.resize(3 * n_columns);
+        integer_work.resize(n_columns);
+        double          rcond = 0;
+        types::blas_int info  = 0;
+        trcon("1",
+              "L",
+              "N",
+              &n_columns,
+              lx + px[s],
+              &n_rows,
+              &rcond,
+              work.data(),
+              integer_work.data(),
+              &info);
+        smallest_rcond = std::min(smallest_rcond, info == 0 ? rcond : 0.0);
+      }
+    return smallest_rcond >= 1e-6;
+  }
+
+
+  bool
   CholeskyFactor::invert_diagonal_blocks()
   {
     const int *super = static_cast<const int *>(factor->super);
@@ -188,13 +235,14 @@ namespace liftoff
       }
     permuted.resize(n);
     block_vector.resize(rows);
+    return true;
   }
 
 
   void
   CholeskyFactor::substitute(double *x_out, const double *b_in)
   {
-    if (factor->is_super)
+    if (is_inverted)
       {
         substitute_supernodal(x_out, b_in);
         return;

@@ -24,7 +24,9 @@ namespace liftoff
    * memory-bound, and this reads each entry once per pass at a better rate:
    * on the benchmark L (1.5e8 entries) a substitution takes 0.22 s instead
    * of 0.29 s (doc/performance.md, tenth session). A simplicial factor
-   * (small matrices) is substituted by CHOLMOD.
+   * (small matrices), or one with a block whose triangle is ill-conditioned
+   * (the partitioned inverse's error grows with that condition), is
+   * substituted by CHOLMOD.
    *
    * A substitution reuses the workspace of the previous one, so it
    * allocates nothing.
@@ -49,10 +51,16 @@ namespace liftoff
     void
     substitute(double *x, const double *b);
 
-    /// Whether the factor is supernodal, so that substitute() uses the
-    /// inverted blocks.
+    /// Whether substitute() uses inverted blocks: the factor is supernodal
+    /// and the reciprocal condition number of each block's triangle
+    /// (LAPACK's estimate) is at least 1e-6.
     bool
-    is_supernodal() const;
+    has_inverted_blocks() const;
+
+    /// The smallest reciprocal condition number of the triangles of a
+    /// supernodal factor's blocks (1 for a simplicial factor).
+    double
+    smallest_block_rcond() const;
 
     /// The cost of a factorisation (with the inversion of the blocks) and
     /// of one substitution in floating-point operations.
@@ -66,6 +74,8 @@ namespace liftoff
     int             n                   = 0;
     double          n_entries_of_matrix = 0;
     double          inversion_flops     = 0;
+    bool            is_inverted         = false;
+    double          smallest_rcond      = 1;
     cholmod_factor *factor              = nullptr;
     // CHOLMOD's solution and workspace (simplicial factors), kept between
     // substitutions.
@@ -73,7 +83,9 @@ namespace liftoff
     // The permuted vector and one supernode's rows (supernodal factors).
     std::vector<double> permuted, block_vector;
 
-    void
+    bool
+    blocks_are_well_conditioned();
+    bool
     invert_diagonal_blocks();
     void
     substitute_supernodal(double *x_out, const double *b_in);
