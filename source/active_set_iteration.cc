@@ -88,7 +88,30 @@ namespace liftoff
       , timer(timer)
       , solver(timer)
   {
-    solver.rebuild_matrix = [this]() { rebuild_matrix(); };
+    solver.rebuild_matrix     = [this]() { rebuild_matrix(); };
+    solver.multiply_by_change = [this](const LA::MPI::Vector    &src,
+                                       LA::MPI::Vector          &dst,
+                                       const LinearSolver::Since since) {
+      if (change_source.size() != src.size()
+          || change_source.locally_owned_elements()
+               != src.locally_owned_elements())
+        {
+          this->discretization.reinit_ghosted_vector(change_source);
+          change_owned.reinit(src, true);
+        }
+      // CG's vectors need not satisfy the constraints; the springs act on
+      // the w they stand for (hanging: the masters', supported: zero).
+      copy_values(src, change_owned);
+      ghosts.distribute(this->discretization.constraints,
+                        change_owned,
+                        change_source);
+      dst = 0;
+      this->foundation.add_change_product(
+        since == LinearSolver::Since::factorisation ? factorised_status
+                                                    : solved_status,
+        change_source,
+        dst);
+    };
   }
 
 
@@ -213,7 +236,14 @@ namespace liftoff
       if (foundation.update_matrix(matrix) > 0)
         solver.matrix_changed();
     }
-    solver.solve(solution, with_gap_load(rhs), accuracy);
+    solver.solve(solution, with_gap_load(rhs), accuracy, continues_solve);
+    // The next solve of this step continues this one if nothing but the
+    // springs' status changes in between: a gap load changes with the
+    // status, and hanging nodes take their masters' values in the solution
+    // (below).
+    solved_status = foundation.status_in_matrix();
+    continues_solve =
+      !foundation.has_gap() && !discretization.has_hanging_nodes();
     ghosts.distribute(discretization.constraints, solution, ghosted_solution);
   }
 
@@ -304,6 +334,7 @@ namespace liftoff
   {
     Assert(matrix.m() > 0, ExcMessage("set_base_matrix() first."));
     Result result;
+    continues_solve = false;
     // The set the previous step ended with: the status of points that end
     // in the round-off band.
     const std::vector<unsigned char> start_set = foundation.contact_status();

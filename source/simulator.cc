@@ -1116,6 +1116,9 @@ namespace liftoff
                       / solver.n_substitutions
                   : 0.0);
     summary.add("CG iterations", double(solver.n_cg_iterations));
+    summary.add("CG products with the whole matrix", double(solver.n_products));
+    summary.add("CG solutions that failed the residual check",
+                double(solver.n_failed_checks));
     summary.add("peak memory per rank, max [MB]", peak_memory_mb);
     summary.add("wall time [s]", wall_clock.wall_time());
     RunSummary::Section sections;

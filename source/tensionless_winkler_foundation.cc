@@ -389,15 +389,17 @@ namespace liftoff
 
 
   const int *
-  TensionlessWinklerFoundation::positions_in(const LA::MPI::Vector &u) const
+  TensionlessWinklerFoundation::positions_in(const LA::MPI::Vector &u,
+                                             const bool owned_only) const
   {
     const Epetra_BlockMap &map = u.trilinos_vector().Map();
     for (const auto &known : local_positions)
       if (known.map->DataPtr() == map.DataPtr())
         return known.positions.data();
     // The program's ghosted vectors come in a few layouts (solution,
-    // velocity, scratch); a few more would mean layouts made per call.
-    if (local_positions.size() == 4)
+    // velocity, scratch), and the solver's products one owned layout; a
+    // few more would mean layouts made per call.
+    if (local_positions.size() == 5)
       local_positions.erase(local_positions.begin());
     LocalPositions known;
     known.map = std::make_unique<Epetra_BlockMap>(map);
@@ -405,7 +407,7 @@ namespace liftoff
     for (const auto index : cell_w_dof_indices)
       {
         const int position = map.LID(static_cast<int>(index));
-        AssertThrow(position >= 0,
+        AssertThrow(position >= 0 || owned_only,
                     ExcMessage("The foundation reads w_h from a vector "
                                "without the ghost entries of its cells."));
         known.positions.push_back(position);
@@ -614,6 +616,86 @@ namespace liftoff
           add_cell_term(c, weight, layer_weight, matrix);
       }
     matrix.compress(VectorOperation::add);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::add_change_product(
+    const std::vector<unsigned char> &reference,
+    const LA::MPI::Vector            &ghosted_src,
+    LA::MPI::Vector                  &dst) const
+  {
+    AssertThrow(reference.size() == in_matrix.size(),
+                ExcMessage("A contact status of another mesh."));
+    const unsigned int        n_w         = w_dofs.size();
+    const int                *positions   = positions_in(dst, true);
+    double                   *dst_values  = dst.trilinos_vector()[0];
+    const auto               &constraints = discretization->constraints;
+    std::vector<double>       w, weight(n_q_points), layer_weight(n_q_points);
+    std::vector<Tensor<1, 2>> gradient;
+    Vector<double>            cell_vector(n_w);
+    std::vector<types::global_dof_index> dofs(n_w), others;
+    std::vector<double>                  other_values;
+    for (unsigned int c = 0; c < cell_index.size(); ++c)
+      {
+        const auto first = c * n_q_points;
+        if (std::equal(in_matrix.begin() + first,
+                       in_matrix.begin() + first + n_q_points,
+                       reference.begin() + first))
+          continue;
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            const double change = static_cast<double>(in_matrix[first + q])
+                                  - static_cast<double>(reference[first + q]);
+            weight[q]       = change * matrix_stiffness * jxw[first + q];
+            layer_weight[q] = change * shear_modulus * jxw[first + q];
+          }
+        // The cell's term as update_matrix() adds it (add_cell_term()),
+        // applied through w at the points instead of assembled: 2 n_q n_w
+        // operations instead of n_q n_w^2.
+        deflection_at_gauss_points(ghosted_src, c, w);
+        for (unsigned int k = 0; k < n_w; ++k)
+          {
+            double sum = 0;
+            for (unsigned int q = 0; q < n_q_points; ++q)
+              sum += weight[q] * w[q] * shape_values(q, k);
+            cell_vector(k) = sum;
+          }
+        if (has_layer())
+          {
+            deflection_gradient_at_gauss_points(ghosted_src, c, gradient);
+            for (unsigned int q = 0; q < n_q_points; ++q)
+              for (unsigned int k = 0; k < n_w; ++k)
+                cell_vector(k) +=
+                  layer_weight[q]
+                  * (gradient[q] * shape_gradients[(first + q) * n_w + k]);
+          }
+        if (cell_has_hanging_node[c])
+          {
+            std::copy(cell_w_dof_indices.begin() + c * n_w,
+                      cell_w_dof_indices.begin() + (c + 1) * n_w,
+                      dofs.begin());
+            constraints.distribute_local_to_global(cell_vector, dofs, dst);
+            continue;
+          }
+        others.clear();
+        other_values.clear();
+        for (unsigned int k = 0; k < n_w; ++k)
+          if (!cell_w_dof_is_constrained[c * n_w + k])
+            {
+              const int position = positions[c * n_w + k];
+              if (position >= 0)
+                dst_values[position] += cell_vector(k);
+              else
+                {
+                  others.push_back(cell_w_dof_indices[c * n_w + k]);
+                  other_values.push_back(cell_vector(k));
+                }
+            }
+        if (!others.empty())
+          dst.add(others, other_values);
+      }
+    dst.compress(VectorOperation::add);
   }
 
 

@@ -7,6 +7,7 @@
 // on the partition boundary add to rows another rank owns. Edges are
 // clamped and simply supported so that constrained rows are present.
 
+#include <deal.II/base/function_lib.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -18,6 +19,7 @@
 #include "test_tools.h"
 
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 using namespace dealii;
@@ -106,9 +108,12 @@ namespace
     discretization.reinit_vector(u);
     discretization.reinit_ghosted_vector(ghosted_u);
 
-    unsigned long n_flipped = 0;
+    unsigned long              n_flipped = 0;
+    std::vector<unsigned char> reference;
     for (unsigned int round = 0; round < 5; ++round)
       {
+        if (round == 2)
+          reference = foundation.status_in_matrix();
         VectorTools::interpolate(discretization.mapping,
                                  discretization.dof_handler,
                                  WavyDeflection(0.9 * round),
@@ -133,6 +138,49 @@ namespace
       label + "updated vs freshly assembled K_f (relative Frobenius norm)",
       matrix_difference(updated, fresh),
       1e-14);
+
+    // The change since `reference` as a product (what CG uses instead of
+    // a product with the matrix), against the difference of the two
+    // assembled matrices, for a vector with every component and ghosts.
+    {
+      liftoff::LA::MPI::SparseMatrix earlier;
+      discretization.reinit_matrix(earlier);
+      foundation.add_to_matrix(reference, earlier);
+      liftoff::LA::MPI::Vector x(u), from_matrices(u), change(u);
+      liftoff::LA::MPI::Vector ghosted_x(ghosted_u);
+      VectorTools::interpolate(discretization.mapping,
+                               discretization.dof_handler,
+                               Functions::CosineFunction<2>(3),
+                               x);
+      discretization.constraints.distribute(x);
+      ghosted_x = x;
+      fresh.vmult(from_matrices, x);
+      liftoff::LA::MPI::Vector earlier_x(u);
+      earlier.vmult(earlier_x, x);
+      from_matrices -= earlier_x;
+      change = 0;
+      foundation.add_change_product(reference, ghosted_x, change);
+      checks.within(
+        label + "points whose status differs from the reference",
+        double(Utilities::MPI::sum(
+          std::inner_product(reference.begin(),
+                             reference.end(),
+                             foundation.status_in_matrix().begin(),
+                             0u,
+                             std::plus<>(),
+                             [](const unsigned char a, const unsigned char b) {
+                               return static_cast<unsigned int>(a != b);
+                             }),
+          MPI_COMM_WORLD)),
+        10,
+        1e9);
+      change -= from_matrices;
+      checks.less(label
+                    + "product with the change since a reference status vs "
+                      "difference of the matrices (relative)",
+                  change.l2_norm() / from_matrices.l2_norm(),
+                  1e-13);
+    }
 
     liftoff::LA::MPI::Vector from_matrix(u), reaction(u);
     fresh.vmult(from_matrix, u);

@@ -131,6 +131,14 @@ namespace liftoff
     LinearSolver solver;
     /// rhs + f_g(S) when the foundation has a gap.
     LA::MPI::Vector rhs_with_gap;
+    /// The vector the solver multiplies by the change of the matrix since
+    /// its factorisation or last solve, with its constraints applied, and
+    /// with ghosts.
+    LA::MPI::Vector change_owned, change_source;
+    /// The S of the matrix at the last solve.
+    std::vector<unsigned char> solved_status;
+    /// The next solve may continue the last one (LinearSolver::solve()).
+    bool continues_solve = false;
 
     /// B + K_f(S) for the S the matrix holds, written afresh (before a
     /// factorisation: the factor is then of a matrix that can be built

@@ -90,8 +90,9 @@ namespace liftoff
     /// record hold the energy the foundation's dashpots dissipated; 5 since
     /// history rows hold the mesh size and adaptive runs save their mesh;
     /// 7 since the active set keeps the contact status its factor was built
-    /// from instead of a copy of the matrix's values then.
-    static constexpr unsigned int format = 7;
+    /// from instead of a copy of the matrix's values then; 8 since the
+    /// linear solver keeps the measured error of its factor's substitution.
+    static constexpr unsigned int format = 8;
 
     static void
     declare_parameters(ParameterHandler &prm);

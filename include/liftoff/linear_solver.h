@@ -102,12 +102,16 @@ namespace liftoff
     };
 
     /// Solve A x = b with the matrix given to prepare(); x holds the
-    /// initial guess on entry. Returns the CG iterations (0 for a plain
-    /// substitution).
+    /// initial guess on entry. `continues`: x and b are those the last
+    /// solve returned and was given, unchanged, and A has changed since
+    /// only as multiply_by_change() describes; then CG starts from the last
+    /// residual instead of a product with A. Returns the CG iterations (0
+    /// for a plain substitution).
     unsigned int
     solve(LA::MPI::Vector       &x,
           const LA::MPI::Vector &b,
-          Accuracy               accuracy = Accuracy::final);
+          Accuracy               accuracy  = Accuracy::final,
+          bool                   continues = false);
 
     /// Whether a `trial` solve may stop short of a `final` one.
     bool
@@ -138,6 +142,27 @@ namespace liftoff
     mutable WallClock substitution_timer;
     /// CG iterations so far.
     unsigned long n_cg_iterations = 0;
+    /// Products with the whole matrix in CG so far.
+    unsigned long n_products = 0;
+    /// CG solutions that met `Tolerance` by the residual CG carries but not
+    /// by a product with the matrix (conjugate_gradients()).
+    unsigned long n_failed_checks = 0;
+
+    /// Since when multiply_by_change() takes the change of the matrix.
+    enum class Since
+    {
+      factorisation,
+      last_solve
+    };
+    /// dst = (A - A_s) src, A the matrix as it is and A_s the one last
+    /// factorised or the one of the last solve. With it, CG on a changed
+    /// matrix forms products with the whole matrix once or twice per step
+    /// of the active set instead of once per iteration and solve
+    /// (conjugate_gradients()). ActiveSetIteration: the change of the
+    /// springs' status.
+    std::function<
+      void(const LA::MPI::Vector &src, LA::MPI::Vector &dst, Since since)>
+      multiply_by_change;
 
     /// Apply the stored factor's inverse: dst = A_f^{-1} src. This makes
     /// the solver the preconditioner of its own CG.
@@ -182,11 +207,18 @@ namespace liftoff
     bool met_tolerance = false;
     /// Floating-point operations CG has spent since the last factorisation
     /// beyond one substitution per solve (CHOLMOD only).
-    double                                             cg_excess_flops = 0;
-    SolverControl                                      direct_control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
-    std::unique_ptr<CholeskyFactor>                    cholesky;
-    std::unique_ptr<MumpsCholeskyFactor>               mumps_cholesky;
+    double cg_excess_flops = 0;
+    /// |A_f z - r| / |r| for the first substitution z = A_f^{-1} r of CG
+    /// after the factorisation; negative until measured.
+    double substitution_error = -1;
+    /// CG's vectors, kept between solves.
+    LA::MPI::Vector r, z, p, q, change_product;
+    /// r holds b - A x (to round-off) for the x and b of the last solve.
+    bool                                            residual_is_current = false;
+    SolverControl                                   direct_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    std::unique_ptr<CholeskyFactor>                 cholesky;
+    std::unique_ptr<MumpsCholeskyFactor>            mumps_cholesky;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
     /// Say once (rank 0) that `factorisation` found the matrix not
@@ -204,6 +236,7 @@ namespace liftoff
     conjugate_gradients(LA::MPI::Vector       &x,
                         const LA::MPI::Vector &b,
                         const unsigned int     max_steps,
-                        const double           relative_tolerance);
+                        const double           relative_tolerance,
+                        const bool             continues);
   };
 } // namespace liftoff

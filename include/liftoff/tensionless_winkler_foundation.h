@@ -108,6 +108,16 @@ namespace liftoff
     const std::vector<unsigned char> &
     status_in_matrix() const;
 
+    /// dst += (K_f(status_in_matrix()) - K_f(reference)) src: the product
+    /// with the change of the matrix since it held the status `reference`,
+    /// from the cells whose status differs. `ghosted_src` must satisfy the
+    /// constraints (GhostUpdate::distribute()); `dst` has no ghosts.
+    /// Collective.
+    void
+    add_change_product(const std::vector<unsigned char> &reference,
+                       const LA::MPI::Vector            &ghosted_src,
+                       LA::MPI::Vector                  &dst) const;
+
     /// Bring the K_f held in `matrix` (by add_to_matrix()) up to date with
     /// the status: only the points that changed are touched. Returns the
     /// number of points updated over all ranks (0: `matrix` is unchanged).
@@ -332,9 +342,10 @@ namespace liftoff
     mutable std::vector<LocalPositions> local_positions;
 
     /// The positions of cell_w_dof_indices in the storage of u, which
-    /// must hold every one of them (a ghosted vector).
+    /// must hold every one of them (a ghosted vector); with `owned_only`,
+    /// -1 for those it does not hold (a vector without ghosts).
     const int *
-    positions_in(const LA::MPI::Vector &u) const;
+    positions_in(const LA::MPI::Vector &u, const bool owned_only = false) const;
 
     /// w_h at the Gauss points of owned cell c.
     void
