@@ -394,7 +394,8 @@ namespace liftoff
   {
     const Epetra_BlockMap &map = u.trilinos_vector().Map();
     for (const auto &known : local_positions)
-      if (known.map->DataPtr() == map.DataPtr())
+      if (known.map->DataPtr() == map.DataPtr()
+          && known.owned_only == owned_only)
         return known.positions.data();
     // The program's ghosted vectors come in a few layouts (solution,
     // velocity, scratch), and the solver's products one owned layout; a
@@ -402,7 +403,8 @@ namespace liftoff
     if (local_positions.size() == 5)
       local_positions.erase(local_positions.begin());
     LocalPositions known;
-    known.map = std::make_unique<Epetra_BlockMap>(map);
+    known.map        = std::make_unique<Epetra_BlockMap>(map);
+    known.owned_only = owned_only;
     known.positions.reserve(cell_w_dof_indices.size());
     for (const auto index : cell_w_dof_indices)
       {

@@ -337,7 +337,9 @@ namespace liftoff
     struct LocalPositions
     {
       std::unique_ptr<Epetra_BlockMap> map;
-      std::vector<int>                 positions;
+      /// -1 stands for the entries `map` does not hold (positions_in()).
+      bool             owned_only = false;
+      std::vector<int> positions;
     };
     mutable std::vector<LocalPositions> local_positions;
 
