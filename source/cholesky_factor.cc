@@ -7,9 +7,10 @@
 #include <Epetra_Map.h>
 
 #include <algorithm>
+#include <cstring>
 
 extern "C" {
-// BLAS and LAPACK, which deal.II links; lapack_templates.h has no
+// LAPACK and BLAS, which deal.II links; lapack_templates.h has no
 // wrappers for the triangular inverse and the triangular solve with a
 // matrix right-hand side.
 void
@@ -31,18 +32,6 @@ dtrsm_(const char   *side,
        const int    *lda,
        double       *b,
        const int    *ldb);
-void
-dgemv_(const char   *trans,
-       const int    *m,
-       const int    *n,
-       const double *alpha,
-       const double *a,
-       const int    *lda,
-       const double *x,
-       const int    *incx,
-       const double *beta,
-       double       *y,
-       const int    *incy);
 }
 
 namespace liftoff
@@ -88,12 +77,101 @@ namespace liftoff
       return view;
     }
 
-    /// Below this many entries a block is multiplied by a plain loop: a
-    /// BLAS call costs more than the product there. (On the benchmarks M
-    /// and L, 4096 was as fast as any threshold from 256 to 16384 within
-    /// the 5 % spread of the runs, and 3 to 14 % faster than BLAS for
-    /// every block.)
-    constexpr int small_block = 4096;
+    // A substitution reads the whole factor twice and is bound by memory
+    // bandwidth, so the products below are written for the order of the
+    // reads, not for the arithmetic: each pass reads G column by column in
+    // storage order (ascending in the forward pass, descending in the
+    // backward pass, which visits the supernodes last to first), one
+    // stream the hardware prefetcher can follow across blocks. BLAS's
+    // dgemv and loops over several columns at once read several short
+    // streams per block and reached half the bandwidth (M: 42 ms against
+    // 20 ms now, doc/performance.md, twelfth session). GCC's vector type
+    // gives SIMD products without -ffast-math, in a summation order that
+    // is the same on every machine (only the AVX2 clone's fused
+    // multiply-adds round differently).
+    constexpr int width = 4;
+    using Packet        = double __attribute__((vector_size(8 * width)));
+
+    inline __attribute__((always_inline)) Packet
+    load(const double *p)
+    {
+      Packet r;
+      std::memcpy(&r, p, sizeof(Packet));
+      return r;
+    }
+
+    inline __attribute__((always_inline)) void
+    store(double *p, const Packet r)
+    {
+      std::memcpy(p, &r, sizeof(Packet));
+    }
+
+    inline __attribute__((always_inline)) double
+    sum_of(const Packet a)
+    {
+      double s = 0;
+      for (int k = 0; k < width; ++k)
+        s += a[k];
+      return s;
+    }
+
+// AVX2 and FMA where the processor has them, chosen when the program
+// loads: Debian builds for plain x86-64.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define LIFTOFF_CLONES \
+  __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define LIFTOFF_CLONES
+#endif
+
+    /// t = G y, G with m rows and n columns, column-major.
+    LIFTOFF_CLONES void
+    multiply(const double *G,
+             const int     m,
+             const int     n,
+             const double *y,
+             double       *t)
+    {
+      std::fill(t, t + m, 0.0);
+      for (int j = 0; j < n; ++j)
+        {
+          const double *column = G + std::size_t(j) * m;
+          const double  yj     = y[j];
+          int           i      = 0;
+          for (; i + width <= m; i += width)
+            store(t + i, load(t + i) + load(column + i) * yj);
+          for (; i < m; ++i)
+            t[i] += column[i] * yj;
+        }
+    }
+
+    /// y = G^T t, reading G from its last entry to its first.
+    LIFTOFF_CLONES void
+    multiply_transposed(const double *G,
+                        const int     m,
+                        const int     n,
+                        const double *t,
+                        double       *y)
+    {
+      constexpr int chunk = 4 * width;
+      const int     head  = m % chunk;
+      for (int j = n - 1; j >= 0; --j)
+        {
+          const double *column = G + std::size_t(j) * m;
+          Packet        s0 = {}, s1 = {}, s2 = {}, s3 = {};
+          for (int i = m - chunk; i >= head; i -= chunk)
+            {
+              s3 += load(column + i + 3 * width) * load(t + i + 3 * width);
+              s2 += load(column + i + 2 * width) * load(t + i + 2 * width);
+              s1 += load(column + i + width) * load(t + i + width);
+              s0 += load(column + i) * load(t + i);
+            }
+          double sum = sum_of((s0 + s1) + (s2 + s3));
+          for (int i = head - 1; i >= 0; --i)
+            sum += column[i] * t[i];
+          y[j] = sum;
+        }
+    }
   } // namespace
 
 
@@ -276,8 +354,6 @@ namespace liftoff
     const int     n_super = factor->nsuper;
     double       *v       = permuted.data();
     double       *t       = block_vector.data();
-    const int     inc     = 1;
-    const double  one = 1, zero = 0;
 
     for (int k = 0; k < n; ++k)
       v[k] = b_in[perm[k]];
@@ -286,33 +362,10 @@ namespace liftoff
     // ...; the rows below are listed in `row`.
     for (int s = 0; s < n_super; ++s)
       {
-        const int     k1        = super[s];
-        const int     n_columns = super[s + 1] - k1;
-        const int     n_rows    = pi[s + 1] - pi[s];
-        const double *G         = lx + px[s];
-        if (n_rows * n_columns < small_block)
-          {
-            std::fill(t, t + n_rows, 0.0);
-            for (int j = 0; j < n_columns; ++j)
-              {
-                const double  vj     = v[k1 + j];
-                const double *column = G + j * n_rows;
-                for (int i = 0; i < n_rows; ++i)
-                  t[i] += column[i] * vj;
-              }
-          }
-        else
-          dgemv_("N",
-                 &n_rows,
-                 &n_columns,
-                 &one,
-                 G,
-                 &n_rows,
-                 v + k1,
-                 &inc,
-                 &zero,
-                 t,
-                 &inc);
+        const int k1        = super[s];
+        const int n_columns = super[s + 1] - k1;
+        const int n_rows    = pi[s + 1] - pi[s];
+        multiply(lx + px[s], n_rows, n_columns, v + k1, t);
         std::copy(t, t + n_columns, v + k1);
         const int *below = row + pi[s];
         for (int i = n_columns; i < n_rows; ++i)
@@ -322,35 +375,14 @@ namespace liftoff
     // L^T z = y, then x = P^T z.
     for (int s = n_super - 1; s >= 0; --s)
       {
-        const int     k1        = super[s];
-        const int     n_columns = super[s + 1] - k1;
-        const int     n_rows    = pi[s + 1] - pi[s];
-        const double *G         = lx + px[s];
-        const int    *below     = row + pi[s];
+        const int  k1        = super[s];
+        const int  n_columns = super[s + 1] - k1;
+        const int  n_rows    = pi[s + 1] - pi[s];
+        const int *below     = row + pi[s];
         std::copy(v + k1, v + k1 + n_columns, t);
         for (int i = n_columns; i < n_rows; ++i)
           t[i] = -v[below[i]];
-        if (n_rows * n_columns < small_block)
-          for (int j = 0; j < n_columns; ++j)
-            {
-              const double *column = G + j * n_rows;
-              double        sum    = 0;
-              for (int i = 0; i < n_rows; ++i)
-                sum += column[i] * t[i];
-              v[k1 + j] = sum;
-            }
-        else
-          dgemv_("T",
-                 &n_rows,
-                 &n_columns,
-                 &one,
-                 G,
-                 &n_rows,
-                 t,
-                 &inc,
-                 &zero,
-                 v + k1,
-                 &inc);
+        multiply_transposed(lx + px[s], n_rows, n_columns, t, v + k1);
       }
     for (int k = 0; k < n; ++k)
       x_out[perm[k]] = v[k];
