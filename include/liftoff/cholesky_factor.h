@@ -21,10 +21,10 @@ namespace liftoff
    * where CHOLMOD's own solve needs a triangular solve (level-1 BLAS on
    * small blocks) and a product. Forward: t = G y_s gives y_s = t_s and the
    * update y_r -= t_r; backward: x_s = G^T [x_s; -x_r]. Substitutions are
-   * memory-bound, and this reads each entry once per pass at a better rate:
-   * on the benchmark L, p = 1 (1.5e8 entries) a substitution took 0.226 s
-   * instead of CHOLMOD's 0.263 s, on M 39.3 instead of 48.7 ms (one run
-   * each, doc/performance.md, tenth session). A simplicial factor
+   * memory-bound, and this reads each entry once per pass, in storage
+   * order: on the benchmark L, p = 1 (1.5e8 entries) a substitution took
+   * 0.121 s against CHOLMOD's 0.263 s, on M 21.9 against 48.7 ms
+   * (doc/performance.md, tenth and twelfth sessions). A simplicial factor
    * (small matrices), or one with a block whose triangle is ill-conditioned
    * (the partitioned inverse's error grows with that condition), is
    * substituted by CHOLMOD.
