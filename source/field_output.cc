@@ -437,23 +437,28 @@ namespace liftoff
     if (writes_hdf5)
       write_hdf5(directory, data_out, comm, time, stem, records, xdmf_entries);
     records.emplace_back(time, master);
-    write_record(directory, comm);
+    write_record(directory,
+                 comm,
+                 since_record_written.wall_time() >= rewrite_interval);
   }
 
 
   void
   FieldOutput::write_record(const std::string &directory,
-                            const MPI_Comm     comm) const
+                            const MPI_Comm     comm,
+                            const bool         is_due)
   {
     if (records.empty())
       return;
     collective_attempt(comm, "", [&]() {
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
+      if (is_due && Utilities::MPI::this_mpi_process(comm) == 0)
         write_file_atomically(directory + "/solution.pvd",
                               [&](std::ostream &out) {
                                 DataOutBase::write_pvd_record(out, records);
                               });
     });
+    if (is_due)
+      since_record_written.restart();
   }
 
 
@@ -493,7 +498,7 @@ namespace liftoff
   FieldOutput::flush()
   {
     if (!directory.empty())
-      write_record(directory, discretization->mpi_communicator);
+      write_record(directory, discretization->mpi_communicator, true);
   }
 
 

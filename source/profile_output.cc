@@ -94,7 +94,7 @@ namespace liftoff
 
     // The file appears with the first profile.
     file.open(directory.empty() ? "" : directory + "/profiles.csv",
-              1.0,
+              rewrite_interval,
               disc.mpi_communicator);
     file.stream() << "tau,s,x,y,w\n";
   }

@@ -106,7 +106,7 @@ namespace liftoff
     // No directory: keep the rows in memory only (tests). The file
     // appears with the first rows.
     file.open(directory.empty() ? "" : directory + "/history.csv",
-              1.0,
+              rewrite_interval,
               disc.mpi_communicator);
     write_header();
   }

@@ -3,7 +3,9 @@
 # code is 128 + the signal, the message names the signal and the step, the
 # summary says "interrupted", history.csv holds exactly the steps done with
 # every row complete, every PVD record's VTU pieces exist and are complete,
-# and no temporary file is left.
+# the PVD lists every output (while the run goes it is replaced at most once
+# a second, and it was there before the signal), and no temporary file is
+# left.
 #   interrupt.sh LIFTOFF
 set -u
 liftoff=$1
@@ -18,6 +20,8 @@ for signal in INT TERM; do
   # Let it run some steps (the history file appears with its header).
   for _ in $(seq 100); do [ -s out/history.csv ] && break; sleep 0.1; done
   sleep 1
+  count_vtu_pieces out
+  running_pieces=$n_pieces
   kill -"$signal" "$pid"
   wait "$pid"
   status=$?
@@ -33,6 +37,8 @@ for signal in INT TERM; do
   count_vtu_pieces out
   [ "$n_pieces" -ge 2 ] && [ "$missing" -eq 0 ]
   check $? "SIG$signal: $n_pieces VTU pieces listed, $missing missing or cut short"
+  [ "$running_pieces" -ge 1 ] && [ "$n_pieces" -eq $((step / 7 + 1)) ]
+  check $? "SIG$signal: the PVD listed $running_pieces outputs while running and lists all $((step / 7 + 1)) at the end: $n_pieces"
   no_temporary_files out; check $? "SIG$signal: no temporary files left"
 done
 finish

@@ -46,6 +46,12 @@ namespace liftoff
     return interval > 0 && (step % interval == 0 || is_last_step);
   }
 
+  /// How often, in seconds of wall time, a file that is replaced whole as
+  /// it grows (history.csv, profiles.csv, solution.pvd) is rewritten at most
+  /// before the run ends: often enough to watch a run, seldom enough that
+  /// the rewrites cost nothing next to the steps.
+  constexpr double rewrite_interval = 1.0;
+
   /**
    * A text file that grows (a CSV table) but is only ever replaced whole:
    * rows are kept in memory and the file is rewritten atomically at most
