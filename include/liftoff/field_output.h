@@ -23,8 +23,9 @@ namespace liftoff
    * contact), as VTU (plus PVTU under MPI) every k steps and a PVD record
    * naming them. The record is replaced at most once a second of wall time
    * and at flush(), as history.csv is: rewriting it after every file made
-   * the output quadratic in the number of files (1 000 outputs of Example
-   * 2: 34 % of the run in the record) and cost a file creation per output.
+   * the output quadratic in the number of files (2 001 outputs of Example
+   * 2: 34 % of the run's `perf` samples in the record) and cost a file
+   * creation per output.
    */
   class FieldOutput : public Output
   {
@@ -87,7 +88,7 @@ namespace liftoff
     /// The entries of solution.xdmf (HDF5 output); rebuilt from `records`
     /// after a resume.
     std::vector<XDMFEntry> xdmf_entries;
-    /// Since the PVD file was last written; rank 0's decides.
+    /// Since the PVD file was last written; rank 0's clock decides.
     Timer since_record_written;
   };
 } // namespace liftoff
