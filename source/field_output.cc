@@ -227,10 +227,10 @@ namespace liftoff
     }
 
 
-    /// solution_NNNNN.h5 (`stem`.h5) from the patches of data_out and
-    /// solution.xdmf naming every such file so far, which `xdmf_entries`
-    /// keeps; after a resume it is empty and is rebuilt from the PVD
-    /// `records` of the earlier outputs. Collective.
+    /// solution_NNNNN.h5 (`stem`.h5) from the patches of data_out, and its
+    /// entry added to `xdmf_entries`, the entries of solution.xdmf; after a
+    /// resume that is empty and is rebuilt first from the PVD `records` of
+    /// the earlier outputs. Collective.
     void
     write_hdf5(const std::string                                 &directory,
                const DataOutInterface<2, 3>                      &data_out,
@@ -270,22 +270,29 @@ namespace liftoff
             comm));
       xdmf_entries.push_back(
         data_out.create_xdmf_entry(filter, name, time, comm));
-      collective_attempt(comm, "Writing solution.xdmf failed", [&]() {
-        if (rank == 0)
-          write_file_atomically(
-            directory + "/solution.xdmf", [&](std::ostream &out) {
-              out << "<?xml version=\"1.0\" ?>\n"
-                  << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-                  << "<Xdmf Version=\"2.0\">\n"
-                  << "  <Domain>\n"
-                  << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
-                     "CollectionType=\"Temporal\">\n";
-              for (const auto &entry : xdmf_entries)
-                out << entry.get_xdmf_content(3, ReferenceCells::Quadrilateral);
-              out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
-            });
-      });
     }
+
+
+    /// solution.xdmf naming the HDF5 files of `entries`; rank 0 writes it.
+    void
+    write_xdmf(const std::string            &directory,
+               const std::vector<XDMFEntry> &entries)
+    {
+      write_file_atomically(
+        directory + "/solution.xdmf", [&](std::ostream &out) {
+          out << "<?xml version=\"1.0\" ?>\n"
+              << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+              << "<Xdmf Version=\"2.0\">\n"
+              << "  <Domain>\n"
+              << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+                 "CollectionType=\"Temporal\">\n";
+          for (const auto &entry : entries)
+            out << entry.get_xdmf_content(3, ReferenceCells::Quadrilateral);
+          out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+        });
+    }
+
+
     // Every file goes to a temporary name first and is renamed when
     // complete, and the record naming the pieces is written only after every
     // rank has renamed its piece: a viewer never finds a half-written file.
@@ -451,11 +458,16 @@ namespace liftoff
     if (records.empty())
       return;
     collective_attempt(comm, "", [&]() {
-      if (is_due && Utilities::MPI::this_mpi_process(comm) == 0)
-        write_file_atomically(directory + "/solution.pvd",
-                              [&](std::ostream &out) {
-                                DataOutBase::write_pvd_record(out, records);
-                              });
+      if (!is_due || Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      write_file_atomically(directory + "/solution.pvd",
+                            [&](std::ostream &out) {
+                              DataOutBase::write_pvd_record(out, records);
+                            });
+      // After a resume the entries wait for the next output (write_hdf5),
+      // and the earlier run's file stays until then.
+      if (writes_hdf5 && !xdmf_entries.empty())
+        write_xdmf(directory, xdmf_entries);
     });
     if (is_due)
       since_record_written.restart();

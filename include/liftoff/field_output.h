@@ -50,8 +50,9 @@ namespace liftoff
           const double                        time,
           const unsigned int                  step);
 
-    /// Write the PVD file with the records so far (none: no file) if
-    /// `is_due` on rank 0. Collective, as is write().
+    /// Write the PVD file with the records so far (none: no file), and
+    /// solution.xdmf with HDF5 output, if `is_due` on rank 0. Collective, as
+    /// is write().
     void
     write_record(const std::string &directory,
                  const MPI_Comm     comm,
