@@ -382,7 +382,15 @@ namespace liftoff
           for (const auto &[key, child] : node)
             {
               const std::string name = path + key;
-              if (name == "Time integration/End time" || name == "Checkpoint")
+              // What a resume may change: how far to run, where and how
+              // often to checkpoint, how much iteration to allow before
+              // giving up, and the energy check; none of these changes a
+              // step the run has made. The folder is the one the resumed
+              // scene names, wherever it has been moved.
+              if (name == "Time integration/End time" || name == "Checkpoint"
+                  || name == "Output/Directory"
+                  || name == "Active set/Maximum iterations"
+                  || name == "Energy check")
                 continue;
               // ShortJSON writes an entry as "name": "value", the full
               // form as an object with a "value".

@@ -1,4 +1,5 @@
 #include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/grid/grid_generator.h>
@@ -180,8 +181,10 @@ namespace liftoff
 
 
   void
-  Discretization::parse_parameters(ParameterHandler &prm)
+  Discretization::parse_parameters(ParameterHandler   &prm,
+                                   const MindlinPlate &plate)
   {
+    aspect_ratio = plate.aspect_ratio;
     prm.enter_subsection("Discretization");
     const std::string symmetry_name = prm.get("Symmetry");
     modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
@@ -321,9 +324,8 @@ namespace liftoff
 
 
   void
-  Discretization::setup(const MindlinPlate &plate)
+  Discretization::setup()
   {
-    aspect_ratio = plate.aspect_ratio;
     create_coarse_mesh();
     triangulation.refine_global(n_refinements);
 
@@ -396,6 +398,21 @@ namespace liftoff
   Discretization::distribute_dofs()
   {
     dof_handler.distribute_dofs(*fe);
+    // Where a refined mesh keeps its cells depends on its history: a mesh
+    // refined and coarsened in a run and the same mesh loaded from a
+    // checkpoint list their cells in different orders. The checkpoint
+    // holds vectors, Gauss point data and matrix values in this rank's
+    // order, so the order of dofs and cells must follow from the mesh
+    // alone: the hierarchical order of the cells (coarse cell, then
+    // children) for both.
+    DoFRenumbering::hierarchical(dof_handler);
+    owned_cells.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned_cells.push_back(cell);
+    std::sort(owned_cells.begin(),
+              owned_cells.end(),
+              [](const auto &a, const auto &b) { return a->id() < b->id(); });
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
@@ -411,6 +428,13 @@ namespace liftoff
                             locally_owned_dofs,
                             pattern,
                             mpi_communicator);
+  }
+
+
+  const std::vector<DoFHandler<2>::active_cell_iterator> &
+  Discretization::locally_owned_cells() const
+  {
+    return owned_cells;
   }
 
 
@@ -564,11 +588,57 @@ namespace liftoff
   }
 
 
+  std::string
+  Discretization::only_supported_edge() const
+  {
+    unsigned int n_supported = 0, supported = 0;
+    for (unsigned int e = 0; e < edges.size(); ++e)
+      if (edges[e] != EdgeCondition::free)
+        {
+          ++n_supported;
+          supported = e;
+        }
+    return (n_supported == 1 && edges[supported] != EdgeCondition::clamped)
+             ? edge_names[supported]
+             : std::string();
+  }
+
+
+  double
+  Discretization::largest_cell_aspect_ratio() const
+  {
+    // Refinement splits cells in both directions: the coarse cells' ratio.
+    const double width  = 1.0 / n_cells_x;
+    const double height = aspect_ratio / n_cells_y;
+    return std::max(width / height, height / width);
+  }
+
+
   BoundingBox<2>
   Discretization::plate_box() const
   {
     return BoundingBox<2>(std::make_pair(Point<2>(-0.5, -0.5 * aspect_ratio),
                                          Point<2>(0.5, 0.5 * aspect_ratio)));
+  }
+
+
+  bool
+  Discretization::is_on_plate(const Point<2> &p) const
+  {
+    // Relative to the plate's size, so that a point written on an edge is
+    // on the plate whatever the round-off of its decimal digits.
+    return plate_box().point_inside(p, 1e-12 * std::max(1.0, aspect_ratio));
+  }
+
+
+  std::string
+  Discretization::plate_description() const
+  {
+    std::ostringstream text;
+    text.precision(6);
+    text << "the plate [-0.5, 0.5] x [" << -0.5 * aspect_ratio << ", "
+         << 0.5 * aspect_ratio << "]";
+    return text.str();
   }
 
 

@@ -16,11 +16,13 @@ namespace liftoff
                       "0; 0; 0",
                       Patterns::Anything(),
                       "w; psi_x; psi_y at tau = 0 as muParser expressions "
-                      "in x, y.");
+                      "in x, y: w in units of F0 L^2 / D, the rotations in "
+                      "F0 L / D.");
     prm.declare_entry("Velocity",
                       "0; 0; 0",
                       Patterns::Anything(),
-                      "Velocities of w; psi_x; psi_y at tau = 0, in x, y.");
+                      "Velocities of w; psi_x; psi_y at tau = 0, in x, y, "
+                      "in the units of Displacement per t0.");
     prm.leave_subsection();
   }
 

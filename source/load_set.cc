@@ -53,6 +53,14 @@ namespace liftoff
              <= 1e-10 * std::max(1.0, std::abs(a) + std::abs(b));
     }
 
+    std::string
+    time_text(const double tau)
+    {
+      std::ostringstream text;
+      text << std::setprecision(8) << tau;
+      return text.str();
+    }
+
     // Every load has a Magnitude (whose unit depends on its kind) and a
     // Time history; `declare_own` adds the entries of its kind.
     void
@@ -110,8 +118,9 @@ namespace liftoff
       "Self weight",
       "0",
       Patterns::Double(0.0),
-      "q, the plate's weight per unit area in units of D / L^3 (>= 0; 0: a "
-      "weightless plate): a uniform pressure that acts from before tau = 0. "
+      "q, the plate's weight per unit area in units of F0 / L^2, the unit "
+      "of every pressure (>= 0; 0: a weightless plate): a uniform pressure "
+      "that acts from before tau = 0. "
       "A time integration starts from the static equilibrium under it (the "
       "slab settled on its bed, in contact wherever q pre-compresses the "
       "springs), with the initial displacement added to that equilibrium; "
@@ -126,24 +135,27 @@ namespace liftoff
                               "x, y on the full plate (any point, not only "
                               "nodes).");
           });
-        declare_load(
-          prm, subsection_name("Pressure", i), "Pressure scale", [&]() {
-            prm.declare_entry(
-              "Region",
-              "whole plate",
-              Patterns::Anything(),
-              "'whole plate' or 'x_min, x_max, y_min, y_max' on "
-              "the full plate. Rectangles that follow cell "
-              "edges are integrated exactly.");
-            prm.declare_entry("Intensity",
-                              "1",
-                              Patterns::Anything(),
-                              "f(x, y, tau), muParser; the pressure is "
-                              "Magnitude * f * h(tau).");
-          });
+        declare_load(prm,
+                     subsection_name("Pressure", i),
+                     "Pressure in units of F0 / L^2",
+                     [&]() {
+                       prm.declare_entry(
+                         "Region",
+                         "whole plate",
+                         Patterns::Anything(),
+                         "'whole plate' or 'x_min, x_max, y_min, y_max' on "
+                         "the full plate. Rectangles that follow cell "
+                         "edges are integrated exactly.");
+                       prm.declare_entry(
+                         "Intensity",
+                         "1",
+                         Patterns::Anything(),
+                         "f(x, y, tau), muParser; the pressure is "
+                         "Magnitude * f * h(tau).");
+                     });
         declare_load(prm,
                      subsection_name("Line load", i),
-                     "Force per unit length",
+                     "Force per unit length in units of F0 / L",
                      [&]() {
                        prm.declare_entry("Edge",
                                          "Right",
@@ -348,7 +360,12 @@ namespace liftoff
     for (unsigned int k = 0; k <= n_steps; ++k)
       times[k] = k * time_step;
     const FullPlatePoints points = full_plate_points(disc);
-    const std::string     symmetry =
+    // NaN equals nothing, not even its mirror image: a load that is not
+    // finite somewhere is named as such before the comparison blames the
+    // symmetry.
+    for (const auto &load : loads)
+      require_finite_values(load, times, points, plate, disc.mpi_communicator);
+    const std::string symmetry =
       (disc.symmetry() == Symmetry::half ? "half" : "quarter");
     for (const unsigned int axis : disc.symmetry_axes())
       for (const auto &load : loads)
@@ -385,22 +402,21 @@ namespace liftoff
                                    QGauss<1>(fe.degree + 2),
                                    flags);
     FullPlatePoints meshed;
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          for (const auto &p : fe_values.get_quadrature_points())
-            meshed.area.push_back(p);
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary()
-                && cell->face(f)->boundary_id()
-                     < Discretization::x_symmetry_plane)
-              {
-                fe_face_values.reinit(cell, f);
-                for (const auto &p : fe_face_values.get_quadrature_points())
-                  meshed.edge.push_back(p);
-              }
-        }
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        fe_values.reinit(cell);
+        for (const auto &p : fe_values.get_quadrature_points())
+          meshed.area.push_back(p);
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary()
+              && cell->face(f)->boundary_id()
+                   < Discretization::x_symmetry_plane)
+            {
+              fe_face_values.reinit(cell, f);
+              for (const auto &p : fe_face_values.get_quadrature_points())
+                meshed.edge.push_back(p);
+            }
+      }
     FullPlatePoints full = meshed;
     for (const unsigned int axis : disc.symmetry_axes())
       for (auto *set : {&full.area, &full.edge})
@@ -426,9 +442,6 @@ namespace liftoff
     if (load.kind != other.kind
         || !nearly_equal(load.magnitude, other.magnitude))
       return false;
-    // Where `load` acts, in full plate coordinates.
-    std::function<bool(const Point<2> &)> acts_at;
-    const std::vector<Point<2>>          *candidates = &points.area;
     switch (load.kind)
       {
       case Kind::point:
@@ -436,13 +449,11 @@ namespace liftoff
           return false;
         break;
       case Kind::pressure:
-        {
-          const BoundingBox<2> a = region_of(load, plate);
-          if (!is_mirrored_rectangle(a, region_of(other, plate), axis))
-            return false;
-          acts_at = [a](const Point<2> &p) { return a.point_inside(p, 1e-12); };
-          break;
-        }
+        if (!is_mirrored_rectangle(region_of(load, plate),
+                                   region_of(other, plate),
+                                   axis))
+          return false;
+        break;
       case Kind::line:
         {
           const bool         edge_normal_to_axis = ((load.edge / 2) == axis);
@@ -450,15 +461,6 @@ namespace liftoff
             edge_normal_to_axis ? (load.edge ^ 1u) : load.edge;
           if (other.edge != image_edge)
             return false;
-          // Edges 0, 1 lie at x = -1/2, 1/2; edges 2, 3 at y = -mu/2, mu/2.
-          const unsigned int normal = load.edge / 2;
-          const double       at =
-            (load.edge % 2 == 0 ? plate.get_boundary_points().first
-                                : plate.get_boundary_points().second)[normal];
-          acts_at = [normal, at](const Point<2> &p) {
-            return std::abs(p[normal] - at) < 1e-12;
-          };
-          candidates = &points.edge;
           break;
         }
       }
@@ -469,8 +471,33 @@ namespace liftoff
         return false;
     if (load.kind == Kind::point)
       return true;
+    const auto [candidates, acts_at] = where_it_acts(load, plate, points);
     return have_mirrored_intensities(
       load, other, axis, *candidates, acts_at, times, disc.mpi_communicator);
+  }
+
+
+  std::pair<const std::vector<Point<2>> *,
+            std::function<bool(const Point<2> &)>>
+  LoadSet::where_it_acts(const Load            &load,
+                         const BoundingBox<2>  &plate,
+                         const FullPlatePoints &points)
+  {
+    if (load.kind == Kind::line)
+      {
+        // Edges 0, 1 lie at x = -1/2, 1/2; edges 2, 3 at y = -mu/2, mu/2.
+        const unsigned int normal = load.edge / 2;
+        const double       at =
+          (load.edge % 2 == 0 ? plate.get_boundary_points().first
+                              : plate.get_boundary_points().second)[normal];
+        return {&points.edge, [normal, at](const Point<2> &p) {
+                  return std::abs(p[normal] - at) < 1e-12;
+                }};
+      }
+    const BoundingBox<2> region = region_of(load, plate);
+    return {&points.area, [region](const Point<2> &p) {
+              return region.point_inside(p, 1e-12);
+            }};
   }
 
 
@@ -501,41 +528,78 @@ namespace liftoff
 
 
   std::string
+  LoadSet::non_finite_history(const Load &load, const double tau)
+  {
+    return load.name + "/Time history = <" + load.history_expression + "> is "
+           + std::to_string(load.history->value(Point<1>(tau)))
+           + " at tau = " + time_text(tau) + ".";
+  }
+
+
+  std::string
+  LoadSet::non_finite_intensity(const Load &load, const double tau)
+  {
+    return load.name + "/Intensity = <" + load.intensity_expression
+           + "> times Magnitude is not a finite number at some quadrature "
+             "point at tau = "
+           + time_text(tau) + ".";
+  }
+
+
+  std::string
   LoadSet::non_finite_load(const double tau) const
   {
     LA::MPI::Vector scratch;
     discretization->reinit_vector(scratch);
-    std::ostringstream time;
-    time << std::setprecision(8) << tau;
     for (const auto &load : loads)
       {
         const double h = load.history->value(Point<1>(tau));
         if (!std::isfinite(h))
-          return load.name + "/Time history = <" + load.history_expression
-                 + "> is " + std::to_string(h) + " at tau = " + time.str()
-                 + ".";
+          return non_finite_history(load, tau);
         if (load.intensity_depends_on_time)
           assemble_spatial_part(load, tau, scratch);
         else
           scratch = load.spatial_part;
         if (!is_finite(scratch))
-          return load.name
-                 + (load.kind == Kind::point
-                      ? ": Magnitude = " + std::to_string(load.magnitude)
-                          + " is too large to be represented"
-                      : "/Intensity = <" + load.intensity_expression
-                          + "> times Magnitude is not a finite number at "
-                            "some quadrature point at tau = "
-                          + time.str())
-                 + ".";
+          return load.kind == Kind::point
+                   ? load.name
+                       + ": Magnitude = " + std::to_string(load.magnitude)
+                       + " is too large to be represented."
+                   : non_finite_intensity(load, tau);
         scratch *= h;
         if (!is_finite(scratch))
           return load.name + ": Magnitude * Time history overflows at tau = "
-                 + time.str() + ".";
+                 + time_text(tau) + ".";
       }
     if (body_force != nullptr)
-      return "the body force at tau = " + time.str() + ".";
-    return "the sum of the loads overflows at tau = " + time.str() + ".";
+      return "the body force at tau = " + time_text(tau) + ".";
+    return "the sum of the loads overflows at tau = " + time_text(tau) + ".";
+  }
+
+
+  void
+  LoadSet::require_finite_values(const Load                &load,
+                                 const std::vector<double> &times,
+                                 const FullPlatePoints     &points,
+                                 const BoundingBox<2>      &plate,
+                                 const MPI_Comm             comm)
+  {
+    for (const double tau : times)
+      AssertThrow(std::isfinite(load.history->value(Point<1>(tau))),
+                  ExcMessage(non_finite_history(load, tau)));
+    if (load.kind == Kind::point)
+      return;
+    const auto [candidates, acts_at] = where_it_acts(load, plate, points);
+    const auto   n_times = load.intensity_depends_on_time ? times.size() : 1;
+    unsigned int first_bad_time = n_times;
+    for (const auto &p : *candidates)
+      if (acts_at(p))
+        for (unsigned int k = 0; k < first_bad_time; ++k)
+          if (!std::isfinite(load.magnitude * load.intensity_at(p, times[k])))
+            first_bad_time = k;
+    first_bad_time = Utilities::MPI::min(first_bad_time, comm);
+    AssertThrow(first_bad_time == n_times,
+                ExcMessage(non_finite_intensity(load, times[first_bad_time])));
   }
 
 
@@ -619,28 +683,27 @@ namespace liftoff
         }
     };
 
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell_rhs = 0;
-          if (edge == numbers::invalid_unsigned_int)
-            {
-              fe_values.reinit(cell);
-              integrate(fe_values);
-            }
-          else
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary()
-                  && cell->face(f)->boundary_id() == edge)
-                {
-                  fe_face_values.reinit(cell, f);
-                  integrate(fe_face_values);
-                }
-          cell->get_dof_indices(dof_indices);
-          disc.constraints.distribute_local_to_global(cell_rhs,
-                                                      dof_indices,
-                                                      vector);
-        }
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        cell_rhs = 0;
+        if (edge == numbers::invalid_unsigned_int)
+          {
+            fe_values.reinit(cell);
+            integrate(fe_values);
+          }
+        else
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary()
+                && cell->face(f)->boundary_id() == edge)
+              {
+                fe_face_values.reinit(cell, f);
+                integrate(fe_face_values);
+              }
+        cell->get_dof_indices(dof_indices);
+        disc.constraints.distribute_local_to_global(cell_rhs,
+                                                    dof_indices,
+                                                    vector);
+      }
     vector.compress(VectorOperation::add);
   }
 

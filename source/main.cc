@@ -27,7 +27,9 @@ namespace
     "                                    checkpoint in its output directory\n"
     "                                    (same number of ranks; the end time\n"
     "                                    may be changed)\n"
-    "       liftoff --quiet ...          no progress line (also -q; with\n"
+    "       liftoff --quiet ...          no progress line, and one status\n"
+    "                                    line instead of the summary, which\n"
+    "                                    stays in summary.txt (also -q; with\n"
     "                                    any of the above)\n"
     "       liftoff --parameters         print every parameter with its "
     "default and documentation\n"
@@ -61,38 +63,28 @@ namespace
   }
 
 
-  // Rank 0 reads the scene (from a file or stdin) and follows its include
-  // lines; all ranks parse the same text, so every rank fails alike on bad
-  // input.
-  std::string
+  // Rank 0 reads the scene (from a file or stdin) and the files its
+  // include lines name; all ranks parse the same text, so every rank fails
+  // alike on bad input.
+  liftoff::SceneText
   read_scene(const std::string &name, const MPI_Comm comm)
   {
-    std::string text;
-    std::string error;
+    liftoff::SceneText scene;
+    std::string        error;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        if (name == "-")
-          text.assign(std::istreambuf_iterator<char>(std::cin), {});
-        else
-          {
-            std::ifstream in(name);
-            if (!in)
-              error = "Cannot read the scene file " + name;
-            text.assign(std::istreambuf_iterator<char>(in), {});
-          }
-        if (error.empty())
-          try
-            {
-              liftoff::check_include_cycles(text, name);
-            }
-          catch (const std::exception &e)
-            {
-              error = liftoff::message_of(e);
-            }
-      }
+      try
+        {
+          scene = liftoff::SceneText::read(name);
+        }
+      catch (const std::exception &e)
+        {
+          error = liftoff::message_of(e);
+        }
     error = dealii::Utilities::MPI::broadcast(comm, error, 0);
     AssertThrow(error.empty(), dealii::ExcMessage(error));
-    return dealii::Utilities::MPI::broadcast(comm, text, 0);
+    scene.text    = dealii::Utilities::MPI::broadcast(comm, scene.text, 0);
+    scene.origins = dealii::Utilities::MPI::broadcast(comm, scene.origins, 0);
+    return scene;
   }
 } // namespace
 
@@ -129,27 +121,37 @@ main(int argc, char **argv)
     }
   using Start                    = liftoff::Simulator::Start;
   Start                    start = Start::fresh;
-  bool                     quiet = false, is_usage_error = false;
+  bool                     quiet = false;
+  std::string              usage_error;
   std::vector<std::string> scenes;
   for (int i = 1; i < argc; ++i)
     {
       const std::string argument = argv[i];
       if (argument == "--resume" || argument == "--overwrite")
         {
-          is_usage_error |= (start != Start::fresh);
-          start = argument == "--resume" ? Start::resume : Start::overwrite;
+          const Start asked =
+            argument == "--resume" ? Start::resume : Start::overwrite;
+          if (start != Start::fresh && start != asked)
+            usage_error = "--resume continues the results in the output "
+                          "directory and --overwrite removes them: give one "
+                          "of them, not both.";
+          start = asked;
         }
       else if (argument == "--quiet" || argument == "-q")
         quiet = true;
       else if (argument.size() > 1 && argument[0] == '-')
-        is_usage_error = true;
+        usage_error = "unknown option " + argument + ".";
       else
         scenes.push_back(argument);
     }
-  if (is_usage_error || scenes.size() != 1)
+  if (usage_error.empty() && scenes.size() != 1)
+    usage_error = scenes.empty() ? "no scene file given."
+                                 : "one scene file at a time, not "
+                                     + std::to_string(scenes.size()) + ".";
+  if (!usage_error.empty())
     {
       if (is_root)
-        std::cerr << usage << std::endl;
+        std::cerr << "liftoff: " << usage_error << "\n\n" << usage << std::endl;
       return 2;
     }
 
@@ -163,15 +165,21 @@ main(int argc, char **argv)
   // Keep the simulator alive until its exception has been caught: its
   // destructors must not run during stack unwinding under MPI.
   std::exception_ptr failure;
+  // Whether the mesh grows during the run: then running out of memory is
+  // the refinement's doing, not the initial mesh's (which is checked
+  // against the memory before it is built).
+  bool is_adaptive = false;
   {
     dealii::ParameterHandler prm;
     liftoff::Simulator       simulator(comm, true, !quiet);
     try
       {
         liftoff::Simulator::declare_parameters(prm);
-        std::istringstream scene(read_scene(scene_name, comm));
-        prm.parse_input(scene, scene_name);
+        read_scene(scene_name, comm).parse_into(prm, scene_name);
         simulator.parse_parameters(prm);
+        prm.enter_subsection("Mesh refinement");
+        is_adaptive = prm.get_bool("Adaptive");
+        prm.leave_subsection();
         simulator.run(prm, start);
       }
     catch (...)
@@ -210,8 +218,13 @@ main(int argc, char **argv)
                 << ": out of memory (std::bad_alloc) on rank "
                 << dealii::Utilities::MPI::this_mpi_process(comm)
                 << "; the scene needs more memory than this machine or its "
-                   "limits give (see Discretization/Cells along x, y, Global "
-                   "refinements, Polynomial degree)."
+                   "limits give "
+                << (is_adaptive
+                      ? "as its adaptive mesh grows (see Mesh "
+                        "refinement/Maximum number of cells and Maximum "
+                        "level)."
+                      : "(see Discretization/Cells along x, y, Global "
+                        "refinements, Polynomial degree).")
                 << std::endl;
     }
   catch (const std::exception &e)

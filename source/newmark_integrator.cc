@@ -152,6 +152,13 @@ namespace liftoff
 
 
   bool
+  NewmarkIntegrator::dissipates_energy() const
+  {
+    return gamma > 0.5 + 1e-12;
+  }
+
+
+  bool
   NewmarkIntegrator::is_conditionally_stable() const
   {
     // Hughes (1987), sec. 9.1: for gamma >= 1/2 Newmark is unconditionally

@@ -113,25 +113,24 @@ namespace liftoff
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
 
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell_stiffness = 0;
-          cell_mass      = 0;
-          fe_values.reinit(cell);
-          shear_strain.reinit(cell);
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        cell_stiffness = 0;
+        cell_mass      = 0;
+        fe_values.reinit(cell);
+        shear_strain.reinit(cell);
 
-          add_bending_and_inertia(fe_values, plate, cell_stiffness, cell_mass);
-          add_shear(shear_strain, shear, cell_stiffness);
+        add_bending_and_inertia(fe_values, plate, cell_stiffness, cell_mass);
+        add_shear(shear_strain, shear, cell_stiffness);
 
-          cell->get_dof_indices(dof_indices);
-          disc.constraints.distribute_local_to_global(cell_stiffness,
-                                                      dof_indices,
-                                                      stiffness);
-          disc.constraints.distribute_local_to_global(cell_mass,
-                                                      dof_indices,
-                                                      mass);
-        }
+        cell->get_dof_indices(dof_indices);
+        disc.constraints.distribute_local_to_global(cell_stiffness,
+                                                    dof_indices,
+                                                    stiffness);
+        disc.constraints.distribute_local_to_global(cell_mass,
+                                                    dof_indices,
+                                                    mass);
+      }
     stiffness.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);
   }

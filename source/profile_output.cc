@@ -2,6 +2,7 @@
 
 #include <liftoff/profile_output.h>
 
+#include <algorithm>
 #include <iomanip>
 
 namespace liftoff
@@ -26,7 +27,9 @@ namespace liftoff
                       "",
                       Patterns::List(Patterns::Double(0.0)),
                       "Times tau at which profiles.csv gets a profile, "
-                      "each at the step nearest to it. Times beyond "
+                      "each at the step nearest to it (times nearer to "
+                      "each other than half a Time step share one "
+                      "profile; a time given twice is refused). Times beyond "
                       "Time integration/End time are not reached: the run "
                       "warns about them and goes on (a scene may be run "
                       "shorter for a try or resumed further).");
@@ -45,6 +48,11 @@ namespace liftoff
     n_points = prm.get_integer("Profile points");
     times    = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Profile times")));
+    for (unsigned int k = 0; k < times.size(); ++k)
+      AssertThrow(std::count(times.begin(), times.begin() + k, times[k]) == 0,
+                  ExcMessage("Output/Profile times lists "
+                             + Utilities::to_string(times[k])
+                             + " twice; each time gives one profile."));
     AssertThrow(n_points != 1,
                 ExcMessage("Output/Profile points must be 0 (no profile) or "
                            "at least 2."));
@@ -64,9 +72,10 @@ namespace liftoff
     if (n_points == 0)
       return;
     for (const auto &p : {start, end})
-      AssertThrow(disc.plate_box().point_inside(p, 1e-12),
+      AssertThrow(disc.is_on_plate(p),
                   ExcMessage("Output/Profile start and Profile end must lie "
-                             "on the plate [-1/2, 1/2] x [-mu/2, mu/2]; "
+                             "on "
+                             + disc.plate_description() + "; "
                              + std::to_string(p[0]) + ", "
                              + std::to_string(p[1]) + " does not."));
   }

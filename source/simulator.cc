@@ -56,6 +56,7 @@ namespace liftoff
                        const bool     show_progress)
       : mpi_communicator(comm)
       , pcout(std::cout, verbose && Utilities::MPI::this_mpi_process(comm) == 0)
+      , is_quiet(!show_progress)
       , discretization(comm)
       , active_set(discretization, foundation, timer)
       , progress_line(comm, std::cout)
@@ -86,7 +87,9 @@ namespace liftoff
                       "run into it is refused) and refuses it if it holds an "
                       "earlier run's results, unless started with `liftoff "
                       "--overwrite`, which removes them, or `--resume`. Only "
-                      "the files liftoff writes are ever touched.");
+                      "the files liftoff writes are ever touched. `#` "
+                      "starts a comment in a parameter file, so a name "
+                      "cannot hold it: `run#3` is read as `run`.");
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
@@ -99,6 +102,7 @@ namespace liftoff
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
     NewmarkIntegrator::declare_parameters(prm);
+    EnergyCheck::declare_parameters(prm);
     ActiveSetIteration::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
     Checkpoint::declare_parameters(prm);
@@ -120,11 +124,12 @@ namespace liftoff
     prm.leave_subsection();
 
     plate.parse_parameters(prm);
-    discretization.parse_parameters(prm);
+    discretization.parse_parameters(prm, plate);
     mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
     newmark.parse_parameters(prm);
+    energy_check.parse_parameters(prm);
     time_history.show_dissipated_energy(foundation.has_damping());
     active_set.parse_parameters(prm);
     active_set.linear_solver().parse_parameters(prm);
@@ -234,7 +239,7 @@ namespace liftoff
     // The direct solver's factor dominates a large scene: what it and the
     // mesh would allocate is estimated before anything is built.
     discretization.check_memory(active_set.linear_solver().factor_placement());
-    discretization.setup(plate);
+    discretization.setup();
     mesh_refinement.refine_around_points(
       discretization, loads.point_load_positions(discretization));
     if (analysis == Analysis::static_analysis)
@@ -242,9 +247,13 @@ namespace liftoff
     else
       loads.check_against(discretization, newmark.time_step, newmark.n_steps());
 
+    {
+      SectionTimer::Scope t(timer, "setup");
+      foundation.setup(discretization);
+    }
     // Nothing to compute: most likely a load whose Magnitude was left at its
     // default 0.
-    if (loads.is_empty())
+    if (loads.is_empty() && !foundation.is_pressing_plate())
       AssertThrow(analysis == Analysis::dynamic_analysis
                     && !initial_conditions.is_at_rest(discretization),
                   ExcMessage(
@@ -253,7 +262,8 @@ namespace liftoff
                                     ? " and starts at rest (Initial "
                                       "conditions are 0)"
                                     : "")
-                    + ", so its solution is u = 0. Give a load a "
+                    + " on a bed that presses nowhere (Foundation/Initial "
+                      "gap >= 0), so its solution is u = 0. Give a load a "
                       "Magnitude"
                     + (analysis == Analysis::dynamic_analysis
                          ? ", or the plate an initial displacement or "
@@ -270,7 +280,6 @@ namespace liftoff
       matrices.assemble(discretization, plate);
     }
     SectionTimer::Scope t(timer, "setup");
-    foundation.setup(discretization);
     loads.setup(discretization);
     state.reinit(discretization);
     for (auto *vector :
@@ -396,6 +405,88 @@ namespace liftoff
 
 
   void
+  Simulator::check_energy_balance()
+  {
+    if (!energy_check.exceeds(state.step,
+                              state.energies,
+                              state.initial_energies,
+                              newmark.dissipates_energy()))
+      return;
+    const std::string message =
+      "Step " + std::to_string(state.step) + " (tau = " + format_time(state.tau)
+      + "): " + energy_check.describe_violation()
+      + ". Likely cause: " + likely_cause_of_energy_error();
+    AssertThrow(energy_check.mode() != EnergyCheck::Mode::fail,
+                ExcMessage(message));
+    energy_warning = message;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "liftoff: warning: " << message << std::endl;
+  }
+
+
+  std::string
+  Simulator::likely_cause_of_energy_error() const
+  {
+    std::vector<std::string> causes;
+    // The plate on its springs swings at sqrt(Gamma) (unit mass): a step
+    // longer than a radian of that swing lets contact switch within it.
+    const double omega = foundation.rigid_body_frequency();
+    if (newmark.time_step * omega > 1)
+      causes.push_back(
+        "Time integration/Time step = " + format_time(newmark.time_step)
+        + " is long for the bed: the plate swings on it at "
+          "sqrt(Gamma) = "
+        + format_time(omega) + ", so Time step * sqrt(Gamma) = "
+        + format_time(newmark.time_step * omega)
+        + " > 1; use a Time step below " + format_time(1 / omega));
+    const double tolerance = active_set.linear_solver().relative_tolerance();
+    if (tolerance > 1e-8)
+      causes.push_back("Linear solver/Tolerance = " + format_time(tolerance)
+                       + " lets each solve miss its equations by that share; "
+                         "use 1e-10 or less");
+    if (causes.empty())
+      causes.push_back(
+        "a parameter near the end of its range (Foundation/Stiffness, Shear "
+        "modulus, Damping) or a mesh too coarse for the contact front; "
+        "compare a run with half the Time step");
+    std::string text;
+    for (const auto &cause : causes)
+      text += (text.empty() ? "" : "; or ") + cause;
+    return text + ".";
+  }
+
+
+  std::string
+  Simulator::likely_cause_of_ill_conditioning() const
+  {
+    std::vector<std::string> causes;
+    const std::string        edge = discretization.only_supported_edge();
+    if (!edge.empty())
+      causes.push_back("the plate is held on one edge only (Boundary "
+                       "conditions/"
+                       + edge
+                       + "), about which it can turn: a mechanism that "
+                         "only the foundation's contact holds; clamp that "
+                         "edge or support another");
+    const double elongation = discretization.largest_cell_aspect_ratio();
+    if (elongation > 100)
+      causes.push_back("the cells are " + format_time(elongation)
+                       + " times longer than wide (Plate/Aspect ratio against "
+                         "Discretization/Cells along x and y); use cells "
+                         "closer to square");
+    if (causes.empty())
+      causes.push_back(
+        "a very small Foundation/Stiffness under a thin plate (Plate/Thickness "
+        "ratio) with free edges; use a stiffer foundation, support an edge "
+        "or run a dynamic analysis");
+    std::string text;
+    for (const auto &cause : causes)
+      text += (text.empty() ? "" : "; or ") + cause;
+    return text + ".";
+  }
+
+
+  void
   Simulator::stop_for_signal(const int signal, const std::string &when)
   {
     stopped_by_signal = signal;
@@ -508,14 +599,17 @@ namespace liftoff
           }
         throw;
       }
-    write_summary("completed");
+    write_summary(energy_warning.empty() ? "completed"
+                                         : "completed with warnings");
   }
 
 
   EnergyBalance
   Simulator::energies()
   {
-    if (!time_history.wants_energies())
+    const bool is_checked =
+      analysis == Analysis::dynamic_analysis && energy_check.is_enabled();
+    if (!time_history.wants_energies() && !is_checked)
       return EnergyBalance{0, 0, 0, state.work, state.dissipated};
     return state_energies();
   }
@@ -566,7 +660,11 @@ namespace liftoff
                              "foundation everywhere (or keeps too little "
                              "contact to be held) and has no support, so it "
                              "has no static equilibrium under these loads. "
-                             "Use a dynamic analysis or support an edge."));
+                           + (analysis == Analysis::dynamic_analysis
+                                ? "Give it a foundation (Foundation/Model) "
+                                  "or support an edge."
+                                : "Use a dynamic analysis or support an "
+                                  "edge.")));
     AssertThrow(result.converged,
                 ExcMessage(what + ": the active set "
                            + unsettled(result, active_set.max_iterations)
@@ -584,11 +682,8 @@ namespace liftoff
                              "it by "
                            + format_time(change)
                            + " (relative). The system is too ill-conditioned "
-                             "for double precision, typically a very small "
-                             "Foundation/Stiffness under a thin plate "
-                             "(Plate/Thickness ratio) with free edges; use "
-                             "a stiffer foundation, support an edge or run a "
-                             "dynamic analysis."));
+                             "for double precision. Likely cause: "
+                           + likely_cause_of_ill_conditioning()));
     return result;
   }
 
@@ -976,6 +1071,7 @@ namespace liftoff
                          {&state.v, &state.a},
                          state.energies.values(),
                          state.load);
+    check_energy_balance();
   }
 
 
@@ -1035,6 +1131,7 @@ namespace liftoff
     // contact status and the matrix and factor as they are; the outputs
     // keep what they have written.
     archive &state;
+    archive &energy_check;
     transfer(archive, foundation);
     if constexpr (Archive::is_loading::value)
       active_set.load(archive, effective_base_matrix());
@@ -1083,6 +1180,8 @@ namespace liftoff
 
     RunSummary summary;
     summary.add("status", status);
+    if (!energy_warning.empty())
+      summary.add("warning", energy_warning);
     summary.add("liftoff",
                 std::string(LIFTOFF_VERSION) + " (git " + LIFTOFF_GIT_COMMIT
                   + ")");
@@ -1104,6 +1203,13 @@ namespace liftoff
                     largest_energy_jump);
       }
     summary.add("steps", double(rows.empty() ? 0 : rows.size() - 1));
+    if (analysis == Analysis::dynamic_analysis && energy_check.is_enabled())
+      {
+        summary.add("energy balance error, largest share of the energy scale",
+                    energy_check.largest_relative_error());
+        summary.add("energy balance error, its step",
+                    double(energy_check.step_of_largest_error()));
+      }
     summary.add("active-set iterations per step, mean", iterations.mean);
     summary.add("active-set iterations per step, max", double(iterations.max));
     summary.add("steps whose active set cycled", double(iterations.n_cycled));
@@ -1126,7 +1232,14 @@ namespace liftoff
       sections.emplace_back(section, seconds);
     summary.add("wall time by section [s]", sections);
 
-    pcout << summary.text();
+    if (is_quiet)
+      pcout << "status: " << status
+            << (writes_files()
+                  ? "; summary in " + output_directory + "/summary.txt"
+                  : std::string())
+            << std::endl;
+    else
+      pcout << summary.text();
     if (writes_files())
       {
         if (output_folder)

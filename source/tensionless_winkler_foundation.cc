@@ -36,9 +36,12 @@ namespace liftoff
                       "foundation.");
     prm.declare_entry("Stiffness",
                       "1",
-                      Patterns::Double(0.0),
+                      Patterns::Double(0.0, 1e12),
                       "Gamma = K_f L^4 / D, the dimensionless Winkler "
-                      "modulus.");
+                      "modulus (at most 1e12: beyond it the plate's "
+                      "stiffness is lost in the bed's in double precision; "
+                      "at 1e16 a static run gave w 3e4 times too large "
+                      "with a balanced energy, doc/reliability.md).");
     prm.declare_entry(
       "Contact tolerance",
       "1e-9",
@@ -59,26 +62,31 @@ namespace liftoff
       "0",
       Patterns::Anything(),
       "g(x, y), muParser in x, y of the full plate: the distance between the "
-      "unloaded plate and the bed, in units of L (w is positive into the "
-      "bed). The springs act where w > g with the pressure Gamma (w - g): "
+      "unloaded plate and the bed, in the unit of w, F0 L^2 / D (w is "
+      "positive into the bed). The springs act where w > g with the pressure "
+      "Gamma (w - g): "
       "g > 0 is a gap (a curled slab, a void), g < 0 a pre-compression (a "
       "settled support). Must be finite on the plate, and symmetric on a "
       "half or quarter model. The contact tolerance applies to w - g.");
     prm.declare_entry(
       "Damping",
       "0",
-      Patterns::Double(0.0),
+      Patterns::Double(0.0, 1e8),
       "c = C_f L^2 / sqrt(rho H D), dashpots per unit area beside the "
-      "springs (a viscous subgrade; 0: none). They act only in contact, "
+      "springs (a viscous subgrade; 0: none; at most 1e8, where the "
+      "contact set of a point load no longer settles). They act only in "
+      "contact, "
       "and the pressure Gamma (w - g) + c w_dot is never tensile: where "
       "spring and dashpot together would pull, the point is out of contact "
       "(doc/model.md). The dissipated energy becomes a history column.");
     prm.declare_entry(
       "Shear modulus",
       "0",
-      Patterns::Double(0.0),
+      Patterns::Double(0.0, 1e12),
       "G_p = G_f L^2 / D, the dimensionless shear modulus of a Pasternak "
-      "shear layer on the springs (0: none, a Winkler bed). The layer "
+      "shear layer on the springs (0: none, a Winkler bed; at most 1e12: at "
+      "1e14 the energy balance is off by 1.4e-3, at 1e20 by its whole "
+      "size). The layer "
       "stores 1/2 G_p |grad w|^2 per unit area over the contact region "
       "(the whole plate when bilateral) and adds -G_p Lap w to the "
       "foundation pressure there. Tensionless: the layer acts only where "
@@ -143,35 +151,34 @@ namespace liftoff
     jxw.clear();
     gauss_points.clear();
     shape_gradients.clear();
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          cell->get_dof_indices(dofs);
-          bool is_hanging = false;
-          for (const unsigned int i : w_dofs)
-            {
-              cell_w_dof_indices.push_back(dofs[i]);
-              // Constraints w_i = 0 (edges) drop a row and column of the
-              // cell term; a hanging node (w_i a combination of other
-              // nodes) sends them to those nodes (add_cell_term()).
-              const auto *entries =
-                disc.constraints.get_constraint_entries(dofs[i]);
-              is_hanging = is_hanging || (entries && !entries->empty());
-              cell_w_dof_is_constrained.push_back(
-                disc.constraints.is_constrained(dofs[i]));
-            }
-          cell_has_hanging_node.push_back(is_hanging);
-          for (unsigned int q = 0; q < n_q_points; ++q)
-            {
-              jxw.push_back(fe_values.JxW(q));
-              gauss_points.push_back(fe_values.quadrature_point(q));
-              if (has_layer())
-                for (const unsigned int i : w_dofs)
-                  shape_gradients.push_back(fe_values.shape_grad(i, q));
-            }
-          cell_index.push_back(cell->active_cell_index());
-        }
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(dofs);
+        bool is_hanging = false;
+        for (const unsigned int i : w_dofs)
+          {
+            cell_w_dof_indices.push_back(dofs[i]);
+            // Constraints w_i = 0 (edges) drop a row and column of the
+            // cell term; a hanging node (w_i a combination of other
+            // nodes) sends them to those nodes (add_cell_term()).
+            const auto *entries =
+              disc.constraints.get_constraint_entries(dofs[i]);
+            is_hanging = is_hanging || (entries && !entries->empty());
+            cell_w_dof_is_constrained.push_back(
+              disc.constraints.is_constrained(dofs[i]));
+          }
+        cell_has_hanging_node.push_back(is_hanging);
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            jxw.push_back(fe_values.JxW(q));
+            gauss_points.push_back(fe_values.quadrature_point(q));
+            if (has_layer())
+              for (const unsigned int i : w_dofs)
+                shape_gradients.push_back(fe_values.shape_grad(i, q));
+          }
+        cell_index.push_back(cell->active_cell_index());
+      }
     in_contact.assign(jxw.size(), model == Model::none ? 0 : 1);
     w_at_points.resize(jxw.size());
     in_matrix = in_contact;
@@ -186,6 +193,7 @@ namespace liftoff
     gap.clear();
     effective_gap.clear();
     is_gapped           = false;
+    is_precompressed    = false;
     is_affine           = false;
     effective_stiffness = stiffness;
     matrix_stiffness    = stiffness;
@@ -198,11 +206,15 @@ namespace liftoff
     const std::vector<unsigned int> axes = discretization->symmetry_axes();
     std::vector<double>             values(jxw.size());
     bool is_finite = true, is_symmetric = true, is_zero = true;
+    bool is_pressed = false;
     for (unsigned int i = 0; i < jxw.size(); ++i)
       {
         values[i] = g->value(gauss_points[i]);
-        is_finite = is_finite && std::isfinite(values[i]);
-        is_zero   = is_zero && values[i] == 0.0;
+        // Beyond 1e100 the bed's force Gamma g and its energy overflow
+        // before anything else does.
+        is_finite  = is_finite && std::abs(values[i]) <= 1e100;
+        is_zero    = is_zero && values[i] == 0.0;
+        is_pressed = is_pressed || values[i] < 0.0;
         for (const unsigned int axis : axes)
           {
             Point<2> image = gauss_points[i];
@@ -215,8 +227,9 @@ namespace liftoff
     const MPI_Comm comm = discretization->mpi_communicator;
     AssertThrow(Utilities::MPI::min(int(is_finite), comm) == 1,
                 ExcMessage(name + " = <" + abbreviated(gap_expression)
-                           + "> is not a finite number at some Gauss point "
-                             "of the plate; it must be finite everywhere."));
+                           + "> is not a finite number of at most 1e100 in "
+                             "magnitude at some Gauss point of the plate; it "
+                             "must be one everywhere."));
     AssertThrow(Utilities::MPI::min(int(is_symmetric), comm) == 1,
                 ExcMessage(name + " = <" + abbreviated(gap_expression)
                            + "> is not symmetric about the symmetry planes "
@@ -224,7 +237,8 @@ namespace liftoff
                              "plate or give a symmetric gap."));
     // Decided on all ranks alike: a rank without cells takes part in the
     // collective calls of the gap too.
-    is_gapped = (Utilities::MPI::min(int(is_zero), comm) == 0);
+    is_gapped        = (Utilities::MPI::min(int(is_zero), comm) == 0);
+    is_precompressed = (Utilities::MPI::max(int(is_pressed), comm) == 1);
     if (is_gapped)
       {
         gap = std::move(values);
@@ -249,6 +263,20 @@ namespace liftoff
   TensionlessWinklerFoundation::has_initial_gap() const
   {
     return is_gapped;
+  }
+
+
+  double
+  TensionlessWinklerFoundation::rigid_body_frequency() const
+  {
+    return model == Model::none ? 0.0 : std::sqrt(stiffness);
+  }
+
+
+  bool
+  TensionlessWinklerFoundation::is_pressing_plate() const
+  {
+    return is_precompressed;
   }
 
 

@@ -6,9 +6,12 @@
 
 #include <liftoff/time_history.h>
 
+#include <algorithm>
 #include <charconv>
 
 #include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace liftoff
 {
@@ -64,7 +67,14 @@ namespace liftoff
   void
   TimeHistory::parse_parameters(ParameterHandler &prm)
   {
-    probe_points    = parse_points(prm.get("Probe points"));
+    probe_points = parse_points(prm.get("Probe points"));
+    for (unsigned int i = 0; i < probe_points.size(); ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        AssertThrow(probe_points[i] != probe_points[j],
+                    ExcMessage("Output/Probe points: the point "
+                               + std::to_string(probe_points[i][0]) + ", "
+                               + std::to_string(probe_points[i][1])
+                               + " is given twice."));
     write_energies  = prm.get_bool("Write energies");
     write_resultant = prm.get_bool("Write foundation resultant");
   }
@@ -74,12 +84,35 @@ namespace liftoff
   TimeHistory::check_against(const Discretization &disc) const
   {
     for (const auto &p : probe_points)
-      AssertThrow(disc.plate_box().point_inside(p, 1e-12),
+      AssertThrow(disc.is_on_plate(p),
                   ExcMessage("Output/Probe points: the point "
                              + std::to_string(p[0]) + ", "
-                             + std::to_string(p[1])
-                             + " lies outside the plate [-1/2, 1/2] x [-mu/2, "
-                               "mu/2]."));
+                             + std::to_string(p[1]) + " lies outside "
+                             + disc.plate_description() + "."));
+  }
+
+
+  std::vector<std::string>
+  TimeHistory::probe_column_names() const
+  {
+    // Six digits name most points briefly; points that six digits do not
+    // tell apart (0.333333 and 0.3333334) get as many as they need.
+    for (int digits = 6;; ++digits)
+      {
+        std::vector<std::string> names;
+        for (const auto &p : probe_points)
+          {
+            std::ostringstream name;
+            name << std::setprecision(digits) << "w(" << p[0] << ";" << p[1]
+                 << ")";
+            names.push_back(name.str());
+          }
+        std::vector<std::string> sorted = names;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()
+            || digits == std::numeric_limits<double>::max_digits10)
+          return names;
+      }
   }
 
 
@@ -149,8 +182,8 @@ namespace liftoff
   {
     std::ostream &out = file.stream();
     out << "tau";
-    for (const auto &p : probe_points)
-      out << ",w(" << p[0] << ";" << p[1] << ")";
+    for (const auto &name : probe_column_names())
+      out << ',' << name;
     out << ",contact_fraction,max_uplift,active_set_iterations,"
            "active_set_cycle,cells,dofs";
     if (write_energies)

@@ -41,4 +41,16 @@ check $? "a source tree outside git: the commit is 'unknown'"
 status=$?
 [ "$status" -eq 2 ] && grep -q '^usage: liftoff' stderr.txt && [ ! -s stdout.txt ]
 check $? "--no-such-option: exit $status, usage on stderr"
+grep -q '^liftoff: unknown option --no-such-option' stderr.txt
+check $? "--no-such-option: the reason first"
+
+# Two starts that exclude each other: the reason, not only the usage.
+"$liftoff" --resume --overwrite scene.prm >stdout.txt 2>stderr.txt
+status=$?
+[ "$status" -eq 2 ] && grep -q '^liftoff: --resume continues the results .* --overwrite removes them: give one of them, not both' stderr.txt && grep -q '^usage: liftoff' stderr.txt
+check $? "--resume --overwrite: exit $status, the reason and the usage on stderr"
+"$liftoff" a.prm b.prm >stdout.txt 2>stderr.txt
+status=$?
+[ "$status" -eq 2 ] && grep -q '^liftoff: one scene file at a time, not 2' stderr.txt
+check $? "two scene files: exit $status, the reason on stderr"
 finish

@@ -93,8 +93,8 @@ namespace
     liftoff::MindlinPlate plate;
     plate.parse_parameters(prm);
     liftoff::Discretization discretization(MPI_COMM_WORLD);
-    discretization.parse_parameters(prm);
-    discretization.setup(plate);
+    discretization.parse_parameters(prm, plate);
+    discretization.setup();
     liftoff::TensionlessWinklerFoundation foundation;
     foundation.parse_parameters(prm);
     foundation.setup(discretization);

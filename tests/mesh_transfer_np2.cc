@@ -99,9 +99,9 @@ namespace
     liftoff::Discretization disc(MPI_COMM_WORLD);
     liftoff::MeshRefinement refinement;
     plate.parse_parameters(prm);
-    disc.parse_parameters(prm);
+    disc.parse_parameters(prm, plate);
     refinement.parse_parameters(prm);
-    disc.setup(plate);
+    disc.setup();
 
     const double      V = 0.7;
     const RigidMotion velocity(V, 0, 0);

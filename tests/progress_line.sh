@@ -3,8 +3,9 @@
 # update, at most one a second, and always one for the last step, naming
 # the step against the number of steps the scene asks for (End time /
 # Time step, computed here), tau, iterations, contact and the time so far;
-# --quiet (also -q, before or after --overwrite) leaves it out and nothing
-# else; on 2 ranks the run completes with one line per update. The
+# --quiet (also -q, before or after --overwrite) leaves it out and prints
+# one status line instead of the summary (which stays in summary.txt); on
+# 2 ranks the run completes with one line per update. The
 # fec74b2 binary prints no progress line and refuses --quiet.
 #   progress_line.sh LIFTOFF
 set -u
@@ -57,7 +58,8 @@ for options in "--quiet --overwrite" "--overwrite -q"; do
   # shellcheck disable=SC2086
   "$liftoff" $options scene.prm > quiet.txt 2>&1
   status=$?
-  [ "$status" -eq 0 ] && ! grep -q '^step ' quiet.txt && grep -q '^status: completed' quiet.txt
-  check $? "$options: exit $status, no progress line, the summary still printed"
+  [ "$status" -eq 0 ] && ! grep -q '^step ' quiet.txt && grep -q '^status: completed; summary in out/summary.txt$' quiet.txt \
+    && [ "$(grep -vc '^liftoff: ' quiet.txt)" -le 1 ] && grep -q '^wall time' out/summary.txt
+  check $? "$options: exit $status, no progress line, one status line ($(wc -l < quiet.txt) lines), the summary in summary.txt"
 done
 finish

@@ -134,4 +134,21 @@ rows=$(($(wc -l < out/history.csv) - 1))
 [ $((step % 50)) -eq 0 ] && [ "$step" -gt 0 ]
 check $? "SIGKILL: the last periodic checkpoint is of step $step (history.csv had $rows rows)"
 resume_and_compare "SIGKILL" "$step"
+
+# A results folder moved elsewhere resumes from its new place: the folder
+# is the one the scene names now (it was compared as text and refused).
+# Raising Active set/Maximum iterations, as its error message advises, is
+# allowed as well; the physics is still compared.
+mkdir -p moved && mv out moved/out
+end=$(awk -v n="$step" -v dt=$dt 'BEGIN {printf "%.10g", (n + 20) * dt}')
+scene moved/out "$end" 'subsection Active set' '  set Maximum iterations = 80' 'end' > moved.prm
+"${run[@]}" --resume moved.prm > stdout.txt 2>&1
+status=$?
+[ "$status" -eq 0 ] && grep -q '^resumed after step: ' moved/out/summary.txt
+check $? "moved folder, Maximum iterations raised: --resume exits with $status and continues"
+scene moved/out "$end" 'subsection Plate' '  set Poisson ratio = 0.25' 'end' > changed_physics.prm
+"${run[@]}" --resume changed_physics.prm > stdout.txt 2>&1
+status=$?
+[ "$status" -eq 1 ] && grep -q 'Plate/Poisson ratio' stdout.txt
+check $? "moved folder, Poisson ratio changed: refused with exit code $status naming it"
 finish

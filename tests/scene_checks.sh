@@ -41,13 +41,14 @@ subsection Output
 end'
 
 # Include cycles: two files naming each other, and a file in a subfolder
-# naming itself (paths relative to the working directory, as deal.II reads
-# them). A diamond (two includes of one file) is no cycle and must run.
+# naming itself (include paths are relative to the folder of the file that
+# holds the include line). A diamond (two includes of one file) is no cycle
+# and must run.
 printf 'include b.prm\n%s\n' "$loaded" > a.prm
 printf '# the other half of the cycle\n  include   a.prm   # comment\n' > b.prm
 refused "a.prm -> b.prm -> a.prm" 'include lines form a cycle: a\.prm -> b\.prm -> a\.prm' a.prm
 mkdir -p sub
-printf 'INCLUDE sub/self.prm\n' > sub/self.prm
+printf 'INCLUDE self.prm\n' > sub/self.prm
 refused "self include" 'include lines form a cycle: sub/self\.prm -> sub/self\.prm' sub/self.prm
 printf 'subsection Time integration\n  set End time = 0.001\nend\n' > leaf.prm
 printf 'include leaf.prm\n' > left.prm
@@ -56,6 +57,29 @@ printf 'include left.prm\ninclude right.prm\n%s\n' "$loaded" > diamond.prm
 "$liftoff" diamond.prm >/dev/null 2>stderr.txt
 check $? "a diamond of includes runs: $(head -c 200 stderr.txt)"
 rm -rf out
+
+# Includes beside the scene, run from another folder: found relative to the
+# including file (deal.II alone looks them up from the working directory),
+# through two levels; a scene with a UTF-8 byte order mark runs; a bad line
+# in an included file is named by that file and its own line number; a
+# missing include names the file looked for and the line naming it; a
+# folder given as a scene is named as such.
+mkdir -p studies/common elsewhere
+printf 'subsection Time integration\n  set End time = 0.001\nend\n' > studies/common/time.prm
+printf '\xEF\xBB\xBF# shared settings\ninclude time.prm\n' > studies/common/all.prm
+printf '\xEF\xBB\xBFinclude common/all.prm\n%s\n' "$loaded" > studies/a.prm
+(cd elsewhere && "$liftoff" ../studies/a.prm >/dev/null 2>../stderr.txt)
+check $? "includes beside the scene, run from elsewhere: $(head -c 300 stderr.txt)"
+grep -q '^0.001,' elsewhere/out/history.csv
+check $? "the included End time = 0.001 was read"
+rm -rf elsewhere/out
+printf 'subsection Plate\n\n  set Thicknes = 0.1\nend\n' > studies/common/typo.prm
+printf '%s\n\n\ninclude common/typo.prm\n' "$loaded" > studies/b.prm
+refused "misspelt entry in an include" \
+  'Line <3> of file <studies/common/typo\.prm>: No entry with name <Thicknes>' studies/b.prm
+printf '%s\n\ninclude nowhere.prm\n' "$loaded" > studies/c.prm
+refused "missing include" 'Cannot read the scene file studies/nowhere\.prm \(named by the include line 10 of studies/c\.prm\)' studies/c.prm
+refused "a folder as the scene" 'studies is a directory, not a scene file' studies
 
 # 1 MB expressions: the message shows the parameter and the start of the
 # text, not the whole text (nor deal.II's echo of it and its stack trace).
@@ -95,6 +119,28 @@ for scene in a.prm "$tests/bad_input/mesh_too_large.prm" long_intensity.prm; do
     grep -Eq 'form a cycle|GB per rank are available|must be a muParser' stderr.txt
   check $? "2 ranks, $(basename "$scene"): one message, from rank 0"
 done
+
+# Points on the edges of a plate wider than long (y in [-1, 1]) are on
+# the plate: the check runs with the real aspect ratio, not the default
+# square's. On a plate narrower than long the message names its bounds.
+printf '%s\nsubsection Plate\n  set Aspect ratio = 2\nend\nsubsection Time integration\n  set End time = 0.002\nend\nsubsection Output\n  set Probe points = 0, 0.7; 0, -1; 0.5, 1\n  set Profile start = 0, -1\n  set Profile end = 0, 1\n  set Profile points = 5\nend\n' \
+  "$loaded" > wide.prm
+"$liftoff" wide.prm >stdout.txt 2>stderr.txt
+check $? "probes and a profile to the edges of a plate of Aspect ratio = 2 run: $(head -c 300 stderr.txt)"
+rm -rf out
+printf '%s\nsubsection Plate\n  set Aspect ratio = 0.5\nend\nsubsection Output\n  set Probe points = 0, 0.3\nend\n' \
+  "$loaded" > narrow.prm
+refused "probe off a narrow plate" 'Output/Probe points: the point 0\.000000, 0\.300000 lies outside the plate \[-0\.5, 0\.5\] x \[-0\.25, 0\.25\]' narrow.prm
+
+# Probes that six digits do not tell apart get columns of their own names.
+printf '%s\nsubsection Time integration\n  set End time = 0.002\nend\nsubsection Output\n  set Probe points = 0.333333, 0; 0.3333334, 0; 0.25, 0\nend\n' \
+  "$loaded" > close_probes.prm
+"$liftoff" close_probes.prm >stdout.txt 2>stderr.txt
+check $? "probes at 0.333333 and 0.3333334 run"
+header=$(head -1 out/history.csv)
+echo "$header" | grep -q ',w(0.333333;0),w(0.3333334;0),w(0.25;0),'
+check $? "probes at 0.333333 and 0.3333334: distinct column names ($header)"
+rm -rf out
 
 # Profile times beyond the end: the run completes, writes the profiles it
 # reaches and warns about the others by name.

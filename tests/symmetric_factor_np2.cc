@@ -60,8 +60,8 @@ namespace
     liftoff::MindlinPlate plate;
     plate.parse_parameters(prm);
     liftoff::Discretization discretization(comm);
-    discretization.parse_parameters(prm);
-    discretization.setup(plate);
+    discretization.parse_parameters(prm, plate);
+    discretization.setup();
     liftoff::PlateMatrices matrices;
     matrices.assemble(discretization, plate);
     liftoff::TensionlessWinklerFoundation foundation;

@@ -92,7 +92,7 @@ namespace liftoff
     /// 7 since the active set keeps the contact status its factor was built
     /// from instead of a copy of the matrix's values then; 8 since the
     /// linear solver keeps the measured error of its factor's substitution.
-    static constexpr unsigned int format = 8;
+    static constexpr unsigned int format = 9;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -94,8 +94,10 @@ namespace liftoff
 
     static void
     declare_parameters(ParameterHandler &prm);
+    /// The plate's aspect ratio is taken here, so that every check of a
+    /// point against the plate made while parsing sees the real plate.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
 
     /// Cells, unknowns, matrix entries and memory of this discretization on
     /// `n_ranks` ranks, from the parameters alone (doc/reliability.md has
@@ -110,9 +112,9 @@ namespace liftoff
     void
     check_memory(const Factor factor) const;
 
-    /// Build mesh, dofs, constraints for a plate of the given aspect ratio.
+    /// Build mesh, dofs, constraints for the plate of parse_parameters().
     void
-    setup(const MindlinPlate &plate);
+    setup();
 
     /// Dofs, constraints (hanging nodes included) and sparsity pattern of
     /// the mesh as it is now: after setup(), and again after the mesh has
@@ -124,6 +126,14 @@ namespace liftoff
     /// checkpoint of an adaptive run) and distribute the dofs on it.
     void
     load_mesh(const std::string &filename);
+
+    /// This rank's active cells in an order that depends on the mesh only,
+    /// not on how it was reached (refined in the run or loaded from a
+    /// checkpoint). Loops whose results are kept per cell or per Gauss
+    /// point, or summed, walk the cells in this order, so that a resumed
+    /// run repeats the uninterrupted one bit for bit.
+    const std::vector<DoFHandler<2>::active_cell_iterator> &
+    locally_owned_cells() const;
 
     /// The level of the cells of the uniform mesh the parameters describe
     /// (`Global refinements`): adaptive levels count from it.
@@ -161,9 +171,25 @@ namespace liftoff
     bool
     has_kinematic_support() const;
 
+    /// The name of the edge ("Left", ...) if it is the only one that holds
+    /// the plate and it is not clamped: the plate can turn about it, so
+    /// only a foundation makes a static problem regular. Else "".
+    std::string
+    only_supported_edge() const;
+    /// The larger of width / height and height / width of the cells.
+    double
+    largest_cell_aspect_ratio() const;
+
     /// The full plate and the part of it that is meshed.
     BoundingBox<2>
     plate_box() const;
+    /// True for a point of the plate, its edges included.
+    bool
+    is_on_plate(const Point<2> &p) const;
+    /// "the plate [-0.5, 0.5] x [-1, 1]": messages about points off it name
+    /// the plate in numbers, since mu is a parameter of another class.
+    std::string
+    plate_description() const;
     BoundingBox<2>
     modelled_box() const;
     /// Mirror a point of the full plate into the modelled part.
@@ -223,6 +249,7 @@ namespace liftoff
     std::array<EdgeCondition, 4>                 edges;
     TrilinosWrappers::SparsityPattern            sparsity_pattern;
     mutable std::unique_ptr<GridTools::Cache<2>> cache;
+    std::vector<DoFHandler<2>::active_cell_iterator> owned_cells;
 
     /// FE_Serendipity (degree 2) instead of FE_Q(fe_degree).
     bool is_serendipity = false;

@@ -113,6 +113,10 @@ namespace liftoff
           Accuracy               accuracy  = Accuracy::final,
           bool                   continues = false);
 
+    /// `Tolerance`: the relative residual of a final solve.
+    double
+    relative_tolerance() const;
+
     /// Whether a `trial` solve may stop short of a `final` one.
     bool
     has_looser_trials() const;

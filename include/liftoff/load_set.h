@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace liftoff
@@ -177,6 +178,29 @@ namespace liftoff
                     const std::vector<double> &times,
                     const FullPlatePoints     &points,
                     const Discretization      &discretization);
+    /// The points of `points` a pressure or line load may act on, and the
+    /// test of whether it acts on one.
+    static std::pair<const std::vector<Point<2>> *,
+                     std::function<bool(const Point<2> &)>>
+    where_it_acts(const Load            &load,
+                  const BoundingBox<2>  &plate,
+                  const FullPlatePoints &points);
+    /// Throw, naming the expression and the first tau, if the Time history
+    /// of `load` or its intensity times Magnitude (at the `points` it acts
+    /// on) is not finite at one of `times`. Collective.
+    static void
+    require_finite_values(const Load                &load,
+                          const std::vector<double> &times,
+                          const FullPlatePoints     &points,
+                          const BoundingBox<2>      &plate,
+                          const MPI_Comm             comm);
+    /// The messages of a Time history and of an Intensity that are not
+    /// finite at tau, shared by the check before the run and the one at a
+    /// step.
+    static std::string
+    non_finite_history(const Load &load, const double tau);
+    static std::string
+    non_finite_intensity(const Load &load, const double tau);
     /// The intensities of `load` at the `candidates` where it acts against
     /// those of `other` at their mirror images, at `times`. Collective.
     static bool

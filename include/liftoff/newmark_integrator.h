@@ -45,6 +45,12 @@ namespace liftoff
     unsigned int
     n_steps() const;
 
+    /// Whether the scheme damps high frequencies (gamma > 1/2: Newmark with
+    /// such a Gamma, generalized-alpha with Spectral radius < 1), so that
+    /// the energy of a linear system decreases instead of being conserved.
+    bool
+    dissipates_energy() const;
+
     /// Whether the scheme is stable only for small enough steps (Newmark
     /// with 2 beta < gamma).
     bool

@@ -1,10 +1,13 @@
 #pragma once
 
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace liftoff
 {
@@ -32,13 +35,35 @@ namespace liftoff
                    const bool         time_dependent);
 
   /**
-   * Follow the `include` lines of a scene (as ParameterHandler does: file
-   * names relative to the working directory) and refuse an include cycle,
-   * which ParameterHandler would follow until the stack overflows, naming
-   * the files in the cycle. `name` is the scene's file name ("-" for
-   * standard input). Files that cannot be opened are left to
-   * ParameterHandler, which names them.
+   * A scene as ParameterHandler reads it, its `include` lines replaced by
+   * the files they name: ParameterHandler would look an included file up
+   * from the working directory, so that a scene whose includes lie beside
+   * it could only be run from its own folder. Here an include is relative
+   * to the folder of the file that holds the include line (to the working
+   * directory for standard input).
    */
-  void
-  check_include_cycles(const std::string &text, const std::string &name);
+  struct SceneText
+  {
+    /// Read `name` ("-" for standard input) and the files its include
+    /// lines name. Refused by name: a file that cannot be read or is a
+    /// directory, an include cycle (which ParameterHandler would follow
+    /// until the stack overflows), includes more than 64 deep. A UTF-8 byte
+    /// order mark at the start of a file is dropped.
+    static SceneText
+    read(const std::string &name);
+
+    /// ParameterHandler::parse_input on the text; its messages name the
+    /// file and line a bad line came from.
+    void
+    parse_into(ParameterHandler &prm, const std::string &name) const;
+
+    /// `message` with ParameterHandler's "Line <n> of file <name>" (a line
+    /// of `text`) replaced by the file and line that line came from.
+    std::string
+    located(const std::string &message, const std::string &name) const;
+
+    std::string text;
+    /// File and line number of each line of `text`.
+    std::vector<std::pair<std::string, unsigned int>> origins;
+  };
 } // namespace liftoff

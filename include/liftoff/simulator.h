@@ -10,6 +10,7 @@
 #include <liftoff/active_set_iteration.h>
 #include <liftoff/checkpoint.h>
 #include <liftoff/discretization.h>
+#include <liftoff/energy_check.h>
 #include <liftoff/field_output.h>
 #include <liftoff/initial_conditions.h>
 #include <liftoff/load_set.h>
@@ -115,8 +116,11 @@ namespace liftoff
   private:
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
-    SectionTimer       timer;
-    Timer              wall_clock;
+    /// `liftoff --quiet`: no progress line and the summary only in
+    /// summary.txt, one line on the terminal.
+    const bool   is_quiet;
+    SectionTimer timer;
+    Timer        wall_clock;
 
     MindlinPlate                 plate;
     Discretization               discretization;
@@ -124,6 +128,7 @@ namespace liftoff
     TensionlessWinklerFoundation foundation;
     LoadSet                      loads;
     NewmarkIntegrator            newmark;
+    EnergyCheck                  energy_check;
     MeshRefinement               mesh_refinement;
     ActiveSetIteration           active_set;
     TimeHistory                  time_history;
@@ -214,6 +219,22 @@ namespace liftoff
     /// stability limit of a conditionally stable scheme, or an overflow.
     std::string
     cause_of_non_finite_state(const LA::MPI::Vector &load);
+    /// Stop (Energy check/Mode = fail) or warn once if the balance error
+    /// of the state exceeds the check's tolerance.
+    void
+    check_energy_balance();
+    /// What makes the energy balance fail in the scene at hand: a time
+    /// step long for the bed, a loose solver tolerance, or else the
+    /// parameters' extremes.
+    std::string
+    likely_cause_of_energy_error() const;
+    /// What makes a static system too ill-conditioned to solve: a plate
+    /// that can turn about its only supported edge, very long cells, or a
+    /// very soft bed under free edges.
+    std::string
+    likely_cause_of_ill_conditioning() const;
+    /// The energy check's warning, for the summary ("" if none).
+    std::string energy_warning;
     /// End the run as interrupted by `signal` (the exit code is 128 +
     /// signal); `when` completes the message.
     [[noreturn]] void

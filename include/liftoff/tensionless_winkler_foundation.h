@@ -146,6 +146,11 @@ namespace liftoff
     bool
     has_initial_gap() const;
 
+    /// Whether the bed pushes an unloaded plate (g < 0 at some Gauss point:
+    /// a pre-compression), so that a scene without loads still moves.
+    bool
+    is_pressing_plate() const;
+
     /// g at a point of the meshed part (0 without a gap), for output.
     double
     gap_at(const Point<2> &p) const;
@@ -153,6 +158,11 @@ namespace liftoff
     /// Whether there is a shear layer (Shear modulus > 0).
     bool
     has_layer() const;
+
+    /// sqrt(Gamma): the angular frequency of the plate (unit mass per
+    /// area) moving as a rigid body on the springs.
+    double
+    rigid_body_frequency() const;
 
     /// Whether there are dashpots (Damping > 0).
     bool
@@ -282,7 +292,8 @@ namespace liftoff
     std::vector<unsigned char>           in_contact;
     /// g at the points, if is_gapped: some point on some rank has g != 0.
     std::vector<double> gap;
-    bool                is_gapped = false;
+    bool                is_gapped        = false;
+    bool                is_precompressed = false;
     /// g(x, y), kept for evaluation off the Gauss points (if is_gapped).
     std::unique_ptr<FunctionParser<2>> gap_function;
     /// has_gap(): a gap or dashpots.

@@ -112,6 +112,11 @@ namespace liftoff
     iteration_statistics() const;
 
   private:
+    /// The history's column names of the probes, "w(x;y)", with enough
+    /// digits to tell every two points apart.
+    std::vector<std::string>
+    probe_column_names() const;
+
     std::vector<Point<2>>        probe_points;
     bool                         write_energies   = true;
     bool                         write_dissipated = false;
