@@ -1,8 +1,8 @@
 """solution.xdmf opened by ParaView's XDMF3 reader (Xdmf3ReaderT, the one
-for time series; Debian 12: python3-paraview 5.11), against the run's other
-outputs. Run by pvpython:
+for time series; Debian 12: python3-paraview 5.11) or its XDMF 2 reader
+(XDMFReader), against the run's other outputs. Run by pvpython:
 
-    pvpython xdmf_paraview.py XDMF_FILE OUTPUT_DIRECTORY
+    pvpython xdmf_paraview.py XDMF_FILE OUTPUT_DIRECTORY [XDMFReader]
 
 XDMF_FILE is solution.xdmf named as a user would from the working directory
 (a bare name inside the folder, a relative path from elsewhere). The reader
@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 from paraview import servermanager
-from paraview.simple import MergeBlocks, Xdmf3ReaderT
+from paraview.simple import MergeBlocks, XDMFReader, Xdmf3ReaderT
 from vtk.numpy_interface import dataset_adapter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -33,14 +33,16 @@ def main():
     with open(os.path.join(out, "history.csv")) as f:
         history = {round(float(r["tau"]), 9): float(r["w(0;0)"])
                    for r in csv.DictReader(f)}
-    reader = Xdmf3ReaderT(FileName=[xdmf])
+    if sys.argv[3:] == ["XDMFReader"]:
+        kind, reader = "XDMFReader", XDMFReader(FileNames=[xdmf])
+    else:
+        kind, reader = "Xdmf3ReaderT", Xdmf3ReaderT(FileName=[xdmf])
     reader.UpdatePipelineInformation()
     times = list(reader.TimestepValues)
     check(len(times) == len(pvd_times) >= 2
           and np.allclose(times, pvd_times, rtol=1e-12),
-          "Xdmf3ReaderT opens %s from %s: %d time steps at tau = %s "
-          "(solution.pvd: %s)" % (xdmf, os.getcwd(), len(times), times,
-                                  pvd_times))
+          "%s opens %s from %s: %d time steps at tau = %s (solution.pvd: "
+          "%s)" % (kind, xdmf, os.getcwd(), len(times), times, pvd_times))
     merged = MergeBlocks(Input=reader)
     for tau in times:
         merged.UpdatePipeline(tau)

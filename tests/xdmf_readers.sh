@@ -16,7 +16,8 @@ enter_work_directory
 # Inside the folder ParaView is given ./solution.xdmf: its XDMF3 readers
 # (5.11) prefix the .h5 names with the .xdmf's path up to its last '/', and
 # with a bare name they look for solution.xdmfsolution_00000.h5 and abort;
-# no relative name in the file avoids that (doc/viewing.md).
+# no relative name in the file avoids that (doc/viewing.md). Its XDMF 2
+# reader, XDMFReader, is given the bare name.
 case $reader in
   meshio)
     /usr/bin/python3 -c 'import meshio, h5py' 2>/dev/null \
@@ -39,4 +40,8 @@ check $? "$reader reads $inside from inside the moved folder"
 check $? "$reader reads ../moved/solution.xdmf from a sibling folder"
 (cd / && read_xdmf "$work/moved/solution.xdmf" "$work/moved")
 check $? "$reader reads $work/moved/solution.xdmf from /"
+if [ "$reader" = paraview ]; then
+  (cd moved && read_xdmf solution.xdmf . XDMFReader)
+  check $? "ParaView's XDMFReader reads solution.xdmf from inside the moved folder"
+fi
 finish
