@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -262,6 +263,39 @@ namespace liftoff
     }
 
 
+    /// The entries of solution.xdmf for the outputs of `records` (after a
+    /// resume), each with the sizes of its own .h5: an adaptive mesh has
+    /// other sizes at every output. The fields are those of `filter`, the
+    /// current output's. Outputs without an .h5 (the earlier run had no HDF5
+    /// output) are left out.
+    std::vector<XDMFEntry>
+    earlier_xdmf_entries(
+      const std::string                                 &directory,
+      const DataOutBase::DataOutFilter                  &filter,
+      const std::vector<std::pair<double, std::string>> &records)
+    {
+      std::vector<XDMFEntry> entries;
+      for (const auto &[time, master] : records)
+        {
+          const std::string name = master.substr(0, master.rfind('.')) + ".h5";
+          if (!std::filesystem::exists(directory + "/" + name))
+            continue;
+          const HDF5::File file(directory + "/" + name,
+                                HDF5::File::FileAccessMode::open);
+          const auto       rows = [&](const std::string &data_set) {
+            return file.open_dataset(data_set).get_dimensions();
+          };
+          XDMFEntry entry(
+            name, name, time, rows("nodes")[0], rows("cells")[0], 2, 3);
+          for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
+            entry.add_attribute(filter.get_data_set_name(i),
+                                filter.get_data_set_dim(i));
+          entries.push_back(entry);
+        }
+      return entries;
+    }
+
+
     /// solution_NNNNN.h5 (`stem`.h5) from the patches of data_out, and its
     /// entry added to `xdmf_entries`, the entries of solution.xdmf; after a
     /// resume that is empty and is rebuilt first from the PVD `records` of
@@ -297,17 +331,11 @@ namespace liftoff
         add_hdf5_metadata(path + ".tmp", filter, time, step);
         if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
           throw std::runtime_error("cannot rename " + path + ".tmp");
+        // After a resume rank 0, which alone writes solution.xdmf, first
+        // rebuilds the entries of the earlier outputs.
+        if (xdmf_entries.empty())
+          xdmf_entries = earlier_xdmf_entries(directory, filter, records);
       });
-      // The mesh is the same at every output (no adaptivity): after a
-      // resume, the entries of the earlier outputs are those of the records
-      // with this output's sizes.
-      if (xdmf_entries.empty())
-        for (const auto &record : records)
-          xdmf_entries.push_back(data_out.create_xdmf_entry(
-            filter,
-            record.second.substr(0, record.second.rfind('.')) + ".h5",
-            record.first,
-            comm));
       xdmf_entries.push_back(
         data_out.create_xdmf_entry(filter, name, time, comm));
     }

@@ -8,6 +8,9 @@ solution.pvd; in each, w at the node (0, 0) equals history.csv's probe
 w(0;0) at that time (to single precision: the fields are stored as float),
 the displacement vector is (0, 0, w) and the rotation (psi_x, psi_y, 0) at
 every node, and the mesh is the plate's meshed part in the plane z = 0.
+Every HDF data item of solution.xdmf has the shape of the data set it
+names (after a resume of an adaptive run too: the mesh, and so the sizes,
+differ between outputs).
 Each .h5 says itself what it holds: its time tau and step as attributes
 of the file, and the unit of each data set (doc/model.md's scales: w in
 F0 L^2 / D, ...) as the data set's attribute `units`.
@@ -18,6 +21,7 @@ import csv
 import os
 import re
 import sys
+import xml.etree.ElementTree as ET
 
 try:
     import h5py
@@ -46,6 +50,23 @@ def attribute(h5_object, name):
     return value.decode() if isinstance(value, bytes) else value
 
 
+def sizes_differing(xdmf, out):
+    """The HDF data items of the text `xdmf` whose Dimensions differ from
+    the shape of the data set they name, and the number of items."""
+    items = [item for item in ET.fromstring(xdmf).iter("DataItem")
+             if item.get("Format") == "HDF"]
+    differing = []
+    for item in items:
+        name, path = item.text.strip().split(":")
+        with h5py.File(os.path.join(out, name), "r") as h5:
+            shape = h5[path].shape
+        dimensions = tuple(int(d) for d in item.get("Dimensions").split())
+        if dimensions != shape:
+            differing.append("%s:%s %s, the file %s"
+                             % (name, path, dimensions, shape))
+    return differing, len(items)
+
+
 def main():
     out = sys.argv[1]
     with open(os.path.join(out, "solution.xdmf")) as f:
@@ -59,6 +80,10 @@ def main():
           and len(files) == len(times),
           "solution.xdmf: %d outputs at the times of solution.pvd, one .h5 "
           "each" % len(times))
+    differing, n_items = sizes_differing(xdmf, out)
+    check(n_items > 0 and not differing,
+          "solution.xdmf: %d data items, %d of them with other sizes than "
+          "their .h5 %s" % (n_items, len(differing), differing[:2]))
     with open(os.path.join(out, "history.csv")) as f:
         history = {round(float(r["tau"]), 9): float(r["w(0;0)"])
                    for r in csv.DictReader(f)}
