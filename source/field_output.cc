@@ -266,8 +266,8 @@ namespace liftoff
     /// The entries of solution.xdmf for the outputs of `records` (after a
     /// resume), each with the sizes of its own .h5: an adaptive mesh has
     /// other sizes at every output. The fields are those of `filter`, the
-    /// current output's. Outputs without an .h5 (the earlier run had no HDF5
-    /// output) are left out.
+    /// current output's. Outputs whose .h5 is gone are left out, rather
+    /// than named with sizes nobody knows.
     std::vector<XDMFEntry>
     earlier_xdmf_entries(
       const std::string                                 &directory,
