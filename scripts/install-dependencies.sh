@@ -6,16 +6,17 @@
 # factorisation of the benchmark M takes half the time of the reference
 # BLAS's; the serial build, so MPI ranks do not compete with BLAS threads
 # for the cores), OpenMPI's launcher, CMake, a compiler, and for the scripts
-# numpy, pandas and matplotlib (the study tool, the plots) and h5py (the
-# test of the HDF5 output).
+# numpy, pandas and matplotlib (the study tool, the plots), h5py and meshio
+# (the tests of the HDF5 output and of solution.xdmf).
 #   scripts/install-dependencies.sh           what the build and tests need
 #   scripts/install-dependencies.sh --viewer  also ParaView's pvpython and
 #                                             Xvfb for scripts/liftoff-view
-#                                             (about 1 GB; its test is
+#                                             (about 1 GB; its test and
+#                                             xdmf_paraview_np2 are
 #                                             skipped without them)
 set -euo pipefail
 packages=(libdeal.ii-dev libmumps-dev libopenblas0-serial openmpi-bin cmake g++ make python3-numpy
-          python3-pandas python3-matplotlib python3-h5py)
+          python3-pandas python3-matplotlib python3-h5py python3-meshio)
 if [ "${1:-}" = "--viewer" ]; then
   packages+=(python3-paraview xvfb)
 fi

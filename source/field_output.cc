@@ -1,4 +1,5 @@
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/hdf5.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -193,6 +195,11 @@ namespace liftoff
       {"contact_status", "1"}};
 
 
+    /// The liftoff that writes the files, as `liftoff --version` names it.
+    const std::string written_by =
+      LIFTOFF_VERSION " (git " LIFTOFF_GIT_COMMIT ")";
+
+
     /// A .vtu or .pvtu as deal.II writes it, with two additions. ParaView
     /// takes the time of such files opened as a series (without the .pvd)
     /// from a field-data array named TimeValue, in the .pvtu itself for a
@@ -221,21 +228,85 @@ namespace liftoff
           text.insert(at, "\n" + field_data + array.str() + "\n</FieldData>");
         }
       const std::size_t line_end = text.find('\n');
-      return text.insert(line_end + 1,
-                         "<!-- liftoff " LIFTOFF_VERSION
-                         " (git " LIFTOFF_GIT_COMMIT ") -->\n");
+      return text.insert(line_end + 1, "<!-- liftoff " + written_by + " -->\n");
+    }
+
+
+    /// What the data sets of an HDF5 output do not say themselves, as
+    /// attributes of the file `path`, for a reader of the .h5 alone (h5py):
+    /// the time tau and the step on the file, the unit of each data set as
+    /// its `units` (those of the VTU files), and the scales the units are
+    /// made of.
+    void
+    add_hdf5_metadata(const std::string                &path,
+                      const DataOutBase::DataOutFilter &filter,
+                      const double                      time,
+                      const unsigned int                step)
+    {
+      HDF5::File file(path, HDF5::File::FileAccessMode::open);
+      file.set_attribute("time", time);
+      file.set_attribute("time_units", std::string("t0"));
+      file.set_attribute("step", step);
+      file.set_attribute("scales",
+                         std::string(
+                           "L the plate's length along x, F0 the "
+                           "load scale, D the bending stiffness, "
+                           "t0 = L^2 sqrt(rho H / D) (doc/model.md)"));
+      file.set_attribute("liftoff", written_by);
+      file.open_dataset("nodes").set_attribute("units", std::string("L"));
+      for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
+        {
+          const auto unit = field_units.find(filter.get_data_set_name(i));
+          if (unit != field_units.end())
+            file.open_dataset(unit->first).set_attribute("units", unit->second);
+        }
+    }
+
+
+    /// The entries of solution.xdmf for the outputs of `records` (after a
+    /// resume), each with the sizes of its own .h5: an adaptive mesh has
+    /// other sizes at every output. The fields are those of `filter`, the
+    /// current output's. Outputs whose .h5 is gone are left out, rather
+    /// than named with sizes nobody knows.
+    std::vector<XDMFEntry>
+    earlier_xdmf_entries(
+      const std::string                                 &directory,
+      const DataOutBase::DataOutFilter                  &filter,
+      const std::vector<std::pair<double, std::string>> &records)
+    {
+      std::vector<XDMFEntry> entries;
+      for (const auto &[time, master] : records)
+        {
+          const std::string name = master.substr(0, master.rfind('.')) + ".h5";
+          if (!std::filesystem::exists(directory + "/" + name))
+            continue;
+          const HDF5::File file(directory + "/" + name,
+                                HDF5::File::FileAccessMode::open);
+          const auto       rows = [&](const std::string &data_set) {
+            return file.open_dataset(data_set).get_dimensions();
+          };
+          XDMFEntry entry(
+            name, name, time, rows("nodes")[0], rows("cells")[0], 2, 3);
+          for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
+            entry.add_attribute(filter.get_data_set_name(i),
+                                filter.get_data_set_dim(i));
+          entries.push_back(entry);
+        }
+      return entries;
     }
 
 
     /// solution_NNNNN.h5 (`stem`.h5) from the patches of data_out, and its
     /// entry added to `xdmf_entries`, the entries of solution.xdmf; after a
     /// resume that is empty and is rebuilt first from the PVD `records` of
-    /// the earlier outputs. Collective.
+    /// the earlier outputs. The entries name the .h5 files without a folder,
+    /// so readers look for them beside solution.xdmf. Collective.
     void
     write_hdf5(const std::string                                 &directory,
                const DataOutInterface<2, 3>                      &data_out,
                const MPI_Comm                                     comm,
                const double                                       time,
+               const unsigned int                                 step,
                const std::string                                 &stem,
                const std::vector<std::pair<double, std::string>> &records,
                std::vector<XDMFEntry>                            &xdmf_entries)
@@ -249,31 +320,31 @@ namespace liftoff
       const std::string  path = directory + "/" + name;
       const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
       // write_hdf5_parallel is collective: every rank writes its part into
-      // the same temporary file, which rank 0 renames once all are done.
+      // the same temporary file, which rank 0 completes and renames once all
+      // are done.
       collective_attempt(comm, "Writing " + name + " failed", [&]() {
         data_out.write_hdf5_parallel(filter, path + ".tmp", comm);
       });
       collective_attempt(comm, "Writing " + name + " failed", [&]() {
-        if (rank == 0
-            && std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+        if (rank != 0)
+          return;
+        add_hdf5_metadata(path + ".tmp", filter, time, step);
+        if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
           throw std::runtime_error("cannot rename " + path + ".tmp");
+        // After a resume rank 0, which alone writes solution.xdmf, first
+        // rebuilds the entries of the earlier outputs.
+        if (xdmf_entries.empty())
+          xdmf_entries = earlier_xdmf_entries(directory, filter, records);
       });
-      // The mesh is the same at every output (no adaptivity): after a
-      // resume, the entries of the earlier outputs are those of the records
-      // with this output's sizes.
-      if (xdmf_entries.empty())
-        for (const auto &record : records)
-          xdmf_entries.push_back(data_out.create_xdmf_entry(
-            filter,
-            record.second.substr(0, record.second.rfind('.')) + ".h5",
-            record.first,
-            comm));
       xdmf_entries.push_back(
         data_out.create_xdmf_entry(filter, name, time, comm));
     }
 
 
     /// solution.xdmf naming the HDF5 files of `entries`; rank 0 writes it.
+    /// XDMF 3: the time series reader of Debian 12's meshio 5.0 refuses any
+    /// other version ("Unknown XDMF version 2.0"); ParaView's XDMF readers
+    /// read deal.II's entries either way.
     void
     write_xdmf(const std::string            &directory,
                const std::vector<XDMFEntry> &entries)
@@ -282,7 +353,7 @@ namespace liftoff
         directory + "/solution.xdmf", [&](std::ostream &out) {
           out << "<?xml version=\"1.0\" ?>\n"
               << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-              << "<Xdmf Version=\"2.0\">\n"
+              << "<Xdmf Version=\"3.0\">\n"
               << "  <Domain>\n"
               << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
                  "CollectionType=\"Temporal\">\n";
@@ -365,9 +436,11 @@ namespace liftoff
                       "false",
                       Patterns::Bool(),
                       "Also write every field output as "
-                      "solution_NNNNN.h5 (one file for all ranks, MPI-IO) "
-                      "and the time series solution.xdmf, which ParaView, "
-                      "VisIt and meshio read.");
+                      "solution_NNNNN.h5 (one file for all ranks, MPI-IO; "
+                      "tau and the units as HDF5 attributes) and the time "
+                      "series solution.xdmf (XDMF 3), which ParaView "
+                      "(Xdmf3ReaderT) and meshio (TimeSeriesReader) read: "
+                      "doc/viewing.md.");
   }
 
 
@@ -442,7 +515,8 @@ namespace liftoff
     const std::string master =
       write_vtu_pieces(directory, data_out, comm, time, stem);
     if (writes_hdf5)
-      write_hdf5(directory, data_out, comm, time, stem, records, xdmf_entries);
+      write_hdf5(
+        directory, data_out, comm, time, step, stem, records, xdmf_entries);
     records.emplace_back(time, master);
     write_record(directory,
                  comm,

@@ -8,6 +8,12 @@ solution.pvd; in each, w at the node (0, 0) equals history.csv's probe
 w(0;0) at that time (to single precision: the fields are stored as float),
 the displacement vector is (0, 0, w) and the rotation (psi_x, psi_y, 0) at
 every node, and the mesh is the plate's meshed part in the plane z = 0.
+Every HDF data item of solution.xdmf has the shape of the data set it
+names (after a resume of an adaptive run too: the mesh, and so the sizes,
+differ between outputs).
+Each .h5 says itself what it holds: its time tau and step as attributes
+of the file, and the unit of each data set (doc/model.md's scales: w in
+F0 L^2 / D, ...) as the data set's attribute `units`.
 Exit 77 without h5py (Debian: python3-h5py).
 """
 
@@ -15,6 +21,7 @@ import csv
 import os
 import re
 import sys
+import xml.etree.ElementTree as ET
 
 try:
     import h5py
@@ -25,6 +32,39 @@ except ImportError as e:
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import check, finish  # noqa: E402
+
+
+# The units of doc/model.md: x / L, v = D w / (F0 L^2), phi = D psi / (F0 L),
+# tau = t / t0, pressure L^2 / F0.
+UNITS = {"nodes": "L", "w": "F0*L^2/D", "psi_x": "F0*L/D",
+         "psi_y": "F0*L/D", "w_dot": "F0*L^2/(D*t0)",
+         "psi_x_dot": "F0*L/(D*t0)", "psi_y_dot": "F0*L/(D*t0)",
+         "rotation": "F0*L/D", "displacement": "F0*L^2/D",
+         "foundation_pressure": "F0/L^2", "uplift": "F0*L^2/D",
+         "contact_status": "1"}
+
+
+def attribute(h5_object, name):
+    """An attribute as text or number, None where it is missing."""
+    value = h5_object.attrs.get(name)
+    return value.decode() if isinstance(value, bytes) else value
+
+
+def sizes_differing(xdmf, out):
+    """The HDF data items of the text `xdmf` whose Dimensions differ from
+    the shape of the data set they name, and the number of items."""
+    items = [item for item in ET.fromstring(xdmf).iter("DataItem")
+             if item.get("Format") == "HDF"]
+    differing = []
+    for item in items:
+        name, path = item.text.strip().split(":")
+        with h5py.File(os.path.join(out, name), "r") as h5:
+            shape = h5[path].shape
+        dimensions = tuple(int(d) for d in item.get("Dimensions").split())
+        if dimensions != shape:
+            differing.append("%s:%s %s, the file %s"
+                             % (name, path, dimensions, shape))
+    return differing, len(items)
 
 
 def main():
@@ -40,6 +80,10 @@ def main():
           and len(files) == len(times),
           "solution.xdmf: %d outputs at the times of solution.pvd, one .h5 "
           "each" % len(times))
+    differing, n_items = sizes_differing(xdmf, out)
+    check(n_items > 0 and not differing,
+          "solution.xdmf: %d data items, %d of them with other sizes than "
+          "their .h5 %s" % (n_items, len(differing), differing[:2]))
     with open(os.path.join(out, "history.csv")) as f:
         history = {round(float(r["tau"]), 9): float(r["w(0;0)"])
                    for r in csv.DictReader(f)}
@@ -50,6 +94,16 @@ def main():
             displacement = h5["displacement"][:]
             rotation = h5["rotation"][:]
             psi = np.stack([h5["psi_x"][:, 0], h5["psi_y"][:, 0]], axis=1)
+            time, step = attribute(h5, "time"), attribute(h5, "step")
+            time_units = attribute(h5, "time_units")
+            units = {k: attribute(h5[k], "units") for k in UNITS}
+        check(time is not None and abs(time - tau) <= 1e-12 * max(tau, 1)
+              and time_units == "t0"
+              and step == int(re.search(r"([0-9]+)\.h5", name).group(1)),
+              "%s: attributes time = %s (%s), step = %s; solution.xdmf: "
+              "tau = %.17g" % (name, time, time_units, step, tau))
+        check(units == UNITS, "%s: the units of the data sets %s"
+              % (name, units))
         at_origin = np.flatnonzero(np.linalg.norm(nodes[:, :2], axis=1)
                                    < 1e-12)
         probe = history[round(tau, 9)]

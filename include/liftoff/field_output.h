@@ -87,7 +87,7 @@ namespace liftoff
     /// The velocity with ghosts, filled only for the steps written.
     LA::MPI::Vector ghosted_velocity;
     /// The entries of solution.xdmf (HDF5 output); rebuilt from `records`
-    /// after a resume.
+    /// and the sizes of their .h5 files after a resume.
     std::vector<XDMFEntry> xdmf_entries;
     /// Since the PVD file was last written; rank 0's clock decides.
     Timer since_record_written;
