@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/load_set.h>
+#include <liftoff/patch_integrator.h>
 #include <liftoff/point_functional.h>
 #include <liftoff/scene_input.h>
 #include <liftoff/selection.h>
@@ -374,42 +375,65 @@ namespace liftoff
   LoadSet::FullPlatePoints
   LoadSet::full_plate_points(const Discretization &disc)
   {
-    // The points integrate_density() uses on this rank's cells, and their
-    // images in every combination of symmetry planes: together the
-    // quadrature points of the mesh of the full plate.
-    const auto       &fe    = *disc.fe;
-    const UpdateFlags flags = update_quadrature_points;
-    FEValues<2> fe_values(disc.mapping, fe, QGauss<2>(fe.degree + 2), flags);
+    // The points integrate_along_edge() uses on this rank's cells, and
+    // their images in every combination of symmetry planes: together the
+    // quadrature points of the edges of the full plate's mesh.
+    const auto     &fe = *disc.fe;
     FEFaceValues<2> fe_face_values(disc.mapping,
                                    fe,
                                    QGauss<1>(fe.degree + 2),
-                                   flags);
+                                   update_quadrature_points);
     FullPlatePoints meshed;
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          for (const auto &p : fe_values.get_quadrature_points())
-            meshed.area.push_back(p);
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary()
-                && cell->face(f)->boundary_id()
-                     < Discretization::x_symmetry_plane)
-              {
-                fe_face_values.reinit(cell, f);
-                for (const auto &p : fe_face_values.get_quadrature_points())
-                  meshed.edge.push_back(p);
-              }
-        }
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary()
+              && cell->face(f)->boundary_id()
+                   < Discretization::x_symmetry_plane)
+            {
+              fe_face_values.reinit(cell, f);
+              for (const auto &p : fe_face_values.get_quadrature_points())
+                meshed.edge.push_back(p);
+            }
     FullPlatePoints full = meshed;
     for (const unsigned int axis : disc.symmetry_axes())
-      for (auto *set : {&full.area, &full.edge})
-        {
-          const unsigned int n = set->size();
-          for (unsigned int i = 0; i < n; ++i)
-            set->push_back(mirrored((*set)[i], axis));
-        }
+      {
+        const unsigned int n = full.edge.size();
+        for (unsigned int i = 0; i < n; ++i)
+          full.edge.push_back(mirrored(full.edge[i], axis));
+      }
     return full;
+  }
+
+
+  std::vector<Point<2>>
+  LoadSet::full_plate_points_in(const BoundingBox<2> &region,
+                                const Discretization &disc)
+  {
+    // The full plate's mesh is the meshed part and its mirror images, and
+    // the points of a region on a mirrored cell are the images of those of
+    // the mirrored region on the meshed cell.
+    const PatchIntegrator           integrator(disc);
+    const std::vector<unsigned int> axes = disc.symmetry_axes();
+    std::vector<Point<2>>           points;
+    for (unsigned int planes = 0; planes < (1u << axes.size()); ++planes)
+      {
+        const auto image = [&](const Point<2> &p) {
+          Point<2> q = p;
+          for (unsigned int k = 0; k < axes.size(); ++k)
+            if (planes & (1u << k))
+              q = mirrored(q, axes[k]);
+          return q;
+        };
+        const Point<2> a = image(region.get_boundary_points().first),
+                       b = image(region.get_boundary_points().second);
+        const BoundingBox<2> image_of_region(
+          std::make_pair(Point<2>(std::min(a[0], b[0]), std::min(a[1], b[1])),
+                         Point<2>(std::max(a[0], b[0]), std::max(a[1], b[1]))));
+        for (const auto &p : integrator.quadrature_points(image_of_region))
+          points.push_back(image(p));
+      }
+    return points;
   }
 
 
@@ -428,7 +452,8 @@ namespace liftoff
       return false;
     // Where `load` acts, in full plate coordinates.
     std::function<bool(const Point<2> &)> acts_at;
-    const std::vector<Point<2>>          *candidates = &points.area;
+    std::vector<Point<2>>                 pressure_points;
+    const std::vector<Point<2>>          *candidates = &points.edge;
     switch (load.kind)
       {
       case Kind::point:
@@ -440,7 +465,9 @@ namespace liftoff
           const BoundingBox<2> a = region_of(load, plate);
           if (!is_mirrored_rectangle(a, region_of(other, plate), axis))
             return false;
-          acts_at = [a](const Point<2> &p) { return a.point_inside(p, 1e-12); };
+          pressure_points = full_plate_points_in(a, disc);
+          candidates      = &pressure_points;
+          acts_at         = [](const Point<2> &) { return true; };
           break;
         }
       case Kind::line:
@@ -458,7 +485,6 @@ namespace liftoff
           acts_at = [normal, at](const Point<2> &p) {
             return std::abs(p[normal] - at) < 1e-12;
           };
-          candidates = &points.edge;
           break;
         }
       }
@@ -571,27 +597,21 @@ namespace liftoff
                                  const double     tau,
                                  LA::MPI::Vector &vector) const
   {
-    const BoundingBox<2> region =
-      (load.kind == Kind::pressure
-         ? region_of(load, discretization->plate_box())
-         : discretization->plate_box());
+    const auto density = [&](const Point<2> &x) {
+      return std::array<double, 3>{
+        {load.magnitude * load.intensity_at(x, tau), 0.0, 0.0}};
+    };
     vector = 0;
-    integrate_density(
-      [&](const Point<2> &x) {
-        return std::array<double, 3>{
-          {region.point_inside(x, 1e-12)
-             ? load.magnitude * load.intensity_at(x, tau)
-             : 0.0,
-           0.0,
-           0.0}};
-      },
-      load.kind == Kind::line ? load.edge : numbers::invalid_unsigned_int,
-      vector);
+    if (load.kind == Kind::pressure)
+      PatchIntegrator(*discretization)
+        .add(density, region_of(load, discretization->plate_box()), vector);
+    else
+      integrate_along_edge(density, load.edge, vector);
   }
 
 
   void
-  LoadSet::integrate_density(
+  LoadSet::integrate_along_edge(
     const std::function<std::array<double, 3>(const Point<2> &)> &density,
     const unsigned int                                            edge,
     LA::MPI::Vector                                              &vector) const
@@ -601,7 +621,6 @@ namespace liftoff
     const unsigned int    n_dofs = fe.n_dofs_per_cell();
     const UpdateFlags     flags =
       update_values | update_quadrature_points | update_JxW_values;
-    FEValues<2> fe_values(disc.mapping, fe, QGauss<2>(fe.degree + 2), flags);
     FEFaceValues<2>                      fe_face_values(disc.mapping,
                                    fe,
                                    QGauss<1>(fe.degree + 2),
@@ -623,19 +642,13 @@ namespace liftoff
       if (cell->is_locally_owned())
         {
           cell_rhs = 0;
-          if (edge == numbers::invalid_unsigned_int)
-            {
-              fe_values.reinit(cell);
-              integrate(fe_values);
-            }
-          else
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary()
-                  && cell->face(f)->boundary_id() == edge)
-                {
-                  fe_face_values.reinit(cell, f);
-                  integrate(fe_face_values);
-                }
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary()
+                && cell->face(f)->boundary_id() == edge)
+              {
+                fe_face_values.reinit(cell, f);
+                integrate(fe_face_values);
+              }
           cell->get_dof_indices(dof_indices);
           disc.constraints.distribute_local_to_global(cell_rhs,
                                                       dof_indices,
@@ -695,13 +708,15 @@ namespace liftoff
     body_force->set_time(tau);
     // Functions may implement only vector_value(); ask for all components.
     Vector<double> values(3);
-    integrate_density(
-      [&](const Point<2> &x) {
-        body_force->vector_value(x, values);
-        return std::array<double, 3>{{values[0], values[1], values[2]}};
-      },
-      numbers::invalid_unsigned_int,
-      load_vector);
+    // The whole plate as the patch: every cell lies inside it.
+    PatchIntegrator(*discretization)
+      .add(
+        [&](const Point<2> &x) {
+          body_force->vector_value(x, values);
+          return std::array<double, 3>{{values[0], values[1], values[2]}};
+        },
+        discretization->plate_box(),
+        load_vector);
   }
 
 } // namespace liftoff

@@ -149,22 +149,27 @@ namespace liftoff
                           const double     tau,
                           LA::MPI::Vector &vector) const;
 
-    /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) over the meshed
-    /// part (edge = numbers::invalid_unsigned_int) or along one plate edge.
+    /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) along one plate
+    /// edge (areas: PatchIntegrator).
     void
-    integrate_density(
+    integrate_along_edge(
       const std::function<std::array<double, 3>(const Point<2> &)> &density,
       const unsigned int                                            edge,
       LA::MPI::Vector &vector) const;
 
-    /// Quadrature points of the full plate's mesh (this rank's share) in
-    /// cells and on the plate's edges.
+    /// Quadrature points of the full plate's mesh (this rank's share) on
+    /// the plate's edges.
     struct FullPlatePoints
     {
-      std::vector<Point<2>> area, edge;
+      std::vector<Point<2>> edge;
     };
     static FullPlatePoints
     full_plate_points(const Discretization &discretization);
+    /// The points at which the full plate's mesh (this rank's share)
+    /// evaluates a pressure on `region`.
+    static std::vector<Point<2>>
+    full_plate_points_in(const BoundingBox<2> &region,
+                         const Discretization &discretization);
 
     /// Whether `other` is the image of `load` in the symmetry plane normal
     /// to `axis` (a load on the plane may be its own image), at `times` and
