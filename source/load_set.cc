@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/load_set.h>
+#include <liftoff/patch_integrator.h>
 #include <liftoff/point_functional.h>
 #include <liftoff/scene_input.h>
 #include <liftoff/selection.h>
@@ -144,8 +145,10 @@ namespace liftoff
                          "whole plate",
                          Patterns::Anything(),
                          "'whole plate' or 'x_min, x_max, y_min, y_max' on "
-                         "the full plate. Rectangles that follow cell "
-                         "edges are integrated exactly.");
+                         "the full plate, anywhere on the mesh: each cell "
+                         "the rectangle cuts is integrated over its part "
+                         "inside (exactly for intensities of degree up to "
+                         "p+3 in x and in y).");
                        prm.declare_entry(
                          "Intensity",
                          "1",
@@ -364,7 +367,7 @@ namespace liftoff
     // finite somewhere is named as such before the comparison blames the
     // symmetry.
     for (const auto &load : loads)
-      require_finite_values(load, times, points, plate, disc.mpi_communicator);
+      require_finite_values(load, times, points, plate, disc);
     const std::string symmetry =
       (disc.symmetry() == Symmetry::half ? "half" : "quarter");
     for (const unsigned int axis : disc.symmetry_axes())
@@ -391,41 +394,63 @@ namespace liftoff
   LoadSet::FullPlatePoints
   LoadSet::full_plate_points(const Discretization &disc)
   {
-    // The points integrate_density() uses on this rank's cells, and their
-    // images in every combination of symmetry planes: together the
-    // quadrature points of the mesh of the full plate.
-    const auto       &fe    = *disc.fe;
-    const UpdateFlags flags = update_quadrature_points;
-    FEValues<2> fe_values(disc.mapping, fe, QGauss<2>(fe.degree + 2), flags);
+    // The points integrate_along_edge() uses on this rank's cells, and
+    // their images in every combination of symmetry planes: together the
+    // quadrature points of the edges of the full plate's mesh.
+    const auto     &fe = *disc.fe;
     FEFaceValues<2> fe_face_values(disc.mapping,
                                    fe,
                                    QGauss<1>(fe.degree + 2),
-                                   flags);
+                                   update_quadrature_points);
     FullPlatePoints meshed;
     for (const auto &cell : disc.locally_owned_cells())
-      {
-        fe_values.reinit(cell);
-        for (const auto &p : fe_values.get_quadrature_points())
-          meshed.area.push_back(p);
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary()
-              && cell->face(f)->boundary_id()
-                   < Discretization::x_symmetry_plane)
-            {
-              fe_face_values.reinit(cell, f);
-              for (const auto &p : fe_face_values.get_quadrature_points())
-                meshed.edge.push_back(p);
-            }
-      }
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary()
+            && cell->face(f)->boundary_id() < Discretization::x_symmetry_plane)
+          {
+            fe_face_values.reinit(cell, f);
+            for (const auto &p : fe_face_values.get_quadrature_points())
+              meshed.edge.push_back(p);
+          }
     FullPlatePoints full = meshed;
     for (const unsigned int axis : disc.symmetry_axes())
-      for (auto *set : {&full.area, &full.edge})
-        {
-          const unsigned int n = set->size();
-          for (unsigned int i = 0; i < n; ++i)
-            set->push_back(mirrored((*set)[i], axis));
-        }
+      {
+        const unsigned int n = full.edge.size();
+        for (unsigned int i = 0; i < n; ++i)
+          full.edge.push_back(mirrored(full.edge[i], axis));
+      }
     return full;
+  }
+
+
+  std::vector<Point<2>>
+  LoadSet::full_plate_points_in(const BoundingBox<2> &region,
+                                const Discretization &disc)
+  {
+    // The full plate's mesh is the meshed part and its mirror images, and
+    // the points of a region on a mirrored cell are the images of those of
+    // the mirrored region on the meshed cell.
+    const PatchIntegrator           integrator(disc);
+    const std::vector<unsigned int> axes = disc.symmetry_axes();
+    std::vector<Point<2>>           points;
+    for (unsigned int planes = 0; planes < (1u << axes.size()); ++planes)
+      {
+        const auto image = [&](const Point<2> &p) {
+          Point<2> q = p;
+          for (unsigned int k = 0; k < axes.size(); ++k)
+            if (planes & (1u << k))
+              q = mirrored(q, axes[k]);
+          return q;
+        };
+        const Point<2> a = image(region.get_boundary_points().first),
+                       b = image(region.get_boundary_points().second);
+        const BoundingBox<2> image_of_region(
+          std::make_pair(Point<2>(std::min(a[0], b[0]), std::min(a[1], b[1])),
+                         Point<2>(std::max(a[0], b[0]), std::max(a[1], b[1]))));
+        for (const auto &p : integrator.quadrature_points(image_of_region))
+          points.push_back(image(p));
+      }
+    return points;
   }
 
 
@@ -471,17 +496,17 @@ namespace liftoff
         return false;
     if (load.kind == Kind::point)
       return true;
-    const auto [candidates, acts_at] = where_it_acts(load, plate, points);
+    const auto [candidates, acts_at] = where_it_acts(load, plate, points, disc);
     return have_mirrored_intensities(
-      load, other, axis, *candidates, acts_at, times, disc.mpi_communicator);
+      load, other, axis, candidates, acts_at, times, disc.mpi_communicator);
   }
 
 
-  std::pair<const std::vector<Point<2>> *,
-            std::function<bool(const Point<2> &)>>
+  std::pair<std::vector<Point<2>>, std::function<bool(const Point<2> &)>>
   LoadSet::where_it_acts(const Load            &load,
                          const BoundingBox<2>  &plate,
-                         const FullPlatePoints &points)
+                         const FullPlatePoints &points,
+                         const Discretization  &disc)
   {
     if (load.kind == Kind::line)
       {
@@ -490,14 +515,13 @@ namespace liftoff
         const double       at =
           (load.edge % 2 == 0 ? plate.get_boundary_points().first
                               : plate.get_boundary_points().second)[normal];
-        return {&points.edge, [normal, at](const Point<2> &p) {
+        return {points.edge, [normal, at](const Point<2> &p) {
                   return std::abs(p[normal] - at) < 1e-12;
                 }};
       }
-    const BoundingBox<2> region = region_of(load, plate);
-    return {&points.area, [region](const Point<2> &p) {
-              return region.point_inside(p, 1e-12);
-            }};
+    // A pressure: the points at which the integration evaluates it.
+    return {full_plate_points_in(region_of(load, plate), disc),
+            [](const Point<2> &) { return true; }};
   }
 
 
@@ -582,22 +606,22 @@ namespace liftoff
                                  const std::vector<double> &times,
                                  const FullPlatePoints     &points,
                                  const BoundingBox<2>      &plate,
-                                 const MPI_Comm             comm)
+                                 const Discretization      &disc)
   {
     for (const double tau : times)
       AssertThrow(std::isfinite(load.history->value(Point<1>(tau))),
                   ExcMessage(non_finite_history(load, tau)));
     if (load.kind == Kind::point)
       return;
-    const auto [candidates, acts_at] = where_it_acts(load, plate, points);
+    const auto [candidates, acts_at] = where_it_acts(load, plate, points, disc);
     const auto   n_times = load.intensity_depends_on_time ? times.size() : 1;
     unsigned int first_bad_time = n_times;
-    for (const auto &p : *candidates)
+    for (const auto &p : candidates)
       if (acts_at(p))
         for (unsigned int k = 0; k < first_bad_time; ++k)
           if (!std::isfinite(load.magnitude * load.intensity_at(p, times[k])))
             first_bad_time = k;
-    first_bad_time = Utilities::MPI::min(first_bad_time, comm);
+    first_bad_time = Utilities::MPI::min(first_bad_time, disc.mpi_communicator);
     AssertThrow(first_bad_time == n_times,
                 ExcMessage(non_finite_intensity(load, times[first_bad_time])));
   }
@@ -635,27 +659,21 @@ namespace liftoff
                                  const double     tau,
                                  LA::MPI::Vector &vector) const
   {
-    const BoundingBox<2> region =
-      (load.kind == Kind::pressure
-         ? region_of(load, discretization->plate_box())
-         : discretization->plate_box());
+    const auto density = [&](const Point<2> &x) {
+      return std::array<double, 3>{
+        {load.magnitude * load.intensity_at(x, tau), 0.0, 0.0}};
+    };
     vector = 0;
-    integrate_density(
-      [&](const Point<2> &x) {
-        return std::array<double, 3>{
-          {region.point_inside(x, 1e-12)
-             ? load.magnitude * load.intensity_at(x, tau)
-             : 0.0,
-           0.0,
-           0.0}};
-      },
-      load.kind == Kind::line ? load.edge : numbers::invalid_unsigned_int,
-      vector);
+    if (load.kind == Kind::pressure)
+      PatchIntegrator(*discretization)
+        .add(density, region_of(load, discretization->plate_box()), vector);
+    else
+      integrate_along_edge(density, load.edge, vector);
   }
 
 
   void
-  LoadSet::integrate_density(
+  LoadSet::integrate_along_edge(
     const std::function<std::array<double, 3>(const Point<2> &)> &density,
     const unsigned int                                            edge,
     LA::MPI::Vector                                              &vector) const
@@ -665,7 +683,6 @@ namespace liftoff
     const unsigned int    n_dofs = fe.n_dofs_per_cell();
     const UpdateFlags     flags =
       update_values | update_quadrature_points | update_JxW_values;
-    FEValues<2> fe_values(disc.mapping, fe, QGauss<2>(fe.degree + 2), flags);
     FEFaceValues<2>                      fe_face_values(disc.mapping,
                                    fe,
                                    QGauss<1>(fe.degree + 2),
@@ -686,19 +703,13 @@ namespace liftoff
     for (const auto &cell : disc.locally_owned_cells())
       {
         cell_rhs = 0;
-        if (edge == numbers::invalid_unsigned_int)
-          {
-            fe_values.reinit(cell);
-            integrate(fe_values);
-          }
-        else
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary()
-                && cell->face(f)->boundary_id() == edge)
-              {
-                fe_face_values.reinit(cell, f);
-                integrate(fe_face_values);
-              }
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary()
+              && cell->face(f)->boundary_id() == edge)
+            {
+              fe_face_values.reinit(cell, f);
+              integrate(fe_face_values);
+            }
         cell->get_dof_indices(dof_indices);
         disc.constraints.distribute_local_to_global(cell_rhs,
                                                     dof_indices,
@@ -758,13 +769,15 @@ namespace liftoff
     body_force->set_time(tau);
     // Functions may implement only vector_value(); ask for all components.
     Vector<double> values(3);
-    integrate_density(
-      [&](const Point<2> &x) {
-        body_force->vector_value(x, values);
-        return std::array<double, 3>{{values[0], values[1], values[2]}};
-      },
-      numbers::invalid_unsigned_int,
-      load_vector);
+    // The whole plate as the patch: every cell lies inside it.
+    PatchIntegrator(*discretization)
+      .add(
+        [&](const Point<2> &x) {
+          body_force->vector_value(x, values);
+          return std::array<double, 3>{{values[0], values[1], values[2]}};
+        },
+        discretization->plate_box(),
+        load_vector);
   }
 
 } // namespace liftoff

@@ -150,22 +150,27 @@ namespace liftoff
                           const double     tau,
                           LA::MPI::Vector &vector) const;
 
-    /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) over the meshed
-    /// part (edge = numbers::invalid_unsigned_int) or along one plate edge.
+    /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) along one plate
+    /// edge (areas: PatchIntegrator).
     void
-    integrate_density(
+    integrate_along_edge(
       const std::function<std::array<double, 3>(const Point<2> &)> &density,
       const unsigned int                                            edge,
       LA::MPI::Vector &vector) const;
 
-    /// Quadrature points of the full plate's mesh (this rank's share) in
-    /// cells and on the plate's edges.
+    /// Quadrature points of the full plate's mesh (this rank's share) on
+    /// the plate's edges.
     struct FullPlatePoints
     {
-      std::vector<Point<2>> area, edge;
+      std::vector<Point<2>> edge;
     };
     static FullPlatePoints
     full_plate_points(const Discretization &discretization);
+    /// The points at which the full plate's mesh (this rank's share)
+    /// evaluates a pressure on `region`.
+    static std::vector<Point<2>>
+    full_plate_points_in(const BoundingBox<2> &region,
+                         const Discretization &discretization);
 
     /// Whether `other` is the image of `load` in the symmetry plane normal
     /// to `axis` (a load on the plane may be its own image), at `times` and
@@ -178,13 +183,15 @@ namespace liftoff
                     const std::vector<double> &times,
                     const FullPlatePoints     &points,
                     const Discretization      &discretization);
-    /// The points of `points` a pressure or line load may act on, and the
-    /// test of whether it acts on one.
-    static std::pair<const std::vector<Point<2>> *,
+    /// The points of the full plate's mesh (this rank's share) at which
+    /// a pressure or line load is evaluated, and the test of whether it
+    /// acts on one.
+    static std::pair<std::vector<Point<2>>,
                      std::function<bool(const Point<2> &)>>
     where_it_acts(const Load            &load,
                   const BoundingBox<2>  &plate,
-                  const FullPlatePoints &points);
+                  const FullPlatePoints &points,
+                  const Discretization  &discretization);
     /// Throw, naming the expression and the first tau, if the Time history
     /// of `load` or its intensity times Magnitude (at the `points` it acts
     /// on) is not finite at one of `times`. Collective.
@@ -193,7 +200,7 @@ namespace liftoff
                           const std::vector<double> &times,
                           const FullPlatePoints     &points,
                           const BoundingBox<2>      &plate,
-                          const MPI_Comm             comm);
+                          const Discretization      &discretization);
     /// The messages of a Time history and of an Intensity that are not
     /// finite at tau, shared by the check before the run and the one at a
     /// step.
