@@ -99,42 +99,41 @@ namespace liftoff
   {
     const Discretization &disc = discretization;
     FEValues<2>           whole_cell(disc.mapping, *disc.fe, cell_rule, flags);
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          // Cells inside the patch or away from it are decided on their
-          // bounding boxes, whatever their shape: only the cut cells need
-          // the clipping (and rectangles).
-          const BoundingBox<2> box       = cell->bounding_box();
-          const double         tolerance = 1e-12 * cell->diameter();
-          bool                 inside = true, away = false;
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              inside =
-                inside && box.lower_bound(d) >= patch.lower_bound(d) - tolerance
-                && box.upper_bound(d) <= patch.upper_bound(d) + tolerance;
-              away = away
-                     || box.lower_bound(d) >= patch.upper_bound(d) - tolerance
-                     || box.upper_bound(d) <= patch.lower_bound(d) + tolerance;
-            }
-          if (away)
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        // Cells inside the patch or away from it are decided on their
+        // bounding boxes, whatever their shape: only the cut cells need
+        // the clipping (and rectangles).
+        const BoundingBox<2> box       = cell->bounding_box();
+        const double         tolerance = 1e-12 * cell->diameter();
+        bool                 inside = true, away = false;
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            inside = inside
+                     && box.lower_bound(d) >= patch.lower_bound(d) - tolerance
+                     && box.upper_bound(d) <= patch.upper_bound(d) + tolerance;
+            away = away
+                   || box.lower_bound(d) >= patch.upper_bound(d) - tolerance
+                   || box.upper_bound(d) <= patch.lower_bound(d) + tolerance;
+          }
+        if (away)
+          continue;
+        if (inside)
+          {
+            whole_cell.reinit(cell);
+            work(cell, whole_cell);
             continue;
-          if (inside)
-            {
-              whole_cell.reinit(cell);
-              work(cell, whole_cell);
-              continue;
-            }
-          // A cut cell: the rule differs from cell to cell, and so do the
-          // shape values at its points.
-          const BoundingBox<2> part = reference_part(cell, patch);
-          const Quadrature<2>  rule(
-            on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
-            on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
-          FEValues<2> cut_cell(disc.mapping, *disc.fe, rule, flags);
-          cut_cell.reinit(cell);
-          work(cell, cut_cell);
-        }
+          }
+        // A cut cell: the rule differs from cell to cell, and so do the
+        // shape values at its points.
+        const BoundingBox<2> part = reference_part(cell, patch);
+        const Quadrature<2>  rule(
+          on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
+          on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
+        FEValues<2> cut_cell(disc.mapping, *disc.fe, rule, flags);
+        cut_cell.reinit(cell);
+        work(cell, cut_cell);
+      }
   }
 
 

@@ -747,7 +747,11 @@ namespace liftoff
     if (resume_step == 0)
       start_from_initial_state();
     else
-      resume_from_checkpoint();
+      {
+        resume_from_checkpoint();
+        if (adaptation_pending)
+          adapt_mesh_if_due();
+      }
 
     for (unsigned int step = state.step + 1; step <= newmark.n_steps(); ++step)
       {
@@ -830,7 +834,10 @@ namespace liftoff
   void
   Simulator::adapt_mesh_if_due()
   {
-    if (!mesh_refinement.is_due(state.step) || state.step == newmark.n_steps())
+    if (!mesh_refinement.is_due(state.step))
+      return;
+    adaptation_pending = (state.step == newmark.n_steps());
+    if (adaptation_pending)
       return;
     const auto stored = [this]() {
       const EnergyBalance e = state_energies();
@@ -846,6 +853,12 @@ namespace liftoff
       SectionTimer::Scope t(timer, "mesh refinement");
       equilibrate(state.step, state.tau, "the acceleration after a new mesh");
     }
+    // The foundation's setup on the new mesh left its matrix with the
+    // springs alone; the time steps' matrix holds the dashpots too (Gamma
+    // + c kappa). Without this, a damped adaptive run solved with
+    // Gamma alone after its first new mesh: balance error 0.38 of the
+    // energy scale (issue 31).
+    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     active_set.set_base_matrix(effective_base_matrix());
     check_time_step();
     state.energies      = energies();
@@ -1132,6 +1145,7 @@ namespace liftoff
     // keep what they have written.
     archive &state;
     archive &energy_check;
+    archive &adaptation_pending;
     transfer(archive, foundation);
     if constexpr (Archive::is_loading::value)
       active_set.load(archive, effective_base_matrix());

@@ -124,6 +124,14 @@ main(int argc, char **argv)
        exact_solver + adaptive + set("Discretization/Cells along x", 8)
          + set("Discretization/Cells along y", 8),
        20},
+      // Stopped at step 14, when the mesh is due to adapt: the last step
+      // of a run skips that adaptation, so the resume must make it before
+      // its first step (the sweep of tests/sweeps found the resumes after
+      // steps 7 and 14 differing when it did not).
+      {"adaptive mesh, stopped at an adaptation step",
+       exact_solver + adaptive + set("Discretization/Cells along x", 8)
+         + set("Discretization/Cells along y", 8),
+       14},
       // Adapted with a gap, dashpots and a shear layer: their Gauss point
       // data (gap, dashpot velocity, layer gradients) come from the
       // checkpoint in the order of the loaded mesh.

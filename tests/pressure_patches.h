@@ -214,8 +214,8 @@ namespace pressure_patches
     liftoff::MindlinPlate plate;
     plate.parse_parameters(prm);
     liftoff::Discretization disc(comm);
-    disc.parse_parameters(prm);
-    disc.setup(plate);
+    disc.parse_parameters(prm, plate);
+    disc.setup();
     if (c.refine_below > -1e300)
       {
         for (const auto &cell : disc.triangulation.active_cell_iterators())

@@ -169,6 +169,10 @@ namespace liftoff
     /// to the energy before it.
     unsigned int n_adaptations       = 0;
     double       largest_energy_jump = 0;
+    /// The mesh was due to adapt after the last step, which skips it: a
+    /// checkpoint of that step keeps this, and a resume that goes further
+    /// adapts before its first step, as a run without the stop did.
+    bool adaptation_pending = false;
 
     /// The checks across parts that need no mesh (and a warning about
     /// profile times a run does not reach).
