@@ -177,6 +177,14 @@ def check_folder(tool, liftoff, work):
           "--overwrite removes the earlier study, not the user's file "
           "(exit %d; runs/ holds %s)" % (run.returncode, runs))
 
+    # --output naming a file: one line, not a traceback.
+    run = study(tool, liftoff, work, "4e-3", output=mine)
+    message = run.stderr.strip()
+    check(run.returncode != 0 and "\n" not in message
+          and "is a file, not a folder" in message,
+          "--output naming a file is refused in one line (exit %d: %s)"
+          % (run.returncode, message[:200]))
+
 
 def check_interrupt(tool, liftoff, work):
     steps = "4e-3,2e-3,1e-3"
