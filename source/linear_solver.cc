@@ -98,7 +98,7 @@ namespace liftoff
     max_iterations            = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
     AssertThrow(tolerance > 0,
-                ExcMessage("Linear solver/Tolerance must lie in (0, 1)."));
+                ExcMessage("Linear solver/Tolerance must lie in (0, 1e-3]."));
   }
 
 

@@ -118,9 +118,10 @@ namespace liftoff
     prm.declare_entry(
       "Self weight",
       "0",
-      Patterns::Double(0.0),
+      Patterns::Double(0.0, 1e100),
       "q, the plate's weight per unit area in units of F0 / L^2, the unit "
-      "of every pressure (>= 0; 0: a weightless plate): a uniform pressure "
+      "of every pressure (>= 0, at most 1e100, beyond which its settled "
+      "state overflows; 0: a weightless plate): a uniform pressure "
       "that acts from before tau = 0. "
       "A time integration starts from the static equilibrium under it (the "
       "slab settled on its bed, in contact wherever q pre-compresses the "

@@ -152,6 +152,13 @@ namespace liftoff
 
 
   bool
+  NewmarkIntegrator::conserves_energy() const
+  {
+    return std::abs(beta - 0.25) <= 1e-12 && std::abs(gamma - 0.5) <= 1e-12;
+  }
+
+
+  bool
   NewmarkIntegrator::dissipates_energy() const
   {
     return gamma > 0.5 + 1e-12;

@@ -404,9 +404,23 @@ namespace liftoff
   }
 
 
+  bool
+  Simulator::checks_energy() const
+  {
+    // The balance is a law of the scheme only where the scheme conserves
+    // the energy or can only lose it; Beta != 1/4 with Gamma = 1/2
+    // conserves another energy (Beta = 1/2 on a quarter plate under a
+    // sudden point load: 0.335 of the scale at the first step).
+    return analysis == Analysis::dynamic_analysis && energy_check.is_enabled()
+           && (newmark.conserves_energy() || newmark.dissipates_energy());
+  }
+
+
   void
   Simulator::check_energy_balance()
   {
+    if (!checks_energy())
+      return;
     if (!energy_check.exceeds(state.step,
                               state.energies,
                               state.initial_energies,
@@ -607,9 +621,7 @@ namespace liftoff
   EnergyBalance
   Simulator::energies()
   {
-    const bool is_checked =
-      analysis == Analysis::dynamic_analysis && energy_check.is_enabled();
-    if (!time_history.wants_energies() && !is_checked)
+    if (!time_history.wants_energies() && !checks_energy())
       return EnergyBalance{0, 0, 0, state.work, state.dissipated};
     return state_energies();
   }
@@ -1217,7 +1229,13 @@ namespace liftoff
                     largest_energy_jump);
       }
     summary.add("steps", double(rows.empty() ? 0 : rows.size() - 1));
-    if (analysis == Analysis::dynamic_analysis && energy_check.is_enabled())
+    if (analysis == Analysis::dynamic_analysis && energy_check.is_enabled()
+        && !checks_energy())
+      summary.add("energy balance",
+                  "not checked: Time integration/Beta = "
+                    + format_time(newmark.beta)
+                    + " with Gamma = 1/2 conserves a modified energy");
+    if (checks_energy())
       {
         summary.add("energy balance error, largest share of the energy scale",
                     energy_check.largest_relative_error());

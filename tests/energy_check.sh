@@ -6,7 +6,8 @@
 # - a stiff bed (Gamma = 1e8) at the default time step does not: the run
 #   warns once, naming the step and the time step against sqrt(Gamma),
 #   exits 0 and ends `completed with warnings` with the warning in
-#   summary.txt; with Energy check/Mode = off it ends `completed`.
+#   summary.txt; with Energy check/Mode = off it ends `completed`;
+# - Beta = 1/2 conserves another energy: not checked, and says so.
 #   energy_check.sh LIFTOFF
 set -u
 liftoff=$1
@@ -45,4 +46,15 @@ scene 'subsection Foundation' '  set Stiffness = 1e8' 'end' 'subsection Energy c
 status=$?
 [ "$status" -eq 0 ] && grep -q '^status: completed$' out/summary.txt && ! grep -q 'warning' stderr.txt
 check $? "stiff bed, Energy check/Mode = off: exit $status, completed, no warning"
+rm -rf out
+
+# Beta = 1/2 (Gamma = 1/2) conserves a modified energy: the balance of the
+# physical one is 0.335 of its scale at the first step under a sudden load,
+# so it is not a law of the scheme and not checked (it warned).
+scene 'subsection Time integration' '  set Beta = 0.5' 'end' > beta.prm
+"$liftoff" beta.prm > stdout.txt 2> stderr.txt
+status=$?
+[ "$status" -eq 0 ] && grep -q '^status: completed$' out/summary.txt && ! grep -q 'warning' stderr.txt \
+  && grep -q '^energy balance: not checked: Time integration/Beta = 0.5 with Gamma = 1/2 conserves a modified energy' out/summary.txt
+check $? "Beta = 1/2: exit $status, completed, the summary says the balance is not checked"
 finish

@@ -51,6 +51,14 @@ namespace liftoff
     bool
     dissipates_energy() const;
 
+    /// Whether the scheme conserves the energy of a linear system exactly
+    /// (the trapezoidal rule: Beta = 1/4, Gamma = 1/2, or generalized-alpha
+    /// with Spectral radius 1). Gamma = 1/2 with another Beta conserves a
+    /// modified energy instead, which differs by a term of order
+    /// (Beta - 1/4) dt^2 |a|^2.
+    bool
+    conserves_energy() const;
+
     /// Whether the scheme is stable only for small enough steps (Newmark
     /// with 2 beta < gamma).
     bool

@@ -223,6 +223,10 @@ namespace liftoff
     /// stability limit of a conditionally stable scheme, or an overflow.
     std::string
     cause_of_non_finite_state(const LA::MPI::Vector &load);
+    /// Whether the energy balance is checked: a dynamic run, the check
+    /// on, and a scheme for which the balance is a law.
+    bool
+    checks_energy() const;
     /// Stop (Energy check/Mode = fail) or warn once if the balance error
     /// of the state exceeds the check's tolerance.
     void
