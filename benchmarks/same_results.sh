@@ -15,7 +15,9 @@
 # missing from one run, or a run fails, 2 on a usage error. The folders of
 # a scene that differs are kept and named.
 #
-# Time: not measured yet.
+# Time: 34 s for the eight scenes of prm/, both binaries one after the
+# other (example-2-beam-pulse, 20 000 steps: 3 s per binary), on the
+# shared 2-core machine while a -j2 build ran beside it (issue 32).
 set -u
 if [ $# -ne 2 ] || [ ! -x "$1" ] || [ ! -x "$2" ]; then
   echo "usage: $0 OLD_LIFTOFF NEW_LIFTOFF (two executable liftoff binaries)" >&2
@@ -56,7 +58,7 @@ compare_runs() {
       differences="$differences $file written by one run only;"
     fi
   done
-  printf '%s' "$differences"
+  printf '%s' "${differences%;}"
   [ -z "$differences" ]
 }
 
