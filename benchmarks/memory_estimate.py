@@ -17,7 +17,7 @@ import subprocess
 import sys
 import tempfile
 
-# Must equal the constants in source/discretization.cc.
+# Must equal the constants in source/fem/discretization.cc.
 BYTES_PER_CELL, BYTES_PER_DOF, BYTES_PER_ENTRY = 510, 1480, 33
 # Per N log2(N) of a symmetric (Cholesky) and of an LU factor.
 BYTES_PER_FACTOR_UNIT = {"cholesky": 32, "lu": 113}

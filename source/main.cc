@@ -2,10 +2,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <liftoff/output_files.h>
-#include <liftoff/scene_input.h>
-#include <liftoff/simulator.h>
-#include <liftoff/stop_signal.h>
+#include <liftoff/base/output_files.h>
+#include <liftoff/base/scene_input.h>
+#include <liftoff/run/simulator.h>
+#include <liftoff/run/stop_signal.h>
 #include <liftoff/version.h>
 
 #include <fstream>

@@ -8,7 +8,7 @@
 // once more with every other unknown scaled by 1e-7 (D A D): blocks that
 // ill-conditioned are not inverted, and CHOLMOD substitutes.
 
-#include <liftoff/cholesky_factor.h>
+#include <liftoff/solver/cholesky_factor.h>
 
 #include "test_tools.h"
 

@@ -2,7 +2,7 @@
 
 // The energy balance of a run as the tests read it.
 
-#include <liftoff/simulator.h>
+#include <liftoff/run/simulator.h>
 
 #include <algorithm>
 #include <cmath>

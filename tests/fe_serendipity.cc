@@ -38,7 +38,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <liftoff/fe_serendipity.h>
+#include <liftoff/fem/fe_serendipity.h>
 
 #include "test_tools.h"
 

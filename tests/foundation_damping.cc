@@ -17,7 +17,7 @@
 
 #include "test_tools.h"
 
-#include <liftoff/tensionless_winkler_foundation.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
 
 #include <cmath>
 #include <vector>

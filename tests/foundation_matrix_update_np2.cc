@@ -12,9 +12,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <liftoff/discretization.h>
-#include <liftoff/mindlin_plate.h>
-#include <liftoff/tensionless_winkler_foundation.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mindlin_plate.h>
 
 #include "test_tools.h"
 

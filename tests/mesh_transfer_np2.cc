@@ -22,10 +22,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <liftoff/discretization.h>
-#include <liftoff/mesh_refinement.h>
-#include <liftoff/mindlin_plate.h>
-#include <liftoff/plate_matrices.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mesh_refinement.h>
+#include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/plate_matrices.h>
 
 #include "test_tools.h"
 

@@ -27,7 +27,7 @@
 // 1/m^4 (edge rotation) and is summed to below 1e-13. The closed form is
 // itself checked against the brute force double series.
 
-#include <liftoff/point_functional.h>
+#include <liftoff/fem/point_functional.h>
 
 #include "test_tools.h"
 

@@ -20,9 +20,9 @@
 #include <deal.II/base/function.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <liftoff/discretization.h>
-#include <liftoff/load_set.h>
-#include <liftoff/mindlin_plate.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/load_set.h>
+#include <liftoff/fem/mindlin_plate.h>
 
 #include "test_tools.h"
 

@@ -4,7 +4,7 @@
 // ParameterHandler that skipped the pattern could hand over) is an error
 // naming the entry and the allowed names, never a silent default.
 
-#include <liftoff/selection.h>
+#include <liftoff/base/selection.h>
 
 #include "test_tools.h"
 

@@ -9,12 +9,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <liftoff/discretization.h>
-#include <liftoff/linear_solver.h>
-#include <liftoff/mindlin_plate.h>
-#include <liftoff/plate_matrices.h>
-#include <liftoff/section_timer.h>
-#include <liftoff/tensionless_winkler_foundation.h>
+#include <liftoff/base/section_timer.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/plate_matrices.h>
+#include <liftoff/solver/linear_solver.h>
 
 #include "symmetric_scene.h"
 #include "test_tools.h"

@@ -8,7 +8,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <liftoff/simulator.h>
+#include <liftoff/run/simulator.h>
 
 #include <cmath>
 #include <iomanip>

@@ -19,8 +19,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <liftoff/discretization.h>
-#include <liftoff/plate_matrices.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/plate_matrices.h>
 
 #include "navier_plate.h"
 

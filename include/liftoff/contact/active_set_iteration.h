@@ -1,0 +1,205 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <liftoff/base/section_timer.h>
+
+#include <liftoff/base/linear_algebra.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/solver/ghost_update.h>
+#include <liftoff/solver/linear_solver.h>
+
+#include <functional>
+#include <optional>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The iteration of eq. (3.9): solve (B + K_f(S)) u = b with the foundation
+   * stiffness of the current contact set S, rebuild S from u at the Gauss
+   * points, repeat until S no longer changes. B (plate stiffness plus the
+   * time integrator's mass term) is fixed for a mesh and time step; the
+   * system matrix B + K_f(S) is built and factorised once and afterwards
+   * only the springs of the Gauss points whose status flipped are added or
+   * removed, and the LinearSolver reuses its factor. A step whose set does
+   * not move costs one substitution.
+   * The LinearSolver it owns reads its own parameters (`Linear solver`).
+   */
+  class ActiveSetIteration
+  {
+  public:
+    struct Result
+    {
+      unsigned int iterations = 0;
+      bool         converged  = false;
+      /// Only with requires_contact: the set emptied or the system was
+      /// singular, i.e. nothing holds the plate.
+      bool lost_contact = false;
+      /// Length of the cycle the set fell into (0: none): the number of
+      /// distinct sets it went round.
+      unsigned int cycle_length = 0;
+    };
+
+    /// What to do when the set returns to one it had earlier in the step.
+    enum class CycleRule
+    {
+      /// Solve once with the union of the sets of the cycle (every point
+      /// in contact in any of them) and accept that; see doc/model.md.
+      union_of_cycle,
+      /// Report it as not converged: the run stops with an error.
+      stop,
+      /// Do not look for cycles: iterate up to max_iterations (to show
+      /// that a cycle found is one).
+      none
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    ActiveSetIteration(const Discretization         &discretization,
+                       TensionlessWinklerFoundation &foundation,
+                       SectionTimer                 &timer);
+
+    /// Writes the values of B into a matrix of the plate's pattern
+    /// (Discretization::reinit_matrix), replacing all it held.
+    using BaseMatrix = std::function<void(LA::MPI::SparseMatrix &)>;
+
+    /// Use B from now on (a new mesh or time step): builds B + K_f(S) for
+    /// the current set and factorises it. B is written into the system
+    /// matrix itself, so no second matrix of the plate's size is alive
+    /// while the factor is built (L: 330 MB of the peak).
+    void
+    set_base_matrix(const BaseMatrix &write_base);
+
+    /// Solve; `solution` holds the initial guess on entry and the result
+    /// on exit (owned entries, constraints distributed), `ghosted_solution`
+    /// the same with ghosts. With `guess_is_prediction` (a time step's
+    /// predictor) and `Initial set = predicted`, the iteration starts from
+    /// the guess's contact set rather than the foundation's current one.
+    Result
+    solve(const LA::MPI::Vector &rhs,
+          LA::MPI::Vector       &solution,
+          LA::MPI::Vector       &ghosted_solution,
+          const bool             guess_is_prediction = false);
+
+    /// The linear solver, for its counters and its parameters.
+    const LinearSolver &
+    linear_solver() const;
+    LinearSolver &
+    linear_solver();
+
+    /// The system matrix B + K_f(S) as it is, round-off included, and the
+    /// set of the matrix the solver's factor was built from.
+    void
+    save(OutputArchive &archive) const;
+    /// Instead of set_base_matrix(): the matrix and factor of save(), with
+    /// the B that was given to set_base_matrix() then. The foundation's
+    /// own status must be loaded first.
+    void
+    load(InputArchive &archive, const BaseMatrix &write_base);
+
+    unsigned int max_iterations = 50;
+    CycleRule    cycle_rule     = CycleRule::union_of_cycle;
+    /// `Initial set = predicted`.
+    bool starts_from_prediction = true;
+    /// The change one step of iterative refinement makes to x, the solution
+    /// of the last solve with right-hand side b, relative to x: an estimate
+    /// of the forward error that the residual tests cannot see in a system
+    /// near the limit of double precision (collective).
+    double
+    refinement_change(const LA::MPI::Vector &x, const LA::MPI::Vector &b);
+
+    /// Nothing but the foundation holds the plate (a static free plate):
+    /// stop when the contact set empties or the solve is singular.
+    bool requires_contact = false;
+
+  private:
+    const Discretization         &discretization;
+    TensionlessWinklerFoundation &foundation;
+    SectionTimer                 &timer;
+    /// B + K_f(S), kept in step with S.
+    LA::MPI::SparseMatrix matrix;
+    BaseMatrix            write_base;
+    /// The S of the matrix the solver's factor was built from, which
+    /// B + K_f(S) gives again bit for bit (by rebuild_matrix()).
+    std::vector<unsigned char> factorised_status;
+    /// Declared after `matrix`: a factorisation must die before its matrix.
+    LinearSolver solver;
+    /// rhs + f_g(S) when the foundation has a gap.
+    LA::MPI::Vector rhs_with_gap;
+    /// The vector the solver multiplies by the change of the matrix since
+    /// its factorisation or last solve, with its constraints applied, and
+    /// with ghosts.
+    LA::MPI::Vector change_owned, change_source;
+    /// The S of the matrix at the last solve.
+    std::vector<unsigned char> solved_status;
+    /// The next solve may continue the last one (LinearSolver::solve()).
+    bool continues_solve = false;
+
+    /// B + K_f(S) for the S the matrix holds, written afresh (before a
+    /// factorisation: the factor is then of a matrix that can be built
+    /// again from B and S).
+    void
+    rebuild_matrix();
+
+    /// The right-hand side of the system for the current set: `rhs`, plus
+    /// the springs' push on the gap f_g(S) if the foundation has one (the
+    /// reaction is affine then).
+    const LA::MPI::Vector &
+    with_gap_load(const LA::MPI::Vector &rhs);
+    /// The solution's copies to its ghosted form, with one import kept.
+    GhostUpdate ghosts;
+
+    /// Whether x solves the system to the accuracy it was asked for: a
+    /// `trial` solution is only checked for a set that holds the plate.
+    bool
+    is_solution_of_system(const LA::MPI::Vector &x,
+                          const LA::MPI::Vector &b,
+                          LinearSolver::Accuracy accuracy) const;
+
+    /// Bring the matrix in step with the foundation's set and solve.
+    void
+    solve_with_current_set(
+      const LA::MPI::Vector &rhs,
+      LA::MPI::Vector       &solution,
+      LA::MPI::Vector       &ghosted_solution,
+      LinearSolver::Accuracy accuracy = LinearSolver::Accuracy::final);
+
+    /// solve_with_current_set() and the contact rule applied to the
+    /// solution: the number of statuses changed, or no value when the
+    /// solution is not one of the system (a plate that needs contact has
+    /// lost it). Collective.
+    std::optional<unsigned long>
+    solve_and_update_set(const LA::MPI::Vector &rhs,
+                         LA::MPI::Vector       &solution,
+                         LA::MPI::Vector       &ghosted_solution,
+                         LinearSolver::Accuracy accuracy);
+
+    /// No status changed in the last update, and none within the round-off
+    /// band differs from `start_set`, the set the step began with (those
+    /// are restored). Collective.
+    bool
+    has_settled(const unsigned long               n_changed,
+                const std::vector<unsigned char> &start_set);
+    /// Give the foundation the set the contact rule gives the prediction
+    /// (ghosted_solution is set to it).
+    void
+    start_from_prediction(const LA::MPI::Vector &prediction,
+                          LA::MPI::Vector       &ghosted_solution);
+    /// Solve with the union of the sets visited[first], ... (a cycle).
+    void
+    solve_with_union(const std::vector<std::vector<unsigned char>> &visited,
+                     const unsigned int                             first,
+                     const LA::MPI::Vector                         &rhs,
+                     LA::MPI::Vector                               &solution,
+                     LA::MPI::Vector &ghosted_solution);
+    /// Index of the set in `visited` equal to the foundation's current set
+    /// on every rank, or visited.size().
+    unsigned int
+    find_in(const std::vector<std::vector<unsigned char>> &visited) const;
+  };
+} // namespace liftoff

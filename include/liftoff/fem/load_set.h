@@ -1,0 +1,223 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/fem/discretization.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The loads of a scene: concentrated forces at arbitrary points, pressures
+   * on rectangles and line loads along edges, any number of each up to
+   * max_loads_per_kind, each scaled by its own time history h(tau).
+   * Positive loads press the plate into the foundation (w > 0).
+   *
+   * The scene describes the full plate. On a half or quarter model only the
+   * part of each load that falls on the meshed part is applied; a point on
+   * a symmetry plane carries its share.
+   *
+   * Whatever does not change in time is assembled once: the load vector at
+   * time tau is sum_k h_k(tau) b_k. Only pressures and line loads whose
+   * intensity names tau (and the body force of set_body_force()) are
+   * integrated again at every step.
+   */
+  class LoadSet
+  {
+  public:
+    static constexpr unsigned int max_loads_per_kind = 8;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// No load is on (every Magnitude is 0) and no body force is set.
+    bool
+    is_empty() const;
+
+    /// Some load acts from before tau = 0 (Loads/Self weight != 0): a time
+    /// integration then starts from the static equilibrium under it.
+    bool
+    has_permanent_loads() const;
+
+    /// The load vector of the permanent loads alone (owned entries,
+    /// constraints applied).
+    void
+    assemble_permanent(LA::MPI::Vector &load_vector) const;
+
+    /// Where the point loads act on the meshed part (mesh refinement keeps
+    /// their cells fine).
+    std::vector<Point<2>>
+    point_load_positions(const Discretization &discretization) const;
+
+    /// Loads inside the plate, and symmetric where the model relies on it:
+    /// on a half or quarter model every load must have a mirror image whose
+    /// history agrees at the `n_steps + 1` times k * time_step and whose
+    /// intensity agrees at every quadrature point of the full plate's mesh
+    /// (at every one of those times if it names tau). Collective.
+    void
+    check_against(const Discretization &discretization,
+                  const double          time_step,
+                  const unsigned int    n_steps) const;
+
+    /// Precompute the time independent parts on this discretization.
+    void
+    setup(const Discretization &discretization);
+
+    /// The load vector F(tau) (owned entries, constraints applied).
+    void
+    assemble(const double tau, LA::MPI::Vector &load_vector) const;
+
+    /// After assemble() gave a non-finite number at `tau`: which load did
+    /// it, and how (its time history, its intensity, an overflow), for an
+    /// error message. Collective.
+    std::string
+    non_finite_load(const double tau) const;
+
+    /// A distributed force on all three equations (force on w, moments on
+    /// psi_x and psi_y), f(x, y) with time set by set_time(tau); it is
+    /// integrated at every step. Not part of a scene: manufactured-solution
+    /// tests use it. Pass nullptr to remove it.
+    void
+    set_body_force(Function<2> *force);
+
+  private:
+    enum class Kind
+    {
+      point,
+      pressure,
+      line
+    };
+
+    struct Load
+    {
+      Kind         kind;
+      std::string  name; // e.g. "Loads/Point load 2", for messages
+      double       magnitude = 0;
+      std::string  history_expression;
+      std::string  intensity_expression;
+      Point<2>     position;                        // point loads
+      std::string  region;                          // pressures
+      unsigned int edge = 0;                        // line loads
+      std::unique_ptr<FunctionParser<1>> history;   // h(tau)
+      std::unique_ptr<FunctionParser<2>> intensity; // f(x, y, tau)
+      bool                               intensity_depends_on_time = false;
+      /// Acts from before tau = 0 with h = 1 (the self-weight).
+      bool            is_permanent = false;
+      LA::MPI::Vector spatial_part; // b_k
+
+      double
+      intensity_at(const Point<2> &p, const double tau) const;
+    };
+
+    std::vector<Load>     loads;
+    const Discretization *discretization = nullptr;
+    Function<2>          *body_force     = nullptr;
+
+    void
+    add_body_force(const double tau, LA::MPI::Vector &load_vector) const;
+
+    /// load_vector = sum of h_k(tau) b_k over the loads that `selected`
+    /// accepts.
+    void
+    assemble_selected(const double                             tau,
+                      const std::function<bool(const Load &)> &selected,
+                      LA::MPI::Vector &load_vector) const;
+
+    /// Rectangle of a pressure, in full plate coordinates.
+    static BoundingBox<2>
+    region_of(const Load &load, const BoundingBox<2> &plate);
+    /// The load of subsection `section` of Loads, its expressions parsed.
+    Load
+    read_load(ParameterHandler  &prm,
+              const Kind         kind,
+              const std::string &section) const;
+
+    /// b_k(tau) = magnitude * int f(x, y, tau) phi_i (without h).
+    void
+    assemble_spatial_part(const Load      &load,
+                          const double     tau,
+                          LA::MPI::Vector &vector) const;
+
+    /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) along one plate
+    /// edge (areas: PatchIntegrator).
+    void
+    integrate_along_edge(
+      const std::function<std::array<double, 3>(const Point<2> &)> &density,
+      const unsigned int                                            edge,
+      LA::MPI::Vector &vector) const;
+
+    /// Quadrature points of the full plate's mesh (this rank's share) on
+    /// the plate's edges.
+    struct FullPlatePoints
+    {
+      std::vector<Point<2>> edge;
+    };
+    static FullPlatePoints
+    full_plate_points(const Discretization &discretization);
+    /// The points at which the full plate's mesh (this rank's share)
+    /// evaluates a pressure on `region`.
+    static std::vector<Point<2>>
+    full_plate_points_in(const BoundingBox<2> &region,
+                         const Discretization &discretization);
+
+    /// Whether `other` is the image of `load` in the symmetry plane normal
+    /// to `axis` (a load on the plane may be its own image), at `times` and
+    /// `points`. Collective.
+    static bool
+    is_mirror_image(const Load                &load,
+                    const Load                &other,
+                    const unsigned int         axis,
+                    const BoundingBox<2>      &plate,
+                    const std::vector<double> &times,
+                    const FullPlatePoints     &points,
+                    const Discretization      &discretization);
+    /// The points of the full plate's mesh (this rank's share) at which
+    /// a pressure or line load is evaluated, and the test of whether it
+    /// acts on one.
+    static std::pair<std::vector<Point<2>>,
+                     std::function<bool(const Point<2> &)>>
+    where_it_acts(const Load            &load,
+                  const BoundingBox<2>  &plate,
+                  const FullPlatePoints &points,
+                  const Discretization  &discretization);
+    /// Throw, naming the expression and the first tau, if the Time history
+    /// of `load` or its intensity times Magnitude (at the `points` it acts
+    /// on) is not finite at one of `times`. Collective.
+    static void
+    require_finite_values(const Load                &load,
+                          const std::vector<double> &times,
+                          const FullPlatePoints     &points,
+                          const BoundingBox<2>      &plate,
+                          const Discretization      &discretization);
+    /// The messages of a Time history and of an Intensity that are not
+    /// finite at tau, shared by the check before the run and the one at a
+    /// step.
+    static std::string
+    non_finite_history(const Load &load, const double tau);
+    static std::string
+    non_finite_intensity(const Load &load, const double tau);
+    /// The intensities of `load` at the `candidates` where it acts against
+    /// those of `other` at their mirror images, at `times`. Collective.
+    static bool
+    have_mirrored_intensities(
+      const Load                                  &load,
+      const Load                                  &other,
+      const unsigned int                           axis,
+      const std::vector<Point<2>>                 &candidates,
+      const std::function<bool(const Point<2> &)> &acts_at,
+      const std::vector<double>                   &times,
+      const MPI_Comm                               comm);
+  };
+} // namespace liftoff

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <liftoff/base/linear_algebra.h>
+#include <liftoff/fem/discretization.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * Integrals of a density against the shape functions over the part of a
+   * rectangle (a pressure patch) that lies in the meshed part:
+   * int_{patch ∩ cell} f_c phi_i^c over every cell of this rank.
+   *
+   * The density is commonly discontinuous at the patch's edges, which need
+   * not follow cell edges; a Gauss rule on the whole cell would sample that
+   * jump (a patch smaller than a cell got 21.7 times its force, or none).
+   * So each cell is clipped: a cell inside the patch keeps the ordinary
+   * rule, a cell that the patch cuts gets the same Gauss rule mapped onto
+   * patch ∩ cell, and a cell outside is skipped (also one that touches the
+   * patch along a line only). With n = p + 2 points per
+   * direction (p the element's degree) the integral is exact for
+   * intensities of degree up to p + 3 in each of x and y, and converges
+   * for smooth ones, whatever the patch's position and size.
+   *
+   * Cells inside and outside are told by their bounding boxes, so they may
+   * have any shape; cut cells must be axis-aligned rectangles, as all cells
+   * are today (rectangle_of() in the source refuses others and is where
+   * plates of other shapes extend the clipping).
+   *
+   * Used for pressures and the body force (the patch is then the whole
+   * plate); a moving patch only needs another rectangle at every step.
+   */
+  class PatchIntegrator
+  {
+  public:
+    /// The density (f_w, f_psi_x, f_psi_y) at a point of the plate.
+    using Density = std::function<std::array<double, 3>(const Point<2> &)>;
+
+    explicit PatchIntegrator(const Discretization &discretization);
+
+    /// vector += int_{patch ∩ mesh} f_c phi_i^c (owned entries, the
+    /// constraints applied). Collective (compresses `vector`).
+    void
+    add(const Density        &density,
+        const BoundingBox<2> &patch,
+        LA::MPI::Vector      &vector) const;
+
+    /// The points at which add() evaluates the density on this rank's
+    /// cells, for checks of where a load is used.
+    std::vector<Point<2>>
+    quadrature_points(const BoundingBox<2> &patch) const;
+
+  private:
+    const Discretization &discretization;
+    /// The ordinary rule of a cell and the 1d rule its clipped rules are
+    /// made of (the same number of points).
+    const QGauss<2> cell_rule;
+    const QGauss<1> line_rule;
+
+    /// patch ∩ cell in the reference coordinates of a cell that the patch
+    /// cuts: a sub-rectangle of the unit square.
+    BoundingBox<2>
+    reference_part(const DoFHandler<2>::active_cell_iterator &cell,
+                   const BoundingBox<2>                      &patch) const;
+
+    /// Calls `work` with FEValues (`flags`) on the rule of patch ∩ cell for
+    /// every cell of this rank that the patch covers.
+    void
+    for_each_covered_cell(
+      const BoundingBox<2>                           &patch,
+      const UpdateFlags                               flags,
+      const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+                               const FEValues<2> &)> &work) const;
+  };
+} // namespace liftoff

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/output/output.h>
+#include <liftoff/run/checkpoint.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * Fields for ParaView: w, psi_x, psi_y, their velocities, the foundation
+   * pressure and the contact status (fraction of each cell's Gauss points in
+   * contact), as VTU (plus PVTU under MPI) every k steps and a PVD record
+   * naming them. The record is replaced at most once a second of wall time
+   * and at flush(), as history.csv is: rewriting it after every file made
+   * the output quadratic in the number of files (2 001 outputs of Example
+   * 2: 34 % of the run's `perf` samples in the record) and cost a file
+   * creation per output.
+   */
+  class FieldOutput : public Output
+  {
+  public:
+    /// Entries of the `Output` subsection.
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether step `step` is written (the last step always is, unless the
+    /// interval is 0).
+    bool
+    is_due(const unsigned int step, const bool is_last_step) const;
+
+    void
+    write(const std::string                  &directory,
+          const Discretization               &discretization,
+          const TensionlessWinklerFoundation &foundation,
+          const LA::MPI::Vector              &ghosted_solution,
+          const LA::MPI::Vector              &ghosted_velocity,
+          const double                        time,
+          const unsigned int                  step);
+
+    /// Write the PVD file with the records so far (none: no file), and
+    /// solution.xdmf with HDF5 output, if `is_due` on rank 0. Collective, as
+    /// is write().
+    void
+    write_record(const std::string &directory,
+                 const MPI_Comm     comm,
+                 const bool         is_due);
+
+    void
+    setup(const Discretization &discretization,
+          const std::string    &directory) override;
+    void
+    mesh_changed(const Discretization &discretization) override;
+    /// write() when the step is due and the run writes files.
+    void
+    execute(const StepData &step) override;
+    /// write_record() now.
+    void
+    flush() override;
+    /// The records of the PVD file; after load(), flush() rewrites it
+    /// with them.
+    void
+    save(OutputArchive &archive) const override;
+    void
+    load(InputArchive &archive) override;
+
+  private:
+    unsigned int                                interval           = 10;
+    bool                                        higher_order_cells = false;
+    unsigned int                                subdivisions       = 0;
+    bool                                        writes_hdf5        = false;
+    std::vector<std::pair<double, std::string>> records;
+    std::string                                 directory;
+    const Discretization                       *discretization = nullptr;
+    /// The velocity with ghosts, filled only for the steps written.
+    LA::MPI::Vector ghosted_velocity;
+    /// The entries of solution.xdmf (HDF5 output); rebuilt from `records`
+    /// and the sizes of their .h5 files after a resume.
+    std::vector<XDMFEntry> xdmf_entries;
+    /// Since the PVD file was last written; rank 0's clock decides.
+    Timer since_record_written;
+  };
+} // namespace liftoff

@@ -1,0 +1,76 @@
+#pragma once
+
+#include <liftoff/contact/active_set_iteration.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/run/checkpoint.h>
+#include <liftoff/time/plate_state.h>
+
+#include <string>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /// What an Output sees after a step (or the one solve of a static
+  /// analysis): the state and the parts that give it meaning.
+  struct StepData
+  {
+    const PlateState                   &state;
+    const Discretization               &discretization;
+    const TensionlessWinklerFoundation &foundation;
+    const ActiveSetIteration::Result   &iteration;
+    /// Share of the plate in contact (computed once for all outputs: it is
+    /// a collective sum).
+    double contact_fraction;
+    /// 0 for a static analysis.
+    double time_step;
+    /// Of the whole run (0 for a static analysis).
+    unsigned int n_steps;
+    bool         is_last_step;
+  };
+
+  /**
+   * One thing a run writes after its steps, in the spirit of ASPECT's
+   * postprocessors: the time history, profiles, fields. The Simulator
+   * calls every output the same way, so a new one is a new class and one
+   * line in the Simulator's list. Its parameters are entries of the
+   * `Output` subsection, which the Simulator enters around the output's
+   * declare_parameters() and parse_parameters().
+   */
+  class Output
+  {
+  public:
+    virtual ~Output() = default;
+
+    /// Before the first step: the mesh, and the folder to write to (empty:
+    /// keep results in memory only).
+    virtual void
+    setup(const Discretization &discretization,
+          const std::string    &directory) = 0;
+
+    /// The mesh has been refined or coarsened (Mesh refinement): whatever
+    /// the output keeps per cell or point (probe cells, point searches,
+    /// vector layouts) must be found again on `discretization`.
+    virtual void
+    mesh_changed(const Discretization &discretization) = 0;
+
+    /// After every step. Collective.
+    virtual void
+    execute(const StepData &step) = 0;
+
+    /// Write what is due now: at the end of a run (also a failed one), and
+    /// when a resumed run replaces the files of the run it continues.
+    /// Collective.
+    virtual void
+    flush() = 0;
+
+    /// What a resumed run needs to go on writing as if never stopped.
+    /// After load() the output writes nothing until flush(), so a refused
+    /// or killed resume leaves the earlier run's files as they are.
+    virtual void
+    save(OutputArchive &archive) const = 0;
+    virtual void
+    load(InputArchive &archive) = 0;
+  };
+} // namespace liftoff

@@ -1,0 +1,146 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/base/output_files.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/point_functional.h>
+#include <liftoff/output/output.h>
+#include <liftoff/time/energy_balance.h>
+
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The CSV time history a user plots, one row per step: tau, w at the
+   * scene's probe points, contact area fraction, the largest uplift,
+   * active-set iterations, the length of an active-set cycle resolved by the
+   * cycle rule (0: none), the cells and dofs of the mesh and, when asked for,
+   * the energies and their balance and the foundation's resultant. The rows are
+   * kept (tests and the summary read them; a checkpoint saves them); the file
+   * is replaced whole (atomically) at most once a second and at the end, so a
+   * reader never sees a half-written row.
+   *
+   * A new column is a member of Row, its value in row_of(), its header and
+   * value in the two writers, and its place in Row::serialize().
+   */
+  class TimeHistory : public Output
+  {
+  public:
+    struct Row
+    {
+      double       tau              = 0;
+      unsigned int iterations       = 0;
+      unsigned int cycle_length     = 0;
+      double       contact_fraction = 0;
+      /// max(0, g - w) over the nodes of w (g the initial gap there, 0
+      /// without one): how far the plate has lifted off its bed at the
+      /// highest point (w > 0 is into the foundation), as the `uplift`
+      /// field.
+      double max_uplift = 0;
+      /// The mesh of the step (it changes with Mesh refinement).
+      unsigned long       n_cells = 0;
+      unsigned long       n_dofs  = 0;
+      std::vector<double> probe_w;
+      EnergyBalance       energies;
+      /// EnergyBalance::error() against the state at tau = 0.
+      double balance_error = 0;
+      /// TensionlessWinklerFoundation::resultant() of the full plate (if
+      /// asked for): force, centre and area in contact.
+      double resultant    = 0;
+      double resultant_x  = 0;
+      double resultant_y  = 0;
+      double contact_area = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &tau &iterations &cycle_length &contact_fraction &max_uplift
+          &n_cells &n_dofs &probe_w &energies &balance_error &resultant
+            &resultant_x &resultant_y &contact_area;
+      }
+    };
+
+    /// Entries of the `Output` subsection.
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Probes inside the plate (full plate coordinates); needs no mesh.
+    void
+    check_against(const Discretization &discretization) const;
+
+    bool
+    wants_energies() const;
+
+    /// Write the dashpots' dissipated energy (a column `dissipated_energy`
+    /// after `work`, with the energies): only a scene with dashpots has it.
+    void
+    show_dissipated_energy(const bool show);
+
+    void
+    setup(const Discretization &discretization,
+          const std::string    &directory) override;
+    void
+    mesh_changed(const Discretization &discretization) override;
+    void
+    execute(const StepData &step) override;
+    void
+    flush() override;
+    void
+    save(OutputArchive &archive) const override;
+    void
+    load(InputArchive &archive) override;
+
+    const std::vector<Row> &
+    rows() const;
+
+    /// Over the rows that solved something (not tau = 0 of a dynamic run).
+    struct IterationStatistics
+    {
+      double       mean     = 0;
+      unsigned int max      = 0;
+      unsigned int n_cycled = 0;
+    };
+    IterationStatistics
+    iteration_statistics() const;
+
+  private:
+    /// The history's column names of the probes, "w(x;y)", with enough
+    /// digits to tell every two points apart.
+    std::vector<std::string>
+    probe_column_names() const;
+
+    std::vector<Point<2>>        probe_points;
+    bool                         write_energies   = true;
+    bool                         write_dissipated = false;
+    bool                         write_resultant  = false;
+    std::vector<PointFunctional> probes;
+    /// This rank's degrees of freedom of w.
+    IndexSet w_dofs;
+    /// The initial gap at them, in the order of w_dofs (filled at the first
+    /// step on a mesh, only on a gap).
+    std::vector<double> gap_at_w_dofs;
+    /// The velocity with ghosts, for the dashpots' part of the resultant.
+    LA::MPI::Vector       ghosted_velocity;
+    const Discretization *discretization = nullptr;
+    GrowingTextFile       file;
+    std::vector<Row>      history;
+
+    Row
+    row_of(const StepData &step) const;
+    /// g at the w dofs of this mesh, if not yet known.
+    void
+    find_gap_at_w_dofs(const StepData &step);
+    void
+    write_header();
+    void
+    write_row(const Row &row);
+  };
+} // namespace liftoff

@@ -1,0 +1,162 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <liftoff/base/linear_algebra.h>
+
+#include <chrono>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /// What each part of the state writes itself to and reads itself from.
+  using OutputArchive = boost::archive::binary_oarchive;
+  using InputArchive  = boost::archive::binary_iarchive;
+
+  /// This rank's entries of a distributed vector, bit for bit.
+  void
+  save_vector(OutputArchive &archive, const LA::MPI::Vector &vector);
+  void
+  load_vector(InputArchive &archive, LA::MPI::Vector &vector);
+
+  /// save_vector() or load_vector(), as the archive goes: one list of items
+  /// in a serialize() serves both directions.
+  template <class Archive>
+  void
+  serialize_entries(Archive &archive, LA::MPI::Vector &vector)
+  {
+    if constexpr (Archive::is_saving::value)
+      save_vector(archive, vector);
+    else
+      load_vector(archive, vector);
+  }
+
+  /// part.save(archive) or part.load(archive), as the archive goes, for
+  /// the parts whose loading checks what it reads.
+  template <class Archive, class Part>
+  void
+  transfer(Archive &archive, Part &part)
+  {
+    if constexpr (Archive::is_saving::value)
+      part.save(archive);
+    else
+      part.load(archive);
+  }
+
+  /// The values of this rank's rows of a matrix, bit for bit, and back;
+  /// setting them requires the same sparsity pattern and row distribution.
+  std::vector<double>
+  matrix_values(const LA::MPI::SparseMatrix &A);
+  void
+  set_matrix_values(const std::vector<double> &values,
+                    LA::MPI::SparseMatrix     &A);
+
+  /**
+   * The files of a checkpoint and when to write one. A checkpoint is a
+   * folder `checkpoint` in the output directory: one binary archive per rank
+   * (`rank_RRRR.bin`, filled by the caller with that rank's state) and a
+   * text header `checkpoint.txt`, written last, with the format number, the
+   * step, the number of ranks, each archive's size and CRC-32, the scene,
+   * and a last line with the CRC-32 of all the lines before it. It is
+   * written as `checkpoint.new` and renamed into place once complete; the
+   * previous checkpoint is kept as `checkpoint.previous` until then, so a
+   * run that dies while writing leaves one complete checkpoint behind.
+   *
+   * The archives hold each rank's own degrees of freedom and matrix rows, so
+   * a run resumes on the same number of ranks (the mesh, rebuilt from the
+   * scene or, for an adaptive run, loaded from the checkpoint's shared
+   * files, is then partitioned and numbered the same way); anything else is
+   * refused, as is a scene that differs from the checkpoint's in anything
+   * but the end time and this subsection, a checkpoint of another format,
+   * and any file whose size or checksum differs from the header's.
+   */
+  class Checkpoint
+  {
+  public:
+    /// The layout of the archives this code writes and reads: 3 since the
+    /// outputs keep their own records (a PlateState, the foundation, the
+    /// active set, then each output); 4 since the state and every energy
+    /// record hold the energy the foundation's dashpots dissipated; 5 since
+    /// history rows hold the mesh size and adaptive runs save their mesh;
+    /// 7 since the active set keeps the contact status its factor was built
+    /// from instead of a copy of the matrix's values then; 8 since the
+    /// linear solver keeps the measured error of its factor's substitution.
+    static constexpr unsigned int format = 9;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether a checkpoint is written after step `step` without a signal.
+    /// Collective (the wall time is rank 0's).
+    bool
+    is_due(const unsigned int step,
+           const bool         is_last_step,
+           const MPI_Comm     comm) const;
+
+    /// The scene as "Subsection/Entry = value" lines, without the entries a
+    /// resumed run may change.
+    static std::string
+    comparable_scene(const ParameterHandler &prm);
+
+    /// Files all ranks write together into the checkpoint folder given
+    /// (the mesh of an adaptive run); returns their names, which the
+    /// header lists with their checksums.
+    using SharedFiles =
+      std::function<std::vector<std::string>(const std::string &folder)>;
+
+    /// Write a checkpoint of step `step`; `save` fills this rank's archive,
+    /// `save_shared` (if given) writes the shared files. Collective; throws
+    /// on every rank if any rank fails, and then the previous checkpoint is
+    /// untouched.
+    void
+    write(const std::string                          &directory,
+          const MPI_Comm                              comm,
+          const unsigned int                          step,
+          const std::string                          &scene,
+          const std::function<void(OutputArchive &)> &save,
+          const SharedFiles                          &save_shared = {}) const;
+
+    /// Find the newest complete checkpoint in `directory`, check its
+    /// header against the scene and the number of ranks and every rank's
+    /// archive against the header's checksum; returns its step. Writes
+    /// nothing, so a refused resume leaves the output as it was. Collective:
+    /// throws on every rank if any check fails on any rank.
+    unsigned int
+    open(const std::string &directory,
+         const MPI_Comm     comm,
+         const std::string &scene);
+
+    /// The folder of the checkpoint open() found (its shared files are
+    /// read from there).
+    const std::string &
+    folder() const;
+
+    /// Read this rank's archive of the checkpoint found by open(), whose
+    /// checksum open() has checked on every rank.
+    void
+    read(const MPI_Comm                             comm,
+         const std::function<void(InputArchive &)> &load) const;
+
+  private:
+    unsigned int interval           = 0;
+    double       wall_time_interval = 600;
+    /// When the last checkpoint was written (or the run started).
+    mutable std::chrono::steady_clock::time_point last_written =
+      std::chrono::steady_clock::now();
+    /// The folder open() found.
+    std::string found;
+  };
+} // namespace liftoff

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <liftoff/base/linear_algebra.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/plate_matrices.h>
+
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /// Energies of the full plate at one instant, and the work done on it.
+  struct EnergyBalance
+  {
+    double kinetic    = 0;
+    double strain     = 0;
+    double foundation = 0;
+    double work       = 0; // of the loads since tau = 0
+    double dissipated = 0; // by the foundation's dashpots since tau = 0
+    /// Total energy minus the initial total minus the work plus what the
+    /// dashpots took out: zero for an exactly conservative discrete scheme.
+    double
+    error(const EnergyBalance &initial) const
+    {
+      return kinetic + strain + foundation
+             - (initial.kinetic + initial.strain + initial.foundation) - work
+             + dissipated;
+    }
+
+    /// The five numbers, for checks that treat them alike.
+    std::vector<double>
+    values() const
+    {
+      return {kinetic, strain, foundation, work, dissipated};
+    }
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &kinetic &strain &foundation &work &dissipated;
+    }
+  };
+
+  /// Kinetic, strain and foundation energy of the state (u, v) of the
+  /// modelled part times `copies` (the full plate), with the work `work`.
+  /// `ghosted_u` is u with ghosts, `product` scratch of u's layout
+  /// (collective).
+  EnergyBalance
+  energies_of(const PlateMatrices                &matrices,
+              const TensionlessWinklerFoundation &foundation,
+              const LA::MPI::Vector              &u,
+              const LA::MPI::Vector              &ghosted_u,
+              const LA::MPI::Vector              &v,
+              const double                        copies,
+              const double                        work,
+              LA::MPI::Vector                    &product);
+
+  /// Work of the loads over one step from (u_old, F_old) to (u_new, F_new)
+  /// by the trapezoidal rule, 1/2 (u_new - u_old).(F_old + F_new), times
+  /// `copies`: exact for Newmark's average acceleration rule on linear
+  /// problems, so that the balance error measures the scheme. `increment`
+  /// and `load_sum` are scratch vectors of the same layout (collective).
+  double
+  work_of_step(const LA::MPI::Vector &u_old,
+               const LA::MPI::Vector &u_new,
+               const LA::MPI::Vector &load_old,
+               const LA::MPI::Vector &load_new,
+               const double           copies,
+               LA::MPI::Vector       &increment,
+               LA::MPI::Vector       &load_sum);
+} // namespace liftoff

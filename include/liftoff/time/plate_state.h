@@ -1,0 +1,49 @@
+#pragma once
+
+#include <liftoff/base/linear_algebra.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/run/checkpoint.h>
+#include <liftoff/time/energy_balance.h>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * Everything the time loop carries from one step to the next: the
+   * Newmark state (u, v, a) at tau, the load F(tau), the force balance
+   * F - K u - K_f u that generalized-alpha weighs into the next step, and
+   * the work of the loads so far. A checkpoint saves it as it is, bit for
+   * bit; a static analysis uses u and the load only.
+   */
+  struct PlateState
+  {
+    unsigned int step = 0;
+    double       tau  = 0;
+    /// Owned entries, constraints distributed.
+    LA::MPI::Vector u, v, a;
+    /// u with ghost entries, for evaluation at quadrature points.
+    LA::MPI::Vector ghosted_u;
+    LA::MPI::Vector load, balance;
+    double          work = 0;
+    /// Energy the foundation's dashpots have taken out since tau = 0.
+    double dissipated = 0;
+    /// At tau, and at tau = 0 (the reference of the balance error).
+    EnergyBalance energies, initial_energies;
+
+    /// Zero vectors laid out on `discretization`.
+    void
+    reinit(const Discretization &discretization);
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &step &tau &work &dissipated &energies &initial_energies;
+      for (LA::MPI::Vector *vector : {&u, &v, &a, &load, &balance})
+        serialize_entries(archive, *vector);
+      if constexpr (Archive::is_loading::value)
+        ghosted_u = u;
+    }
+  };
+} // namespace liftoff

@@ -1,0 +1,784 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
+
+#include <liftoff/base/scene_input.h>
+#include <liftoff/base/selection.h>
+#include <liftoff/fem/load_set.h>
+#include <liftoff/fem/patch_integrator.h>
+#include <liftoff/fem/point_functional.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <regex>
+#include <sstream>
+
+namespace liftoff
+{
+  namespace
+  {
+    std::string
+    subsection_name(const std::string &kind, const unsigned int i)
+    {
+      return kind + " " + std::to_string(i);
+    }
+
+    bool
+    names_tau(const std::string &expression)
+    {
+      static const std::regex tau("(^|[^A-Za-z0-9_])tau([^A-Za-z0-9_]|$)");
+      return std::regex_search(expression, tau);
+    }
+
+    Point<2>
+    mirrored(const Point<2> &p, const unsigned int axis)
+    {
+      Point<2> q = p;
+      q[axis]    = -q[axis];
+      return q;
+    }
+
+    // Edges of the full plate, by their boundary ids.
+    const Selection<unsigned int> plate_edges = {
+      {"Left", Discretization::left_edge},
+      {"Right", Discretization::right_edge},
+      {"Bottom", Discretization::bottom_edge},
+      {"Top", Discretization::top_edge}};
+
+    bool
+    nearly_equal(const double a, const double b)
+    {
+      return std::abs(a - b)
+             <= 1e-10 * std::max(1.0, std::abs(a) + std::abs(b));
+    }
+
+    std::string
+    time_text(const double tau)
+    {
+      std::ostringstream text;
+      text << std::setprecision(8) << tau;
+      return text.str();
+    }
+
+    // Every load has a Magnitude (whose unit depends on its kind) and a
+    // Time history; `declare_own` adds the entries of its kind.
+    void
+    declare_load(ParameterHandler            &prm,
+                 const std::string           &section,
+                 const std::string           &unit,
+                 const std::function<void()> &declare_own)
+    {
+      prm.enter_subsection(section);
+      prm.declare_entry("Magnitude",
+                        "0",
+                        Patterns::Double(),
+                        unit + "; 0 switches the load off.");
+      declare_own();
+      prm.declare_entry(
+        "Time history",
+        "1",
+        Patterns::Anything(),
+        "h(tau), a muParser expression in tau (dimensionless time); the load "
+        "is Magnitude * h(tau). Examples: 1 (suddenly applied), tau (linear "
+        "ramp), sin(2*pi*tau/2.5) (pulsating), if(tau<0.1,1,0) (pulse).");
+      prm.leave_subsection();
+    }
+    // Whether rectangle b is rectangle a mirrored normal to `axis`.
+    bool
+    is_mirrored_rectangle(const BoundingBox<2> &a,
+                          const BoundingBox<2> &b,
+                          const unsigned int    axis)
+    {
+      const Point<2> lo = a.get_boundary_points().first;
+      const Point<2> hi = a.get_boundary_points().second;
+      // Mirroring swaps the roles of the corners along the axis.
+      Point<2> image_lo = lo, image_hi = hi;
+      image_lo[axis] = -hi[axis];
+      image_hi[axis] = -lo[axis];
+      return (image_lo - b.get_boundary_points().first).norm() <= 1e-12
+             && (image_hi - b.get_boundary_points().second).norm() <= 1e-12;
+    }
+  } // namespace
+
+
+  double
+  LoadSet::Load::intensity_at(const Point<2> &p, const double tau) const
+  {
+    intensity->set_time(tau);
+    return intensity->value(p);
+  }
+
+
+  void
+  LoadSet::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    prm.declare_entry(
+      "Self weight",
+      "0",
+      Patterns::Double(0.0, 1e100),
+      "q, the plate's weight per unit area in units of F0 / L^2, the unit "
+      "of every pressure (>= 0, at most 1e100, beyond which its settled "
+      "state overflows; 0: a weightless plate): a uniform pressure "
+      "that acts from before tau = 0. "
+      "A time integration starts from the static equilibrium under it (the "
+      "slab settled on its bed, in contact wherever q pre-compresses the "
+      "springs), with the initial displacement added to that equilibrium; "
+      "the other loads act on top. A static analysis adds it to the loads.");
+    for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
+      {
+        declare_load(
+          prm, subsection_name("Point load", i), "Force in units of F0", [&]() {
+            prm.declare_entry("Position",
+                              "0, 0",
+                              Patterns::List(Patterns::Double(), 2, 2, ","),
+                              "x, y on the full plate (any point, not only "
+                              "nodes).");
+          });
+        declare_load(prm,
+                     subsection_name("Pressure", i),
+                     "Pressure in units of F0 / L^2",
+                     [&]() {
+                       prm.declare_entry(
+                         "Region",
+                         "whole plate",
+                         Patterns::Anything(),
+                         "'whole plate' or 'x_min, x_max, y_min, y_max' on "
+                         "the full plate, anywhere on the mesh: each cell "
+                         "the rectangle cuts is integrated over its part "
+                         "inside (exactly for intensities of degree up to "
+                         "p+3 in x and in y).");
+                       prm.declare_entry(
+                         "Intensity",
+                         "1",
+                         Patterns::Anything(),
+                         "f(x, y, tau), muParser; the pressure is "
+                         "Magnitude * f * h(tau).");
+                     });
+        declare_load(prm,
+                     subsection_name("Line load", i),
+                     "Force per unit length in units of F0 / L",
+                     [&]() {
+                       prm.declare_entry("Edge",
+                                         "Right",
+                                         plate_edges.pattern(),
+                                         "Edge of the full plate that carries "
+                                         "the load.");
+                       prm.declare_entry("Intensity",
+                                         "1",
+                                         Patterns::Anything(),
+                                         "f(x, y, tau) along the edge, "
+                                         "muParser.");
+                     });
+      }
+    prm.leave_subsection();
+  }
+
+
+  LoadSet::Load
+  LoadSet::read_load(ParameterHandler  &prm,
+                     const Kind         kind,
+                     const std::string &section) const
+  {
+    // Regions are checked against the plate once the plate is known; here
+    // only their form.
+    const BoundingBox<2> unbounded(
+      std::make_pair(Point<2>(-1e300, -1e300), Point<2>(1e300, 1e300)));
+    Load load;
+    load.kind      = kind;
+    load.name      = "Loads/" + section;
+    load.magnitude = prm.get_double("Magnitude");
+    // A load that is off (Magnitude 0) is checked all the same: a
+    // broken expression is an error whether or not it is used yet.
+    load.history_expression = prm.get("Time history");
+    load.history            = parse_expression<1>(
+      load.name + "/Time history", load.history_expression, 1, "tau", false);
+    if (kind == Kind::point)
+      {
+        const auto xy = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Position"), ','));
+        load.position = Point<2>(xy[0], xy[1]);
+      }
+    else
+      {
+        load.intensity_expression = prm.get("Intensity");
+        load.intensity = parse_expression<2>(load.name + "/Intensity",
+                                             load.intensity_expression,
+                                             1,
+                                             "x,y,tau",
+                                             true);
+        load.intensity_depends_on_time = names_tau(load.intensity_expression);
+        if (kind == Kind::pressure)
+          {
+            load.region = prm.get("Region");
+            region_of(load, unbounded);
+          }
+        else
+          {
+            load.edge = plate_edges.parse(prm.get("Edge"), load.name + "/Edge");
+          }
+      }
+    return load;
+  }
+
+
+  void
+  LoadSet::parse_parameters(ParameterHandler &prm)
+  {
+    loads.clear();
+    prm.enter_subsection("Loads");
+    const std::array<std::pair<Kind, std::string>, 3> kinds = {
+      {{Kind::point, "Point load"},
+       {Kind::pressure, "Pressure"},
+       {Kind::line, "Line load"}}};
+    for (const auto &[kind, kind_name] : kinds)
+      for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
+        {
+          const std::string section = subsection_name(kind_name, i);
+          prm.enter_subsection(section);
+          Load load = read_load(prm, kind, section);
+          if (load.magnitude != 0.0)
+            loads.push_back(std::move(load));
+          prm.leave_subsection();
+        }
+    // The pattern refuses a negative, nan or infinite weight.
+    const double self_weight = prm.get_double("Self weight");
+    if (self_weight != 0.0)
+      {
+        // A uniform pressure on the whole plate that is always on.
+        Load load;
+        load.kind               = Kind::pressure;
+        load.name               = "Loads/Self weight";
+        load.magnitude          = self_weight;
+        load.history_expression = "1";
+        load.history            = parse_expression<1>(
+          load.name, load.history_expression, 1, "tau", false);
+        load.intensity_expression = "1";
+        load.intensity            = parse_expression<2>(
+          load.name, load.intensity_expression, 1, "x,y,tau", true);
+        load.region       = "whole plate";
+        load.is_permanent = true;
+        loads.push_back(std::move(load));
+      }
+    prm.leave_subsection();
+  }
+
+
+  bool
+  LoadSet::has_permanent_loads() const
+  {
+    return std::any_of(loads.begin(), loads.end(), [](const Load &load) {
+      return load.is_permanent;
+    });
+  }
+
+
+  void
+  LoadSet::assemble_permanent(LA::MPI::Vector &load_vector) const
+  {
+    assemble_selected(
+      0.0, [](const Load &load) { return load.is_permanent; }, load_vector);
+  }
+
+
+  bool
+  LoadSet::is_empty() const
+  {
+    return loads.empty() && body_force == nullptr;
+  }
+
+
+  std::vector<Point<2>>
+  LoadSet::point_load_positions(const Discretization &disc) const
+  {
+    std::vector<Point<2>> positions;
+    for (const auto &load : loads)
+      if (load.kind == Kind::point
+          && disc.modelled_box().point_inside(load.position, 1e-12))
+        positions.push_back(load.position);
+    return positions;
+  }
+
+
+  BoundingBox<2>
+  LoadSet::region_of(const Load &load, const BoundingBox<2> &plate)
+  {
+    if (load.region == "whole plate")
+      return plate;
+
+    const std::string message =
+      load.name + "/Region = <" + abbreviated(load.region)
+      + "> must be 'whole plate' or 'x_min, x_max, y_min, y_max' with "
+        "x_min < x_max, y_min < y_max, inside the plate [-1/2, 1/2] x [-mu/2, "
+        "mu/2].";
+    const auto parts = Utilities::split_string_list(load.region, ',');
+    AssertThrow(parts.size() == 4, ExcMessage(message));
+    std::vector<double> v;
+    try
+      {
+        v = Utilities::string_to_double(parts);
+      }
+    catch (...)
+      {
+        AssertThrow(false, ExcMessage(message));
+      }
+    AssertThrow(v[0] < v[1] && v[2] < v[3], ExcMessage(message));
+    const BoundingBox<2> box(
+      std::make_pair(Point<2>(v[0], v[2]), Point<2>(v[1], v[3])));
+    AssertThrow(plate.point_inside(box.get_boundary_points().first, 1e-12)
+                  && plate.point_inside(box.get_boundary_points().second,
+                                        1e-12),
+                ExcMessage(message));
+    return box;
+  }
+
+
+  void
+  LoadSet::check_against(const Discretization &disc,
+                         const double          time_step,
+                         const unsigned int    n_steps) const
+  {
+    const BoundingBox<2> plate = disc.plate_box();
+    for (const auto &load : loads)
+      {
+        if (load.kind == Kind::point)
+          AssertThrow(plate.point_inside(load.position, 1e-12),
+                      ExcMessage(load.name + "/Position = "
+                                 + std::to_string(load.position[0]) + ", "
+                                 + std::to_string(load.position[1])
+                                 + " lies outside the plate [-1/2, 1/2] x "
+                                   "[-mu/2, mu/2]."));
+        if (load.kind == Kind::pressure)
+          region_of(load, plate);
+      }
+    if (disc.symmetry() == Symmetry::full)
+      return;
+
+    // A reduced model is right only if what it integrates is symmetric: the
+    // loads are compared where they are evaluated (every quadrature point of
+    // the full plate's mesh) and when (every time the run visits), not at
+    // samples, which a load can dodge.
+    std::vector<double> times(n_steps + 1);
+    for (unsigned int k = 0; k <= n_steps; ++k)
+      times[k] = k * time_step;
+    const FullPlatePoints points = full_plate_points(disc);
+    // NaN equals nothing, not even its mirror image: a load that is not
+    // finite somewhere is named as such before the comparison blames the
+    // symmetry.
+    for (const auto &load : loads)
+      require_finite_values(load, times, points, plate, disc);
+    const std::string symmetry =
+      (disc.symmetry() == Symmetry::half ? "half" : "quarter");
+    for (const unsigned int axis : disc.symmetry_axes())
+      for (const auto &load : loads)
+        {
+          bool has_image = false;
+          for (const auto &other : loads)
+            has_image =
+              has_image
+              || is_mirror_image(load, other, axis, plate, times, points, disc);
+          AssertThrow(has_image,
+                      ExcMessage(
+                        "Discretization/Symmetry = " + symmetry
+                        + " needs symmetric loads, but " + load.name
+                        + " has no mirror image about the plane "
+                        + (axis == 0 ? "x = 0" : "y = 0")
+                        + " (compared at every quadrature point of the full "
+                          "plate and every step time). Add the mirrored load "
+                          "or model the full plate."));
+        }
+  }
+
+
+  LoadSet::FullPlatePoints
+  LoadSet::full_plate_points(const Discretization &disc)
+  {
+    // The points integrate_along_edge() uses on this rank's cells, and
+    // their images in every combination of symmetry planes: together the
+    // quadrature points of the edges of the full plate's mesh.
+    const auto     &fe = *disc.fe;
+    FEFaceValues<2> fe_face_values(disc.mapping,
+                                   fe,
+                                   QGauss<1>(fe.degree + 2),
+                                   update_quadrature_points);
+    FullPlatePoints meshed;
+    for (const auto &cell : disc.locally_owned_cells())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary()
+            && cell->face(f)->boundary_id() < Discretization::x_symmetry_plane)
+          {
+            fe_face_values.reinit(cell, f);
+            for (const auto &p : fe_face_values.get_quadrature_points())
+              meshed.edge.push_back(p);
+          }
+    FullPlatePoints full = meshed;
+    for (const unsigned int axis : disc.symmetry_axes())
+      {
+        const unsigned int n = full.edge.size();
+        for (unsigned int i = 0; i < n; ++i)
+          full.edge.push_back(mirrored(full.edge[i], axis));
+      }
+    return full;
+  }
+
+
+  std::vector<Point<2>>
+  LoadSet::full_plate_points_in(const BoundingBox<2> &region,
+                                const Discretization &disc)
+  {
+    // The full plate's mesh is the meshed part and its mirror images, and
+    // the points of a region on a mirrored cell are the images of those of
+    // the mirrored region on the meshed cell.
+    const PatchIntegrator           integrator(disc);
+    const std::vector<unsigned int> axes = disc.symmetry_axes();
+    std::vector<Point<2>>           points;
+    for (unsigned int planes = 0; planes < (1u << axes.size()); ++planes)
+      {
+        const auto image = [&](const Point<2> &p) {
+          Point<2> q = p;
+          for (unsigned int k = 0; k < axes.size(); ++k)
+            if (planes & (1u << k))
+              q = mirrored(q, axes[k]);
+          return q;
+        };
+        const Point<2> a = image(region.get_boundary_points().first),
+                       b = image(region.get_boundary_points().second);
+        const BoundingBox<2> image_of_region(
+          std::make_pair(Point<2>(std::min(a[0], b[0]), std::min(a[1], b[1])),
+                         Point<2>(std::max(a[0], b[0]), std::max(a[1], b[1]))));
+        for (const auto &p : integrator.quadrature_points(image_of_region))
+          points.push_back(image(p));
+      }
+    return points;
+  }
+
+
+  bool
+  LoadSet::is_mirror_image(const Load                &load,
+                           const Load                &other,
+                           const unsigned int         axis,
+                           const BoundingBox<2>      &plate,
+                           const std::vector<double> &times,
+                           const FullPlatePoints     &points,
+                           const Discretization      &disc)
+  {
+    // Cheap comparisons first; all of these are the same on every rank.
+    if (load.kind != other.kind
+        || !nearly_equal(load.magnitude, other.magnitude))
+      return false;
+    switch (load.kind)
+      {
+      case Kind::point:
+        if ((mirrored(load.position, axis) - other.position).norm() >= 1e-12)
+          return false;
+        break;
+      case Kind::pressure:
+        if (!is_mirrored_rectangle(region_of(load, plate),
+                                   region_of(other, plate),
+                                   axis))
+          return false;
+        break;
+      case Kind::line:
+        {
+          const bool         edge_normal_to_axis = ((load.edge / 2) == axis);
+          const unsigned int image_edge =
+            edge_normal_to_axis ? (load.edge ^ 1u) : load.edge;
+          if (other.edge != image_edge)
+            return false;
+          break;
+        }
+      }
+
+    for (const double tau : times)
+      if (!nearly_equal(load.history->value(Point<1>(tau)),
+                        other.history->value(Point<1>(tau))))
+        return false;
+    if (load.kind == Kind::point)
+      return true;
+    const auto [candidates, acts_at] = where_it_acts(load, plate, points, disc);
+    return have_mirrored_intensities(
+      load, other, axis, candidates, acts_at, times, disc.mpi_communicator);
+  }
+
+
+  std::pair<std::vector<Point<2>>, std::function<bool(const Point<2> &)>>
+  LoadSet::where_it_acts(const Load            &load,
+                         const BoundingBox<2>  &plate,
+                         const FullPlatePoints &points,
+                         const Discretization  &disc)
+  {
+    if (load.kind == Kind::line)
+      {
+        // Edges 0, 1 lie at x = -1/2, 1/2; edges 2, 3 at y = -mu/2, mu/2.
+        const unsigned int normal = load.edge / 2;
+        const double       at =
+          (load.edge % 2 == 0 ? plate.get_boundary_points().first
+                              : plate.get_boundary_points().second)[normal];
+        return {points.edge, [normal, at](const Point<2> &p) {
+                  return std::abs(p[normal] - at) < 1e-12;
+                }};
+      }
+    // A pressure: the points at which the integration evaluates it.
+    return {full_plate_points_in(region_of(load, plate), disc),
+            [](const Point<2> &) { return true; }};
+  }
+
+
+  bool
+  LoadSet::have_mirrored_intensities(
+    const Load                                  &load,
+    const Load                                  &other,
+    const unsigned int                           axis,
+    const std::vector<Point<2>>                 &candidates,
+    const std::function<bool(const Point<2> &)> &acts_at,
+    const std::vector<double>                   &times,
+    const MPI_Comm                               comm)
+  {
+    // Intensities at every quadrature point the load covers, at every step
+    // time if either names tau (otherwise once).
+    const bool time_dependent =
+      load.intensity_depends_on_time || other.intensity_depends_on_time;
+    const auto   n_times  = time_dependent ? times.size() : 1;
+    unsigned int is_image = 1;
+    for (const auto &p : candidates)
+      if (acts_at(p))
+        for (unsigned int k = 0; k < n_times && is_image; ++k)
+          is_image =
+            nearly_equal(load.intensity_at(p, times[k]),
+                         other.intensity_at(mirrored(p, axis), times[k]));
+    return Utilities::MPI::min(is_image, comm) == 1;
+  }
+
+
+  std::string
+  LoadSet::non_finite_history(const Load &load, const double tau)
+  {
+    return load.name + "/Time history = <" + load.history_expression + "> is "
+           + std::to_string(load.history->value(Point<1>(tau)))
+           + " at tau = " + time_text(tau) + ".";
+  }
+
+
+  std::string
+  LoadSet::non_finite_intensity(const Load &load, const double tau)
+  {
+    return load.name + "/Intensity = <" + load.intensity_expression
+           + "> times Magnitude is not a finite number at some quadrature "
+             "point at tau = "
+           + time_text(tau) + ".";
+  }
+
+
+  std::string
+  LoadSet::non_finite_load(const double tau) const
+  {
+    LA::MPI::Vector scratch;
+    discretization->reinit_vector(scratch);
+    for (const auto &load : loads)
+      {
+        const double h = load.history->value(Point<1>(tau));
+        if (!std::isfinite(h))
+          return non_finite_history(load, tau);
+        if (load.intensity_depends_on_time)
+          assemble_spatial_part(load, tau, scratch);
+        else
+          scratch = load.spatial_part;
+        if (!is_finite(scratch))
+          return load.kind == Kind::point
+                   ? load.name
+                       + ": Magnitude = " + std::to_string(load.magnitude)
+                       + " is too large to be represented."
+                   : non_finite_intensity(load, tau);
+        scratch *= h;
+        if (!is_finite(scratch))
+          return load.name + ": Magnitude * Time history overflows at tau = "
+                 + time_text(tau) + ".";
+      }
+    if (body_force != nullptr)
+      return "the body force at tau = " + time_text(tau) + ".";
+    return "the sum of the loads overflows at tau = " + time_text(tau) + ".";
+  }
+
+
+  void
+  LoadSet::require_finite_values(const Load                &load,
+                                 const std::vector<double> &times,
+                                 const FullPlatePoints     &points,
+                                 const BoundingBox<2>      &plate,
+                                 const Discretization      &disc)
+  {
+    for (const double tau : times)
+      AssertThrow(std::isfinite(load.history->value(Point<1>(tau))),
+                  ExcMessage(non_finite_history(load, tau)));
+    if (load.kind == Kind::point)
+      return;
+    const auto [candidates, acts_at] = where_it_acts(load, plate, points, disc);
+    const auto   n_times = load.intensity_depends_on_time ? times.size() : 1;
+    unsigned int first_bad_time = n_times;
+    for (const auto &p : candidates)
+      if (acts_at(p))
+        for (unsigned int k = 0; k < first_bad_time; ++k)
+          if (!std::isfinite(load.magnitude * load.intensity_at(p, times[k])))
+            first_bad_time = k;
+    first_bad_time = Utilities::MPI::min(first_bad_time, disc.mpi_communicator);
+    AssertThrow(first_bad_time == n_times,
+                ExcMessage(non_finite_intensity(load, times[first_bad_time])));
+  }
+
+
+  void
+  LoadSet::setup(const Discretization &disc)
+  {
+    discretization = &disc;
+    for (auto &load : loads)
+      {
+        disc.reinit_vector(load.spatial_part);
+        if (load.kind == Kind::pressure || load.kind == Kind::line)
+          {
+            if (!load.intensity_depends_on_time)
+              assemble_spatial_part(load, 0.0, load.spatial_part);
+            continue;
+          }
+        // Point loads outside the meshed part are represented by their
+        // images inside it.
+        if (!disc.modelled_box().point_inside(load.position, 1e-12))
+          continue;
+        const PointFunctional functional(disc, load.position);
+        functional.add_to(load.spatial_part,
+                          load.magnitude
+                            * disc.share_of_point_load(load.position),
+                          disc.constraints);
+        load.spatial_part.compress(VectorOperation::add);
+      }
+  }
+
+
+  void
+  LoadSet::assemble_spatial_part(const Load      &load,
+                                 const double     tau,
+                                 LA::MPI::Vector &vector) const
+  {
+    const auto density = [&](const Point<2> &x) {
+      return std::array<double, 3>{
+        {load.magnitude * load.intensity_at(x, tau), 0.0, 0.0}};
+    };
+    vector = 0;
+    if (load.kind == Kind::pressure)
+      PatchIntegrator(*discretization)
+        .add(density, region_of(load, discretization->plate_box()), vector);
+    else
+      integrate_along_edge(density, load.edge, vector);
+  }
+
+
+  void
+  LoadSet::integrate_along_edge(
+    const std::function<std::array<double, 3>(const Point<2> &)> &density,
+    const unsigned int                                            edge,
+    LA::MPI::Vector                                              &vector) const
+  {
+    const Discretization &disc   = *discretization;
+    const auto           &fe     = *disc.fe;
+    const unsigned int    n_dofs = fe.n_dofs_per_cell();
+    const UpdateFlags     flags =
+      update_values | update_quadrature_points | update_JxW_values;
+    FEFaceValues<2>                      fe_face_values(disc.mapping,
+                                   fe,
+                                   QGauss<1>(fe.degree + 2),
+                                   flags);
+    Vector<double>                       cell_rhs(n_dofs);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+
+    const auto integrate = [&](const FEValuesBase<2> &values) {
+      for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+        {
+          const std::array<double, 3> f = density(values.quadrature_point(q));
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            cell_rhs(i) += f[fe.system_to_component_index(i).first]
+                           * values.shape_value(i, q) * values.JxW(q);
+        }
+    };
+
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        cell_rhs = 0;
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary()
+              && cell->face(f)->boundary_id() == edge)
+            {
+              fe_face_values.reinit(cell, f);
+              integrate(fe_face_values);
+            }
+        cell->get_dof_indices(dof_indices);
+        disc.constraints.distribute_local_to_global(cell_rhs,
+                                                    dof_indices,
+                                                    vector);
+      }
+    vector.compress(VectorOperation::add);
+  }
+
+
+  void
+  LoadSet::assemble(const double tau, LA::MPI::Vector &load_vector) const
+  {
+    assemble_selected(
+      tau, [](const Load &) { return true; }, load_vector);
+    if (body_force != nullptr)
+      add_body_force(tau, load_vector);
+  }
+
+
+  void
+  LoadSet::assemble_selected(const double                             tau,
+                             const std::function<bool(const Load &)> &selected,
+                             LA::MPI::Vector &load_vector) const
+  {
+    load_vector = 0;
+    LA::MPI::Vector scratch;
+    for (const auto &load : loads)
+      {
+        if (!selected(load))
+          continue;
+        const double h = load.history->value(Point<1>(tau));
+        if (load.intensity_depends_on_time)
+          {
+            if (scratch.size() == 0)
+              discretization->reinit_vector(scratch);
+            assemble_spatial_part(load, tau, scratch);
+            load_vector.add(h, scratch);
+          }
+        else
+          load_vector.add(h, load.spatial_part);
+      }
+  }
+
+
+  void
+  LoadSet::set_body_force(Function<2> *force)
+  {
+    Assert(force == nullptr || force->n_components == 3,
+           ExcDimensionMismatch(force->n_components, 3));
+    body_force = force;
+  }
+
+
+  void
+  LoadSet::add_body_force(const double tau, LA::MPI::Vector &load_vector) const
+  {
+    body_force->set_time(tau);
+    // Functions may implement only vector_value(); ask for all components.
+    Vector<double> values(3);
+    // The whole plate as the patch: every cell lies inside it.
+    PatchIntegrator(*discretization)
+      .add(
+        [&](const Point<2> &x) {
+          body_force->vector_value(x, values);
+          return std::array<double, 3>{{values[0], values[1], values[2]}};
+        },
+        discretization->plate_box(),
+        load_vector);
+  }
+
+} // namespace liftoff

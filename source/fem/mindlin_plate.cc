@@ -1,0 +1,87 @@
+#include <liftoff/fem/mindlin_plate.h>
+
+namespace liftoff
+{
+  void
+  MindlinPlate::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Plate");
+    prm.declare_entry("Aspect ratio",
+                      "1",
+                      Patterns::Double(1e-3, 1e3),
+                      "mu: width of the plate (along y) over its length L "
+                      "(along x). Lengths are measured in units of L, so "
+                      "the plate is [-1/2,1/2] x [-mu/2,mu/2]. Within "
+                      "[1e-3, 1e3]: a narrower plate is a beam (model it "
+                      "as a strip along x with mu >= 1e-3), and cells "
+                      "stretched by more than 1e3 would multiply the "
+                      "condition number by the square of their stretch.");
+    prm.declare_entry("Thickness ratio",
+                      "0.05",
+                      Patterns::Double(1e-5, 1.0),
+                      "Delta = H / L, H the plate thickness. Within "
+                      "[1e-5, 1]: the shear stiffness 6 chi (1 - nu) / "
+                      "Delta^2 over the bending stiffness sets the "
+                      "condition number, about 6 chi (1 - nu) / (pi^4 "
+                      "Delta^2 h^2) for node spacing h, so the round-off "
+                      "error of the answer grows like 1 / Delta^2: a "
+                      "simply supported square under pressure (Q2, 64 x 64 "
+                      "cells) is off the Kirchhoff value by 5e-6 at Delta = "
+                      "1e-4, 6e-4 at 1e-5, 1.5e-2 at 1e-6 and has the wrong "
+                      "sign at 1e-7 (doc/reliability.md). A plate thicker "
+                      "than long is no plate: Mindlin's kinematics need H "
+                      "below the span.");
+    prm.declare_entry("Poisson ratio",
+                      "0.1",
+                      Patterns::Double(-1.0, 0.5),
+                      "nu, in (-1, 0.5).");
+    prm.declare_entry("Shear correction factor",
+                      "0.8333333333333333",
+                      Patterns::Double(0.0, 1.0),
+                      "chi of Mindlin's theory, in (0, 1]; 5/6 by default. "
+                      "It corrects the constant shear strain of the "
+                      "kinematics downwards (5/6, pi^2/12); above 1 it "
+                      "would stiffen the plate like a thinner one.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  MindlinPlate::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Plate");
+    aspect_ratio     = prm.get_double("Aspect ratio");
+    thickness_ratio  = prm.get_double("Thickness ratio");
+    poisson_ratio    = prm.get_double("Poisson ratio");
+    shear_correction = prm.get_double("Shear correction factor");
+    prm.leave_subsection();
+
+    // Patterns::Double admits the closed interval; the model needs it open.
+    AssertThrow(poisson_ratio > -1.0 && poisson_ratio < 0.5,
+                ExcMessage("Plate/Poisson ratio must lie in (-1, 0.5)."));
+    AssertThrow(shear_correction > 0,
+                ExcMessage("Plate/Shear correction factor must be > 0."));
+  }
+
+
+  double
+  MindlinPlate::shear_stiffness() const
+  {
+    return 6.0 * shear_correction * (1.0 - poisson_ratio)
+           / (thickness_ratio * thickness_ratio);
+  }
+
+
+  double
+  MindlinPlate::rotary_inertia() const
+  {
+    return thickness_ratio * thickness_ratio / 12.0;
+  }
+
+
+  double
+  MindlinPlate::twisting_stiffness() const
+  {
+    return 0.5 * (1.0 - poisson_ratio);
+  }
+} // namespace liftoff

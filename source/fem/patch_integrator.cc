@@ -1,0 +1,184 @@
+#include <deal.II/lac/vector.h>
+
+#include <liftoff/fem/patch_integrator.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace liftoff
+{
+  namespace
+  {
+    /// The cell as the rectangle [x0, x1] x [y0, y1] with its vertices in
+    /// deal.II's order, (x0, y0), (x1, y0), (x0, y1), (x1, y1), so that
+    /// the reference coordinates are (x - x0) / (x1 - x0) and
+    /// (y - y0) / (y1 - y0). Every cell is such a rectangle today
+    /// (subdivided_hyper_rectangle and its refinements). Plates of other
+    /// shapes (non-rectangular cells) extend the clipping here: patch ∩ cell
+    /// is then a polygon in reference coordinates, to be cut into
+    /// triangles and quadrilaterals with rules of their own.
+    BoundingBox<2>
+    rectangle_of(const DoFHandler<2>::active_cell_iterator &cell)
+    {
+      const BoundingBox<2> box       = cell->bounding_box();
+      const Point<2>      &lo        = box.get_boundary_points().first;
+      const Point<2>      &hi        = box.get_boundary_points().second;
+      const double         tolerance = 1e-12 * cell->diameter();
+      const bool           is_axis_aligned_rectangle =
+        (cell->vertex(0) - lo).norm() <= tolerance
+        && (cell->vertex(1) - Point<2>(hi[0], lo[1])).norm() <= tolerance
+        && (cell->vertex(2) - Point<2>(lo[0], hi[1])).norm() <= tolerance
+        && (cell->vertex(3) - hi).norm() <= tolerance;
+      if (!is_axis_aligned_rectangle)
+        {
+          std::ostringstream message;
+          message << "PatchIntegrator: the cell with vertices "
+                  << cell->vertex(0) << "; " << cell->vertex(1) << "; "
+                  << cell->vertex(2) << "; " << cell->vertex(3)
+                  << " is not an axis-aligned rectangle in lexicographic "
+                     "order, which the clipping of pressure patches needs "
+                     "(extend rectangle_of() in source/patch_integrator.cc "
+                     "for other cells).";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
+      return box;
+    }
+
+    /// A 1d rule on [0, 1] moved onto [a, b].
+    Quadrature<1>
+    on_interval(const Quadrature<1> &rule, const double a, const double b)
+    {
+      std::vector<Point<1>> points;
+      std::vector<double>   weights;
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          points.emplace_back(a + (b - a) * rule.point(q)[0]);
+          weights.push_back((b - a) * rule.weight(q));
+        }
+      return Quadrature<1>(points, weights);
+    }
+  } // namespace
+
+
+  PatchIntegrator::PatchIntegrator(const Discretization &discretization)
+      : discretization(discretization)
+      , cell_rule(discretization.fe->degree + 2)
+      , line_rule(discretization.fe->degree + 2)
+  {}
+
+
+  BoundingBox<2>
+  PatchIntegrator::reference_part(
+    const DoFHandler<2>::active_cell_iterator &cell,
+    const BoundingBox<2>                      &patch) const
+  {
+    const BoundingBox<2> rectangle = rectangle_of(cell);
+    Point<2>             lo, hi;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        const double x0 = rectangle.lower_bound(d);
+        const double h  = rectangle.side_length(d);
+        // Ends within round-off of the cell's edges are on them.
+        const auto to_reference = [&](const double x) {
+          const double xi = (x - x0) / h;
+          return (xi < 1e-12 ? 0.0 : (xi > 1 - 1e-12 ? 1.0 : xi));
+        };
+        lo[d] = to_reference(patch.lower_bound(d));
+        hi[d] = to_reference(patch.upper_bound(d));
+      }
+    return BoundingBox<2>(std::make_pair(lo, hi));
+  }
+
+
+  void
+  PatchIntegrator::for_each_covered_cell(
+    const BoundingBox<2>                           &patch,
+    const UpdateFlags                               flags,
+    const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+                             const FEValues<2> &)> &work) const
+  {
+    const Discretization &disc = discretization;
+    FEValues<2>           whole_cell(disc.mapping, *disc.fe, cell_rule, flags);
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        // Cells inside the patch or away from it are decided on their
+        // bounding boxes, whatever their shape: only the cut cells need
+        // the clipping (and rectangles).
+        const BoundingBox<2> box       = cell->bounding_box();
+        const double         tolerance = 1e-12 * cell->diameter();
+        bool                 inside = true, away = false;
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            inside = inside
+                     && box.lower_bound(d) >= patch.lower_bound(d) - tolerance
+                     && box.upper_bound(d) <= patch.upper_bound(d) + tolerance;
+            away = away
+                   || box.lower_bound(d) >= patch.upper_bound(d) - tolerance
+                   || box.upper_bound(d) <= patch.lower_bound(d) + tolerance;
+          }
+        if (away)
+          continue;
+        if (inside)
+          {
+            whole_cell.reinit(cell);
+            work(cell, whole_cell);
+            continue;
+          }
+        // A cut cell: the rule differs from cell to cell, and so do the
+        // shape values at its points.
+        const BoundingBox<2> part = reference_part(cell, patch);
+        const Quadrature<2>  rule(
+          on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
+          on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
+        FEValues<2> cut_cell(disc.mapping, *disc.fe, rule, flags);
+        cut_cell.reinit(cell);
+        work(cell, cut_cell);
+      }
+  }
+
+
+  void
+  PatchIntegrator::add(const Density        &density,
+                       const BoundingBox<2> &patch,
+                       LA::MPI::Vector      &vector) const
+  {
+    const auto                          &fe     = *discretization.fe;
+    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+    Vector<double>                       cell_rhs(n_dofs);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+    for_each_covered_cell(
+      patch,
+      update_values | update_quadrature_points | update_JxW_values,
+      [&](const DoFHandler<2>::active_cell_iterator &cell,
+          const FEValues<2>                         &values) {
+        cell_rhs = 0;
+        for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+          {
+            const std::array<double, 3> f = density(values.quadrature_point(q));
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              cell_rhs(i) += f[fe.system_to_component_index(i).first]
+                             * values.shape_value(i, q) * values.JxW(q);
+          }
+        cell->get_dof_indices(dof_indices);
+        discretization.constraints.distribute_local_to_global(cell_rhs,
+                                                              dof_indices,
+                                                              vector);
+      });
+    vector.compress(VectorOperation::add);
+  }
+
+
+  std::vector<Point<2>>
+  PatchIntegrator::quadrature_points(const BoundingBox<2> &patch) const
+  {
+    std::vector<Point<2>> points;
+    for_each_covered_cell(patch,
+                          update_quadrature_points,
+                          [&](const DoFHandler<2>::active_cell_iterator &,
+                              const FEValues<2> &values) {
+                            for (const auto &p : values.get_quadrature_points())
+                              points.push_back(p);
+                          });
+    return points;
+  }
+} // namespace liftoff

@@ -1,0 +1,116 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <liftoff/fem/point_functional.h>
+
+namespace liftoff
+{
+  namespace
+  {
+    // How far outside a cell, in its unit coordinates, a point still counts
+    // as inside: round-off of points on cell edges and the plate's edges.
+    constexpr double tolerance = 1e-10;
+
+    // The search trees find a cell around the point; a point on an edge or
+    // a vertex lies in its neighbours too, some of them perhaps of other
+    // ranks. Of this rank's cells that hold it, take the first in the order
+    // of the active cells; the flag says whether there is one.
+    std::pair<Triangulation<2>::active_cell_iterator, bool>
+    first_owned_cell_around(const Discretization &discretization,
+                            const Point<2>       &point)
+    {
+      const auto first = GridTools::find_active_cell_around_point(
+        discretization.grid_cache(),
+        point,
+        typename Triangulation<2>::active_cell_iterator(),
+        {},
+        tolerance);
+      typename Triangulation<2>::active_cell_iterator found;
+      bool                                            is_found = false;
+      if (first.first.state() == IteratorState::valid)
+        for (const auto &[cell, unit] :
+             GridTools::find_all_active_cells_around_point(
+               discretization.mapping,
+               discretization.triangulation,
+               point,
+               tolerance,
+               first))
+          if (cell->is_locally_owned()
+              && (!is_found
+                  || cell->active_cell_index() < found->active_cell_index()))
+            {
+              found    = cell;
+              is_found = true;
+            }
+      return {found, is_found};
+    }
+  } // namespace
+
+
+  PointFunctional::PointFunctional(const Discretization &discretization,
+                                   const Point<2>       &point,
+                                   const unsigned int    component)
+  {
+    const auto    &dof_handler = discretization.dof_handler;
+    const auto    &fe          = *discretization.fe;
+    const MPI_Comm comm        = discretization.mpi_communicator;
+
+    const auto [found, is_found] =
+      first_owned_cell_around(discretization, point);
+
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int holder =
+      Utilities::MPI::min(is_found ? my_rank : n_ranks, comm);
+    AssertThrow(holder < n_ranks,
+                ExcMessage("The point (" + std::to_string(point[0]) + ", "
+                           + std::to_string(point[1])
+                           + ") lies outside the meshed part of the plate."));
+    if (holder != my_rank)
+      return;
+
+    const Point<2> unit_point = GeometryInfo<2>::project_to_unit_cell(
+      discretization.mapping.transform_real_to_unit_cell(found, point));
+    const typename DoFHandler<2>::active_cell_iterator cell(
+      &discretization.triangulation,
+      found->level(),
+      found->index(),
+      &dof_handler);
+    FEValues<2> fe_values(discretization.mapping,
+                          fe,
+                          Quadrature<2>(unit_point),
+                          update_values);
+    fe_values.reinit(cell);
+    dof_indices.resize(fe.n_dofs_per_cell());
+    cell->get_dof_indices(dof_indices);
+    weights.reinit(fe.n_dofs_per_cell());
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first == component)
+        weights[i] = fe_values.shape_value(i, 0);
+  }
+
+
+  double
+  PointFunctional::local_value(const LA::MPI::Vector &ghosted_solution) const
+  {
+    double value = 0;
+    for (unsigned int i = 0; i < dof_indices.size(); ++i)
+      value += weights[i] * ghosted_solution(dof_indices[i]);
+    return value;
+  }
+
+
+  void
+  PointFunctional::add_to(LA::MPI::Vector                 &rhs,
+                          const double                     factor,
+                          const AffineConstraints<double> &constraints) const
+  {
+    if (dof_indices.empty())
+      return;
+    Vector<double> scaled(weights);
+    scaled *= factor;
+    constraints.distribute_local_to_global(scaled, dof_indices, rhs);
+  }
+} // namespace liftoff

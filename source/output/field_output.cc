@@ -1,0 +1,603 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/hdf5.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <liftoff/base/output_files.h>
+#include <liftoff/output/field_output.h>
+
+#include <liftoff/version.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace liftoff
+{
+  namespace
+  {
+    /// Pressure of the springs on the plate, Gamma (w - g)^+ (Gamma (w - g)
+    /// when bilateral): what the foundation's springs carry, positive in
+    /// compression; and the uplift (g - w)^+, the gap between plate and bed
+    /// where the plate is lifted.
+    class FoundationPressure : public DataPostprocessor<2>
+    {
+    public:
+      explicit FoundationPressure(const TensionlessWinklerFoundation &f)
+          : foundation(f)
+      {}
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"foundation_pressure", "uplift"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        // The points only where g needs them.
+        return foundation.has_gap() ? update_values | update_quadrature_points
+                                    : update_values;
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &input,
+        std::vector<Vector<double>>              &computed) const override
+      {
+        using Model = TensionlessWinklerFoundation::Model;
+        for (unsigned int q = 0; q < input.solution_values.size(); ++q)
+          {
+            const double g = (foundation.has_gap()
+                                ? foundation.gap_at(input.evaluation_points[q])
+                                : 0.0);
+            const double w = input.solution_values[q][0] - g;
+            computed[q][0] = (foundation.model == Model::none
+                                ? 0.0
+                                : foundation.stiffness
+                                    * (foundation.model == Model::bilateral
+                                         ? w
+                                         : std::max(w, 0.0)));
+            computed[q][1] = std::max(-w, 0.0);
+          }
+      }
+
+    private:
+      const TensionlessWinklerFoundation &foundation;
+    };
+
+
+    /// DataOut with its patches, names and vector ranges public, for
+    /// PlateFields.
+    class PlaneDataOut : public DataOut<2>
+    {
+    public:
+      using DataOut<2>::get_dataset_names;
+      using DataOut<2>::get_nonscalar_data_ranges;
+      using DataOut<2>::get_patches;
+    };
+
+
+    /// The fields of a PlaneDataOut with the plate placed at z = 0 in
+    /// three dimensions, and two vectors added for ParaView (Glyph,
+    /// WarpByVector): the rotation (psi_x, psi_y, 0) and the displacement
+    /// (0, 0, w), w > 0 into the foundation. deal.II takes a vector of a 2d
+    /// output to have two components, so (0, 0, w) needs the third
+    /// dimension. The scalar fields stay as they are, so that old ParaView
+    /// states keep working.
+    class PlateFields : public DataOutInterface<2, 3>
+    {
+    public:
+      explicit PlateFields(const PlaneDataOut &plane)
+          : names(plane.get_dataset_names())
+          , ranges(plane.get_nonscalar_data_ranges())
+      {
+        const auto row = [&](const std::string &name) {
+          const auto at = std::find(names.begin(), names.end(), name);
+          Assert(at != names.end(), ExcInternalError());
+          return static_cast<unsigned int>(at - names.begin());
+        };
+        const unsigned int n = names.size(), w = row("w"), psi_x = row("psi_x"),
+                           psi_y = row("psi_y");
+        for (const auto &flat : plane.get_patches())
+          {
+            DataOutBase::Patch<2, 3> patch;
+            for (unsigned int v = 0; v < GeometryInfo<2>::vertices_per_cell;
+                 ++v)
+              patch.vertices[v] =
+                Point<3>(flat.vertices[v][0], flat.vertices[v][1], 0.0);
+            patch.neighbors            = flat.neighbors;
+            patch.patch_index          = flat.patch_index;
+            patch.n_subdivisions       = flat.n_subdivisions;
+            patch.reference_cell       = flat.reference_cell;
+            patch.points_are_available = flat.points_are_available;
+            // The rows: the data sets, the two vectors, then (where the
+            // mapping gave them) the coordinates of the points.
+            const unsigned int n_points = flat.data.n_cols();
+            patch.data.reinit(n + 6 + (flat.points_are_available ? 3 : 0),
+                              n_points);
+            for (unsigned int k = 0; k < n_points; ++k)
+              {
+                for (unsigned int r = 0; r < n; ++r)
+                  patch.data(r, k) = flat.data(r, k);
+                patch.data(n, k)     = flat.data(psi_x, k);
+                patch.data(n + 1, k) = flat.data(psi_y, k);
+                patch.data(n + 5, k) = flat.data(w, k);
+                if (flat.points_are_available)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    patch.data(n + 6 + d, k) = flat.data(n + d, k);
+              }
+            patches.push_back(std::move(patch));
+          }
+        for (const std::string vector : {"rotation", "displacement"})
+          {
+            ranges.emplace_back(
+              names.size(),
+              names.size() + 2,
+              vector,
+              DataComponentInterpretation::component_is_part_of_vector);
+            names.insert(names.end(), 3, vector);
+          }
+      }
+
+    protected:
+      const std::vector<DataOutBase::Patch<2, 3>> &
+      get_patches() const override
+      {
+        return patches;
+      }
+
+      std::vector<std::string>
+      get_dataset_names() const override
+      {
+        return names;
+      }
+
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+      get_nonscalar_data_ranges() const override
+      {
+        return ranges;
+      }
+
+    private:
+      std::vector<DataOutBase::Patch<2, 3>> patches;
+      std::vector<std::string>              names;
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+        ranges;
+    };
+
+
+    /// The units of the fields, in the dimensionless variables of
+    /// doc/model.md (F0 the load scale, L the length, D the bending
+    /// stiffness, t0 the time scale).
+    const std::map<std::string, std::string> field_units = {
+      {"w", "F0*L^2/D"},
+      {"psi_x", "F0*L/D"},
+      {"psi_y", "F0*L/D"},
+      {"w_dot", "F0*L^2/(D*t0)"},
+      {"psi_x_dot", "F0*L/(D*t0)"},
+      {"psi_y_dot", "F0*L/(D*t0)"},
+      {"rotation", "F0*L/D"},
+      {"displacement", "F0*L^2/D"},
+      {"foundation_pressure", "F0/L^2"},
+      {"uplift", "F0*L^2/D"},
+      {"contact_status", "1"}};
+
+
+    /// The liftoff that writes the files, as `liftoff --version` names it.
+    const std::string written_by =
+      LIFTOFF_VERSION " (git " LIFTOFF_GIT_COMMIT ")";
+
+
+    /// A .vtu or .pvtu as deal.II writes it, with two additions. ParaView
+    /// takes the time of such files opened as a series (without the .pvd)
+    /// from a field-data array named TimeValue, in the .pvtu itself for a
+    /// .pvtu; deal.II names its array TIME and writes it in the pieces only.
+    /// So TimeValue is added, beside TIME in a piece and as the .pvtu's own
+    /// field data. And a comment names the version and git commit of the
+    /// liftoff that wrote the file.
+    std::string
+    with_liftoff_metadata(const std::string &vtk, const double time)
+    {
+      std::ostringstream array;
+      array.precision(17);
+      array << "\n<DataArray type=\"Float64\" Name=\"TimeValue\" "
+               "NumberOfTuples=\"1\" format=\"ascii\">"
+            << time << "</DataArray>";
+      std::string       text       = vtk;
+      const std::string field_data = "<FieldData>";
+      std::size_t       at         = text.find(field_data);
+      if (at != std::string::npos)
+        text.insert(at + field_data.size(), array.str());
+      else
+        {
+          at = text.find("<PUnstructuredGrid");
+          Assert(at != std::string::npos, ExcInternalError());
+          at = text.find('>', at) + 1;
+          text.insert(at, "\n" + field_data + array.str() + "\n</FieldData>");
+        }
+      const std::size_t line_end = text.find('\n');
+      return text.insert(line_end + 1, "<!-- liftoff " + written_by + " -->\n");
+    }
+
+
+    /// What the data sets of an HDF5 output do not say themselves, as
+    /// attributes of the file `path`, for a reader of the .h5 alone (h5py):
+    /// the time tau and the step on the file, the unit of each data set as
+    /// its `units` (those of the VTU files), and the scales the units are
+    /// made of.
+    void
+    add_hdf5_metadata(const std::string                &path,
+                      const DataOutBase::DataOutFilter &filter,
+                      const double                      time,
+                      const unsigned int                step)
+    {
+      HDF5::File file(path, HDF5::File::FileAccessMode::open);
+      file.set_attribute("time", time);
+      file.set_attribute("time_units", std::string("t0"));
+      file.set_attribute("step", step);
+      file.set_attribute("scales",
+                         std::string(
+                           "L the plate's length along x, F0 the "
+                           "load scale, D the bending stiffness, "
+                           "t0 = L^2 sqrt(rho H / D) (doc/model.md)"));
+      file.set_attribute("liftoff", written_by);
+      file.open_dataset("nodes").set_attribute("units", std::string("L"));
+      for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
+        {
+          const auto unit = field_units.find(filter.get_data_set_name(i));
+          if (unit != field_units.end())
+            file.open_dataset(unit->first).set_attribute("units", unit->second);
+        }
+    }
+
+
+    /// The entries of solution.xdmf for the outputs of `records` (after a
+    /// resume), each with the sizes of its own .h5: an adaptive mesh has
+    /// other sizes at every output. The fields are those of `filter`, the
+    /// current output's. Outputs whose .h5 is gone are left out, rather
+    /// than named with sizes nobody knows.
+    std::vector<XDMFEntry>
+    earlier_xdmf_entries(
+      const std::string                                 &directory,
+      const DataOutBase::DataOutFilter                  &filter,
+      const std::vector<std::pair<double, std::string>> &records)
+    {
+      std::vector<XDMFEntry> entries;
+      for (const auto &[time, master] : records)
+        {
+          const std::string name = master.substr(0, master.rfind('.')) + ".h5";
+          if (!std::filesystem::exists(directory + "/" + name))
+            continue;
+          const HDF5::File file(directory + "/" + name,
+                                HDF5::File::FileAccessMode::open);
+          const auto       rows = [&](const std::string &data_set) {
+            return file.open_dataset(data_set).get_dimensions();
+          };
+          XDMFEntry entry(
+            name, name, time, rows("nodes")[0], rows("cells")[0], 2, 3);
+          for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
+            entry.add_attribute(filter.get_data_set_name(i),
+                                filter.get_data_set_dim(i));
+          entries.push_back(entry);
+        }
+      return entries;
+    }
+
+
+    /// solution_NNNNN.h5 (`stem`.h5) from the patches of data_out, and its
+    /// entry added to `xdmf_entries`, the entries of solution.xdmf; after a
+    /// resume that is empty and is rebuilt first from the PVD `records` of
+    /// the earlier outputs. The entries name the .h5 files without a folder,
+    /// so readers look for them beside solution.xdmf. Collective.
+    void
+    write_hdf5(const std::string                                 &directory,
+               const DataOutInterface<2, 3>                      &data_out,
+               const MPI_Comm                                     comm,
+               const double                                       time,
+               const unsigned int                                 step,
+               const std::string                                 &stem,
+               const std::vector<std::pair<double, std::string>> &records,
+               std::vector<XDMFEntry>                            &xdmf_entries)
+    {
+      // XDMF describes linear cells only: the subdivided patches are written
+      // as bilinear quadrilaterals, whatever Field cells says.
+      DataOutBase::DataOutFilter filter(
+        DataOutBase::DataOutFilterFlags(false, true));
+      data_out.write_filtered_data(filter);
+      const std::string  name = stem + ".h5";
+      const std::string  path = directory + "/" + name;
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      // write_hdf5_parallel is collective: every rank writes its part into
+      // the same temporary file, which rank 0 completes and renames once all
+      // are done.
+      collective_attempt(comm, "Writing " + name + " failed", [&]() {
+        data_out.write_hdf5_parallel(filter, path + ".tmp", comm);
+      });
+      collective_attempt(comm, "Writing " + name + " failed", [&]() {
+        if (rank != 0)
+          return;
+        add_hdf5_metadata(path + ".tmp", filter, time, step);
+        if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+          throw std::runtime_error("cannot rename " + path + ".tmp");
+        // After a resume rank 0, which alone writes solution.xdmf, first
+        // rebuilds the entries of the earlier outputs.
+        if (xdmf_entries.empty())
+          xdmf_entries = earlier_xdmf_entries(directory, filter, records);
+      });
+      xdmf_entries.push_back(
+        data_out.create_xdmf_entry(filter, name, time, comm));
+    }
+
+
+    /// solution.xdmf naming the HDF5 files of `entries`; rank 0 writes it.
+    /// XDMF 3: the time series reader of Debian 12's meshio 5.0 refuses any
+    /// other version ("Unknown XDMF version 2.0"); ParaView's XDMF readers
+    /// read deal.II's entries either way.
+    void
+    write_xdmf(const std::string            &directory,
+               const std::vector<XDMFEntry> &entries)
+    {
+      write_file_atomically(
+        directory + "/solution.xdmf", [&](std::ostream &out) {
+          out << "<?xml version=\"1.0\" ?>\n"
+              << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+              << "<Xdmf Version=\"3.0\">\n"
+              << "  <Domain>\n"
+              << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+                 "CollectionType=\"Temporal\">\n";
+          for (const auto &entry : entries)
+            out << entry.get_xdmf_content(3, ReferenceCells::Quadrilateral);
+          out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+        });
+    }
+
+
+    // Every file goes to a temporary name first and is renamed when
+    // complete, and the record naming the pieces is written only after every
+    // rank has renamed its piece: a viewer never finds a half-written file.
+    // Returns the name of the record (the .pvtu).
+    std::string
+    write_vtu_pieces(const std::string &directory,
+                     const PlateFields &data_out,
+                     const MPI_Comm     comm,
+                     const double       time,
+                     const std::string &stem)
+    {
+      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const auto         piece   = [&](const unsigned int r) {
+        return stem + "." + Utilities::int_to_string(r, 4) + ".vtu";
+      };
+      // A failure on one rank stops all of them here (this is also the
+      // barrier before the record), not in a later collective call.
+      const std::string what = "Writing " + stem + " failed";
+      collective_attempt(comm, what, [&]() {
+        write_file_atomically(directory + "/" + piece(rank),
+                              [&](std::ostream &out) {
+                                std::ostringstream vtu;
+                                data_out.write_vtu(vtu);
+                                out << with_liftoff_metadata(vtu.str(), time);
+                              });
+      });
+      const std::string master = stem + ".pvtu";
+      collective_attempt(comm, what, [&]() {
+        if (rank != 0)
+          return;
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(piece(r));
+        write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
+          std::ostringstream pvtu;
+          data_out.write_pvtu_record(pvtu, pieces);
+          out << with_liftoff_metadata(pvtu.str(), time);
+        });
+      });
+      return master;
+    }
+  } // namespace
+
+
+  void
+  FieldOutput::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("VTU interval",
+                      "10",
+                      Patterns::Integer(0),
+                      "Write fields every this many steps (and at the last "
+                      "step); 0 writes none.");
+    prm.declare_entry("Field cells",
+                      "subdivided",
+                      Patterns::Selection("subdivided|higher order"),
+                      "How the VTU files draw a cell of the mesh: "
+                      "`subdivided` into Subdivisions x Subdivisions "
+                      "bilinear cells, or `higher order`: one Lagrange cell "
+                      "of degree Subdivisions (VTK_LAGRANGE_QUADRILATERAL, "
+                      "ParaView 5.5 or later; its Nonlinear Subdivision "
+                      "Level sets how finely it is drawn).");
+    prm.declare_entry("Subdivisions",
+                      "0",
+                      Patterns::Integer(0, 16),
+                      "Subdivisions of each cell in the field files; 0 takes "
+                      "the polynomial degree, which shows a Q2 field "
+                      "exactly with higher-order cells.");
+    prm.declare_entry("HDF5 output",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write every field output as "
+                      "solution_NNNNN.h5 (one file for all ranks, MPI-IO; "
+                      "tau and the units as HDF5 attributes) and the time "
+                      "series solution.xdmf (XDMF 3), which ParaView "
+                      "(Xdmf3ReaderT) and meshio (TimeSeriesReader) read: "
+                      "doc/viewing.md.");
+  }
+
+
+  void
+  FieldOutput::parse_parameters(ParameterHandler &prm)
+  {
+    interval           = prm.get_integer("VTU interval");
+    higher_order_cells = prm.get("Field cells") == "higher order";
+    subdivisions       = prm.get_integer("Subdivisions");
+    writes_hdf5        = prm.get_bool("HDF5 output");
+  }
+
+
+  bool
+  FieldOutput::is_due(const unsigned int step, const bool is_last_step) const
+  {
+    return is_due_every(interval, step, is_last_step);
+  }
+
+
+  void
+  FieldOutput::write(const std::string                  &directory,
+                     const Discretization               &disc,
+                     const TensionlessWinklerFoundation &foundation,
+                     const LA::MPI::Vector              &solution,
+                     const LA::MPI::Vector              &velocity,
+                     const double                        time,
+                     const unsigned int                  step)
+  {
+    PlaneDataOut plane;
+    plane.attach_dof_handler(disc.dof_handler);
+    plane.add_data_vector(solution,
+                          std::vector<std::string>{"w", "psi_x", "psi_y"});
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      scalar(3, DataComponentInterpretation::component_is_scalar);
+    plane.add_data_vector(velocity,
+                          std::vector<std::string>{"w_dot",
+                                                   "psi_x_dot",
+                                                   "psi_y_dot"},
+                          DataOut<2>::type_dof_data,
+                          scalar);
+    const FoundationPressure pressure(foundation);
+    plane.add_data_vector(solution, pressure);
+    const Vector<float> contact = foundation.contact_fraction_per_cell();
+    plane.add_data_vector(contact, "contact_status");
+    Vector<float> subdomain(disc.triangulation.n_active_cells());
+    subdomain = disc.triangulation.locally_owned_subdomain();
+    plane.add_data_vector(subdomain, "subdomain");
+    // Levels above the uniform mesh of the scene (Mesh refinement).
+    Vector<float> level(disc.triangulation.n_active_cells());
+    for (const auto &cell : disc.triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        level[cell->active_cell_index()] =
+          static_cast<float>(cell->level()) - disc.initial_level();
+    plane.add_data_vector(level, "refinement_level");
+    plane.build_patches(disc.mapping,
+                        subdivisions > 0 ? subdivisions : disc.degree());
+    PlateFields data_out(plane);
+
+    DataOutBase::VtkFlags flags;
+    flags.time                     = time;
+    flags.cycle                    = step;
+    flags.write_higher_order_cells = higher_order_cells;
+    flags.physical_units           = field_units;
+    // zlib's fastest level: its best compression took 40 % of the field
+    // output's time (Example 2 pulse, 100 files) for files 6 % smaller.
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
+
+    const MPI_Comm    comm = disc.mpi_communicator;
+    const std::string stem = "solution_" + Utilities::int_to_string(step, 5);
+    const std::string master =
+      write_vtu_pieces(directory, data_out, comm, time, stem);
+    if (writes_hdf5)
+      write_hdf5(
+        directory, data_out, comm, time, step, stem, records, xdmf_entries);
+    records.emplace_back(time, master);
+    write_record(directory,
+                 comm,
+                 since_record_written.wall_time() >= rewrite_interval);
+  }
+
+
+  void
+  FieldOutput::write_record(const std::string &directory,
+                            const MPI_Comm     comm,
+                            const bool         is_due)
+  {
+    if (records.empty())
+      return;
+    collective_attempt(comm, "", [&]() {
+      if (!is_due || Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      write_file_atomically(directory + "/solution.pvd",
+                            [&](std::ostream &out) {
+                              DataOutBase::write_pvd_record(out, records);
+                            });
+      // After a resume the entries wait for the next output (write_hdf5),
+      // and the earlier run's file stays until then.
+      if (writes_hdf5 && !xdmf_entries.empty())
+        write_xdmf(directory, xdmf_entries);
+    });
+    if (is_due)
+      since_record_written.restart();
+  }
+
+
+  void
+  FieldOutput::setup(const Discretization &disc, const std::string &folder)
+  {
+    directory = folder;
+    mesh_changed(disc);
+  }
+
+
+  void
+  FieldOutput::mesh_changed(const Discretization &disc)
+  {
+    discretization = &disc;
+    disc.reinit_ghosted_vector(ghosted_velocity);
+  }
+
+
+  void
+  FieldOutput::execute(const StepData &step)
+  {
+    if (directory.empty() || !is_due(step.state.step, step.is_last_step))
+      return;
+    ghosted_velocity = step.state.v;
+    write(directory,
+          *discretization,
+          step.foundation,
+          step.state.ghosted_u,
+          ghosted_velocity,
+          step.state.tau,
+          step.state.step);
+  }
+
+
+  void
+  FieldOutput::flush()
+  {
+    if (!directory.empty())
+      write_record(directory, discretization->mpi_communicator, true);
+  }
+
+
+  void
+  FieldOutput::save(OutputArchive &archive) const
+  {
+    archive << records;
+  }
+
+
+  void
+  FieldOutput::load(InputArchive &archive)
+  {
+    archive >> records;
+  }
+} // namespace liftoff

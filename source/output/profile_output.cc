@@ -1,0 +1,176 @@
+#include <deal.II/base/mpi.h>
+
+#include <liftoff/output/profile_output.h>
+
+#include <algorithm>
+#include <iomanip>
+
+namespace liftoff
+{
+  void
+  ProfileOutput::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Profile start",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 2, ","),
+                      "x, y where the profile line starts (full plate).");
+    prm.declare_entry("Profile end",
+                      "0.5, 0",
+                      Patterns::List(Patterns::Double(), 2, 2, ","),
+                      "x, y where the profile line ends (full plate).");
+    prm.declare_entry("Profile points",
+                      "0",
+                      Patterns::Integer(0, 100000),
+                      "Points along the line (including its ends); 0 "
+                      "writes no profiles.");
+    prm.declare_entry("Profile times",
+                      "",
+                      Patterns::List(Patterns::Double(0.0)),
+                      "Times tau at which profiles.csv gets a profile, "
+                      "each at the step nearest to it (times nearer to "
+                      "each other than half a Time step share one "
+                      "profile; a time given twice is refused). Times beyond "
+                      "Time integration/End time are not reached: the run "
+                      "warns about them and goes on (a scene may be run "
+                      "shorter for a try or resumed further).");
+  }
+
+
+  void
+  ProfileOutput::parse_parameters(ParameterHandler &prm)
+  {
+    const auto a = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Profile start")));
+    const auto b = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Profile end")));
+    start    = Point<2>(a[0], a[1]);
+    end      = Point<2>(b[0], b[1]);
+    n_points = prm.get_integer("Profile points");
+    times    = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Profile times")));
+    for (unsigned int k = 0; k < times.size(); ++k)
+      AssertThrow(std::count(times.begin(), times.begin() + k, times[k]) == 0,
+                  ExcMessage("Output/Profile times lists "
+                             + Utilities::to_string(times[k])
+                             + " twice; each time gives one profile."));
+    AssertThrow(n_points != 1,
+                ExcMessage("Output/Profile points must be 0 (no profile) or "
+                           "at least 2."));
+  }
+
+
+  Point<2>
+  ProfileOutput::point(const unsigned int i) const
+  {
+    return start + (end - start) * (double(i) / (n_points - 1));
+  }
+
+
+  void
+  ProfileOutput::check_against(const Discretization &disc) const
+  {
+    if (n_points == 0)
+      return;
+    for (const auto &p : {start, end})
+      AssertThrow(disc.is_on_plate(p),
+                  ExcMessage("Output/Profile start and Profile end must lie "
+                             "on "
+                             + disc.plate_description() + "; "
+                             + std::to_string(p[0]) + ", "
+                             + std::to_string(p[1]) + " does not."));
+  }
+
+
+  std::vector<double>
+  ProfileOutput::times_not_reached(const double end_time, const double dt) const
+  {
+    std::vector<double> late;
+    if (n_points > 0)
+      for (const double tau : times)
+        if (tau > end_time + 0.5 * dt * (1 + 1e-12))
+          late.push_back(tau);
+    return late;
+  }
+
+
+  void
+  ProfileOutput::setup(const Discretization &disc, const std::string &directory)
+  {
+    is_written.assign(times.size(), false);
+    mesh_changed(disc);
+    if (n_points == 0)
+      return;
+
+    // The file appears with the first profile.
+    file.open(directory.empty() ? "" : directory + "/profiles.csv",
+              rewrite_interval,
+              disc.mpi_communicator);
+    file.stream() << "tau,s,x,y,w\n";
+  }
+
+
+  void
+  ProfileOutput::mesh_changed(const Discretization &disc)
+  {
+    discretization = &disc;
+    points.clear();
+    for (unsigned int i = 0; i < n_points; ++i)
+      points.emplace_back(disc, disc.to_modelled_part(point(i)));
+  }
+
+
+  void
+  ProfileOutput::execute(const StepData &step)
+  {
+    const double           tau = step.state.tau;
+    const double           dt  = step.time_step;
+    const LA::MPI::Vector &u   = step.state.ghosted_u;
+    if (n_points == 0)
+      return;
+    bool is_due = (dt == 0.0);
+    for (unsigned int k = 0; k < times.size(); ++k)
+      if (!is_written[k] && std::abs(tau - times[k]) <= 0.5 * dt * (1 + 1e-12))
+        is_written[k] = is_due = true;
+    if (!is_due)
+      return;
+
+    std::vector<double> w;
+    for (const auto &p : points)
+      w.push_back(p.local_value(u));
+    Utilities::MPI::sum(w, discretization->mpi_communicator, w);
+    std::ostream &out = file.stream();
+    out << std::setprecision(12);
+    for (unsigned int i = 0; i < n_points; ++i)
+      {
+        const Point<2> p = point(i);
+        out << tau << ',' << p.distance(start) << ',' << p[0] << ',' << p[1]
+            << ',' << w[i] << '\n';
+      }
+    file.flush();
+  }
+
+
+  void
+  ProfileOutput::save(OutputArchive &archive) const
+  {
+    archive << is_written << file.text();
+  }
+
+
+  void
+  ProfileOutput::load(InputArchive &archive)
+  {
+    std::string text;
+    archive >> is_written >> text;
+    file.replace(text);
+    file.hold();
+  }
+
+
+  void
+  ProfileOutput::flush()
+  {
+    if (n_points > 0)
+      file.flush();
+  }
+} // namespace liftoff

@@ -1,0 +1,41 @@
+#include <liftoff/time/energy_balance.h>
+
+namespace liftoff
+{
+  EnergyBalance
+  energies_of(const PlateMatrices                &matrices,
+              const TensionlessWinklerFoundation &foundation,
+              const LA::MPI::Vector              &u,
+              const LA::MPI::Vector              &ghosted_u,
+              const LA::MPI::Vector              &v,
+              const double                        copies,
+              const double                        work,
+              LA::MPI::Vector                    &product)
+  {
+    EnergyBalance e;
+    e.kinetic =
+      0.5 * copies * matrices.quadratic_form(matrices.mass, v, product);
+    e.strain =
+      0.5 * copies * matrices.quadratic_form(matrices.stiffness, u, product);
+    e.foundation = copies * foundation.energy(ghosted_u);
+    e.work       = work;
+    return e;
+  }
+
+
+  double
+  work_of_step(const LA::MPI::Vector &u_old,
+               const LA::MPI::Vector &u_new,
+               const LA::MPI::Vector &load_old,
+               const LA::MPI::Vector &load_new,
+               const double           copies,
+               LA::MPI::Vector       &increment,
+               LA::MPI::Vector       &load_sum)
+  {
+    copy_values(u_new, increment);
+    increment -= u_old;
+    copy_values(load_old, load_sum);
+    load_sum += load_new;
+    return 0.5 * copies * (increment * load_sum);
+  }
+} // namespace liftoff
