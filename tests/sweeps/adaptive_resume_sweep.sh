@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Hostile sweep (not in ctest: about 20 minutes on 2 cores): an adaptive run
+# Hostile sweep (not in ctest; 1, 2 and 3 ranks took about 60 minutes on the
+# 2-core machine beside other work): an adaptive run
 # stopped at many steps and resumed must write the same history.csv as one
 # run without a stop, for each foundation variant and number of ranks.
 #   tests/sweeps/adaptive_resume_sweep.sh LIFTOFF [RANKS...] 
