@@ -11,6 +11,10 @@ stack trace or a hang.
 """
 import csv, os, re, subprocess, sys, tempfile
 
+# The entries as every_parameter_refused.py reads them from --parameters.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from every_parameter_refused import declared_entries, is_first_of_numbered  # noqa: E402
+
 liftoff = os.path.abspath(sys.argv[1])
 table = sys.argv[2] if len(sys.argv) > 2 else None
 BASE = """subsection Discretization
@@ -37,19 +41,7 @@ SKIP = {("Output", "Directory"), ("Time integration", "End time"),
 
 
 def entries():
-    text = subprocess.run([liftoff, "--parameters"], capture_output=True,
-                          text=True, check=True).stdout
-    path, out = [], []
-    for line in text.splitlines():
-        line = line.strip()
-        if line.startswith("subsection "):
-            path.append(line[len("subsection "):].strip())
-        elif line == "end":
-            path.pop()
-        elif line.startswith("set "):
-            out.append((tuple(path), line[4:].split("=", 1)[0].strip()))
-    return [e for e in out
-            if all(not re.search(r" ([2-9])$", s) for s in e[0])]
+    return [e for e in declared_entries(liftoff) if is_first_of_numbered(e[0])]
 
 
 def scene(path, entry, value):
