@@ -5,9 +5,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/discretization.h>
-#include <liftoff/run/checkpoint.h>
 
 #include <functional>
 #include <memory>

@@ -1,9 +1,9 @@
 #pragma once
 
+#include <liftoff/base/archives.h>
 #include <liftoff/contact/active_set_iteration.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
-#include <liftoff/run/checkpoint.h>
 #include <liftoff/time/plate_state.h>
 
 #include <string>

@@ -2,11 +2,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/point_functional.h>
 #include <liftoff/output/output.h>
-#include <liftoff/run/checkpoint.h>
 
 #include <fstream>
 #include <string>

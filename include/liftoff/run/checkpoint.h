@@ -3,12 +3,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <boost/archive/binary_iarchive.hpp>
-#include <boost/archive/binary_oarchive.hpp>
-#include <boost/serialization/string.hpp>
-#include <boost/serialization/utility.hpp>
-#include <boost/serialization/vector.hpp>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/linear_algebra.h>
 
 #include <chrono>
@@ -19,48 +15,6 @@
 namespace liftoff
 {
   using namespace dealii;
-
-  /// What each part of the state writes itself to and reads itself from.
-  using OutputArchive = boost::archive::binary_oarchive;
-  using InputArchive  = boost::archive::binary_iarchive;
-
-  /// This rank's entries of a distributed vector, bit for bit.
-  void
-  save_vector(OutputArchive &archive, const LA::MPI::Vector &vector);
-  void
-  load_vector(InputArchive &archive, LA::MPI::Vector &vector);
-
-  /// save_vector() or load_vector(), as the archive goes: one list of items
-  /// in a serialize() serves both directions.
-  template <class Archive>
-  void
-  serialize_entries(Archive &archive, LA::MPI::Vector &vector)
-  {
-    if constexpr (Archive::is_saving::value)
-      save_vector(archive, vector);
-    else
-      load_vector(archive, vector);
-  }
-
-  /// part.save(archive) or part.load(archive), as the archive goes, for
-  /// the parts whose loading checks what it reads.
-  template <class Archive, class Part>
-  void
-  transfer(Archive &archive, Part &part)
-  {
-    if constexpr (Archive::is_saving::value)
-      part.save(archive);
-    else
-      part.load(archive);
-  }
-
-  /// The values of this rank's rows of a matrix, bit for bit, and back;
-  /// setting them requires the same sparsity pattern and row distribution.
-  std::vector<double>
-  matrix_values(const LA::MPI::SparseMatrix &A);
-  void
-  set_matrix_values(const std::vector<double> &values,
-                    LA::MPI::SparseMatrix     &A);
 
   /**
    * The files of a checkpoint and when to write one. A checkpoint is a

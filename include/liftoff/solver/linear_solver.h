@@ -5,9 +5,9 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <liftoff/base/section_timer.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/discretization.h>
-#include <liftoff/run/checkpoint.h>
 
 #include <chrono>
 #include <functional>

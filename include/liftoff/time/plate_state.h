@@ -1,8 +1,8 @@
 #pragma once
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/discretization.h>
-#include <liftoff/run/checkpoint.h>
 #include <liftoff/time/energy_balance.h>
 
 namespace liftoff
