@@ -79,8 +79,8 @@ namespace liftoff
       catch (const std::exception &)
         {
           AssertThrow(false,
-                      ExcMessage("Cannot read the scene file " + name
-                                 + named_by + "."));
+                      ExcMessage("Cannot read the scene file " + name + named_by
+                                 + "."));
         }
       return without_byte_order_mark(text);
     }
@@ -99,9 +99,9 @@ namespace liftoff
       const std::string     file =
         chain_names.empty() ? "standard input" : chain_names.back();
       const std::filesystem::path folder =
-        chain_names.empty() ?
-          std::filesystem::path() :
-          std::filesystem::path(chain_names.back()).parent_path();
+        chain_names.empty()
+          ? std::filesystem::path()
+          : std::filesystem::path(chain_names.back()).parent_path();
       std::istringstream       lines(text);
       std::string              line, joined;
       std::vector<std::string> group; // the lines of one continued line
@@ -262,27 +262,27 @@ namespace liftoff
     for (std::size_t at = message.find(key); at != std::string::npos;
          at             = message.find(key, from))
       {
-        const std::size_t number_end = message.find('>', at);
-        const std::string number =
-          message.substr(at + key.size(), number_end - at - key.size());
-        result += message.substr(from, at - from);
-        from = at + key.size();
-        if (number.empty()
+                    const std::size_t number_end = message.find('>', at);
+                    const std::string number =
+                      message.substr(at + key.size(), number_end - at - key.size());
+                    result += message.substr(from, at - from);
+                    from = at + key.size();
+                    if (number.empty()
             || number.find_first_not_of("0123456789") != std::string::npos
             || message.compare(number_end, of.size(), of) != 0)
           {
-            result += key;
-            continue;
+                        result += key;
+                        continue;
           }
         const std::size_t line = std::stoul(number);
-        if (line == 0 || line > origins.size())
+                    if (line == 0 || line > origins.size())
           {
-            result += key;
-            continue;
+                        result += key;
+                        continue;
           }
-        result += key + std::to_string(origins[line - 1].second)
-                  + "> of file <" + origins[line - 1].first + ">";
-        from = number_end + of.size();
+        result += key + std::to_string(origins[line - 1].second) + "> of file <"
+                              + origins[line - 1].first + ">";
+                    from = number_end + of.size();
       }
     return result + message.substr(from);
   }

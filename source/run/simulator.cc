@@ -49,6 +49,16 @@ namespace liftoff
       return "did not settle in " + std::to_string(max_iterations)
              + " iterations";
     }
+
+    /// "a; or b; or c.": the likely causes of a failure, most likely first.
+    std::string
+    as_alternatives(const std::vector<std::string> &causes)
+    {
+      std::string text;
+      for (const auto &cause : causes)
+        text += (text.empty() ? "" : "; or ") + cause;
+      return text + ".";
+    }
   } // namespace
 
   Simulator::Simulator(const MPI_Comm comm,
@@ -463,10 +473,7 @@ namespace liftoff
         "a parameter near the end of its range (Foundation/Stiffness, Shear "
         "modulus, Damping) or a mesh too coarse for the contact front; "
         "compare a run with half the Time step");
-    std::string text;
-    for (const auto &cause : causes)
-      text += (text.empty() ? "" : "; or ") + cause;
-    return text + ".";
+    return as_alternatives(causes);
   }
 
 
@@ -493,10 +500,7 @@ namespace liftoff
         "a very small Foundation/Stiffness under a thin plate (Plate/Thickness "
         "ratio) with free edges; use a stiffer foundation, support an edge "
         "or run a dynamic analysis");
-    std::string text;
-    for (const auto &cause : causes)
-      text += (text.empty() ? "" : "; or ") + cause;
-    return text + ".";
+    return as_alternatives(causes);
   }
 
 
