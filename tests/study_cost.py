@@ -136,19 +136,25 @@ def check_cost(tool, liftoff, work):
     # The ties from study.csv: start-up is process less own wall time, its
     # spread the noise; every run but the reference reaches 50 %.
     reference = re.search(r"reference run \((\S+)\)", md).group(1)
-    others, spread = -1, float("nan")
+    # study.csv rounds to 1e-3 s: a run whose cost lies within that of the
+    # bound may be counted either way, so the count must lie between the
+    # runs surely within and the runs possibly within.
+    surely, possibly, spread = -1, -1, float("nan")
     if "process_wall" in row and "run_wall" in row:
         overhead = [float(r["process_wall"]) - float(r["run_wall"])
                     for r in rows]
         spread = max(overhead) - min(overhead)
-        others = sum(float(r["process_wall"]) <= cost + spread + 1e-3
-                     for r in rows if r["run"] not in (label, reference))
-    check(ties is not None and int(ties.group(1)) == others
-          and abs(float(ties.group(2)) - spread) <= 1e-3,
+        others = [float(r["process_wall"]) - (cost + spread)
+                  for r in rows if r["run"] not in (label, reference)]
+        surely = sum(excess <= -3e-3 for excess in others)
+        possibly = sum(excess <= 3e-3 for excess in others)
+    check(ties is not None and surely <= int(ties.group(1)) <= possibly
+          and abs(float(ties.group(2)) - spread) <= 3e-3,
           "study.md counts %s other runs within the start-up's spread %s s "
-          "of the cheapest; from study.csv: %d within %.3f s"
-          % (ties.group(1) if ties else "no", ties.group(2) if ties else "?",
-             others, spread))
+          "of the cheapest; from study.csv: %d surely and %d possibly "
+          "within %.3f s" % (ties.group(1) if ties else "no",
+                             ties.group(2) if ties else "?", surely,
+                             possibly, spread))
 
 
 def check_folder(tool, liftoff, work):
