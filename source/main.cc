@@ -8,6 +8,7 @@
 #include <liftoff/run/stop_signal.h>
 #include <liftoff/version.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -86,76 +87,186 @@ namespace
     scene.origins = dealii::Utilities::MPI::broadcast(comm, scene.origins, 0);
     return scene;
   }
+
+  // Open MPI started without a launcher (a singleton) otherwise brings up
+  // its UCX network layer and a helper daemon: 0.2 to 0.4 s of every run's
+  // start on the 2-core machine (benchmarks/start_up.sh), for one process
+  // that talks to nobody. A launcher's processes keep what it chose, and
+  // a user's own setting of these variables wins.
+  void
+  prefer_local_transport_when_alone()
+  {
+#ifdef OPEN_MPI
+    for (const char *launcher_mark :
+         {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      if (std::getenv(launcher_mark) != nullptr)
+        return;
+    setenv("OMPI_MCA_pml", "ob1", 0);
+    setenv("OMPI_MCA_btl", "self", 0);
+    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+#endif
+  }
+
+
+  // Under mpirun every rank gets the option; one answers. Read from the
+  // launcher's environment, as MPI is not started for these options.
+  bool
+  is_first_process()
+  {
+    for (const char *rank : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+      if (const char *value = std::getenv(rank))
+        return std::string(value) == "0";
+    return true;
+  }
+
+
+  // --help, --version and --parameters only print: they start no MPI, which
+  // is most of their time (benchmarks/start_up.sh). Returns whether the
+  // option was one of them.
+  bool
+  answered_without_mpi(const int argc, char **argv)
+  {
+    const std::string  option = argc == 2 ? argv[1] : "";
+    std::ostringstream answer;
+    if (option == "--help" || option == "-h")
+      answer << usage << '\n';
+    else if (option == "--version")
+      answer << "liftoff " << LIFTOFF_VERSION << " (git " << LIFTOFF_GIT_COMMIT
+             << "), deal.II " << DEAL_II_PACKAGE_VERSION << '\n';
+    else if (option == "--parameters")
+      {
+        dealii::ParameterHandler prm;
+        liftoff::Simulator::declare_parameters(prm);
+        prm.print_parameters(answer, dealii::ParameterHandler::PRM);
+      }
+    else
+      return false;
+    if (is_first_process())
+      std::cout << answer.str() << std::flush;
+    return true;
+  }
+
+
+  struct CommandLine
+  {
+    liftoff::Simulator::Start start = liftoff::Simulator::Start::fresh;
+    bool                      quiet = false;
+    std::string               scene_name;
+    /// Empty if the command line is valid.
+    std::string error;
+  };
+
+
+  CommandLine
+  parse_command_line(const int argc, char **argv)
+  {
+    using Start = liftoff::Simulator::Start;
+    CommandLine              command;
+    std::vector<std::string> scenes;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string argument = argv[i];
+        if (argument == "--resume" || argument == "--overwrite")
+          {
+            const Start asked =
+              argument == "--resume" ? Start::resume : Start::overwrite;
+            if (command.start != Start::fresh && command.start != asked)
+              command.error = "--resume continues the results in the output "
+                              "directory and --overwrite removes them: give "
+                              "one of them, not both.";
+            command.start = asked;
+          }
+        else if (argument == "--quiet" || argument == "-q")
+          command.quiet = true;
+        else if (argument.size() > 1 && argument[0] == '-')
+          command.error = "unknown option " + argument + ".";
+        else
+          scenes.push_back(argument);
+      }
+    if (command.error.empty() && scenes.size() != 1)
+      command.error = scenes.empty() ? "no scene file given."
+                                     : "one scene file at a time, not "
+                                         + std::to_string(scenes.size()) + ".";
+    if (command.error.empty())
+      command.scene_name = scenes.front();
+    return command;
+  }
+
+
+  // One line on standard error for the exception that ended the run; the
+  // exit code.
+  int
+  report_failure(const std::exception_ptr &failure,
+                 const std::string        &scene_name,
+                 const bool                is_adaptive,
+                 const int                 stopping_signal,
+                 const MPI_Comm            comm)
+  {
+    const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    try
+      {
+        std::rethrow_exception(failure);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        // A solver failure is not the user's message but is mostly caused
+        // by the scene: say what to look at.
+        const std::string hint =
+          std::string(e.get_exc_name()).find("Trilinos") != std::string::npos
+            ? " (the linear solver failed: the system matrix is singular or "
+              "too ill-conditioned for double precision; check Plate, "
+              "Foundation/Stiffness, the supports and Time integration/Time "
+              "step)"
+            : "";
+        if (is_root)
+          std::cerr << "liftoff: error in " << scene_name << ":\n    "
+                    << one_line(liftoff::message_of(e)) << hint << std::endl;
+      }
+    catch (const std::bad_alloc &)
+      {
+        // Only rank 0 reports, and a rank that ran out may not be rank 0:
+        // every rank that did says so, in one line.
+        std::cerr << "liftoff: error in " << scene_name
+                  << ": out of memory (std::bad_alloc) on rank "
+                  << dealii::Utilities::MPI::this_mpi_process(comm)
+                  << "; the scene needs more memory than this machine or its "
+                     "limits give "
+                  << (is_adaptive
+                        ? "as its adaptive mesh grows (see Mesh "
+                          "refinement/Maximum number of cells and Maximum "
+                          "level)."
+                        : "(see Discretization/Cells along x, y, Global "
+                          "refinements, Polynomial degree).")
+                  << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        if (is_root)
+          std::cerr << "liftoff: error in " << scene_name << ":\n    "
+                    << one_line(e.what()) << std::endl;
+      }
+    return stopping_signal != 0 ? 128 + stopping_signal : 1;
+  }
 } // namespace
 
 
 int
 main(int argc, char **argv)
 {
+  if (answered_without_mpi(argc, argv))
+    return 0;
+  prefer_local_transport_when_alone();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
-  const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
-  const std::string option = argc == 2 ? argv[1] : "";
-  if (option == "--help" || option == "-h")
+  const CommandLine command = parse_command_line(argc, argv);
+  if (!command.error.empty())
     {
-      if (is_root)
-        std::cout << usage << std::endl;
-      return 0;
-    }
-  if (option == "--version")
-    {
-      if (is_root)
-        std::cout << "liftoff " << LIFTOFF_VERSION << " (git "
-                  << LIFTOFF_GIT_COMMIT << "), deal.II "
-                  << DEAL_II_PACKAGE_VERSION << std::endl;
-      return 0;
-    }
-  if (option == "--parameters")
-    {
-      dealii::ParameterHandler prm;
-      liftoff::Simulator::declare_parameters(prm);
-      if (is_root)
-        prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
-      return 0;
-    }
-  using Start                    = liftoff::Simulator::Start;
-  Start                    start = Start::fresh;
-  bool                     quiet = false;
-  std::string              usage_error;
-  std::vector<std::string> scenes;
-  for (int i = 1; i < argc; ++i)
-    {
-      const std::string argument = argv[i];
-      if (argument == "--resume" || argument == "--overwrite")
-        {
-          const Start asked =
-            argument == "--resume" ? Start::resume : Start::overwrite;
-          if (start != Start::fresh && start != asked)
-            usage_error = "--resume continues the results in the output "
-                          "directory and --overwrite removes them: give one "
-                          "of them, not both.";
-          start = asked;
-        }
-      else if (argument == "--quiet" || argument == "-q")
-        quiet = true;
-      else if (argument.size() > 1 && argument[0] == '-')
-        usage_error = "unknown option " + argument + ".";
-      else
-        scenes.push_back(argument);
-    }
-  if (usage_error.empty() && scenes.size() != 1)
-    usage_error = scenes.empty() ? "no scene file given."
-                                 : "one scene file at a time, not "
-                                     + std::to_string(scenes.size()) + ".";
-  if (!usage_error.empty())
-    {
-      if (is_root)
-        std::cerr << "liftoff: " << usage_error << "\n\n" << usage << std::endl;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cerr << "liftoff: " << command.error << "\n\n"
+                  << usage << std::endl;
       return 2;
     }
-
-  const std::string scene_name = scenes.front();
 
   // SIGINT / SIGTERM end the run after the current step with complete
   // files and the exit code 128 + signal.
@@ -171,16 +282,17 @@ main(int argc, char **argv)
   bool is_adaptive = false;
   {
     dealii::ParameterHandler prm;
-    liftoff::Simulator       simulator(comm, true, !quiet);
+    liftoff::Simulator       simulator(comm, true, !command.quiet);
     try
       {
         liftoff::Simulator::declare_parameters(prm);
-        read_scene(scene_name, comm).parse_into(prm, scene_name);
+        read_scene(command.scene_name, comm)
+          .parse_into(prm, command.scene_name);
         simulator.parse_parameters(prm);
         prm.enter_subsection("Mesh refinement");
         is_adaptive = prm.get_bool("Adaptive");
         prm.leave_subsection();
-        simulator.run(prm, start);
+        simulator.run(prm, command.start);
       }
     catch (...)
       {
@@ -190,48 +302,6 @@ main(int argc, char **argv)
   }
   if (!failure)
     return 0;
-
-  try
-    {
-      std::rethrow_exception(failure);
-    }
-  catch (const dealii::ExceptionBase &e)
-    {
-      // A solver failure is not the user's message but is mostly caused by
-      // the scene: say what to look at.
-      const std::string hint =
-        std::string(e.get_exc_name()).find("Trilinos") != std::string::npos
-          ? " (the linear solver failed: the system matrix is singular or too "
-            "ill-conditioned for double precision; check Plate, "
-            "Foundation/Stiffness, the supports and Time integration/Time "
-            "step)"
-          : "";
-      if (is_root)
-        std::cerr << "liftoff: error in " << scene_name << ":\n    "
-                  << one_line(liftoff::message_of(e)) << hint << std::endl;
-    }
-  catch (const std::bad_alloc &)
-    {
-      // Only rank 0 reports, and a rank that ran out may not be rank 0:
-      // every rank that did says so, in one line.
-      std::cerr << "liftoff: error in " << scene_name
-                << ": out of memory (std::bad_alloc) on rank "
-                << dealii::Utilities::MPI::this_mpi_process(comm)
-                << "; the scene needs more memory than this machine or its "
-                   "limits give "
-                << (is_adaptive
-                      ? "as its adaptive mesh grows (see Mesh "
-                        "refinement/Maximum number of cells and Maximum "
-                        "level)."
-                      : "(see Discretization/Cells along x, y, Global "
-                        "refinements, Polynomial degree).")
-                << std::endl;
-    }
-  catch (const std::exception &e)
-    {
-      if (is_root)
-        std::cerr << "liftoff: error in " << scene_name << ":\n    "
-                  << one_line(e.what()) << std::endl;
-    }
-  return stopping_signal != 0 ? 128 + stopping_signal : 1;
+  return report_failure(
+    failure, command.scene_name, is_adaptive, stopping_signal, comm);
 }

@@ -4,6 +4,7 @@
 # (asked of git here, independently of the build), or "unknown" for a
 # source tree outside git (cmake/version.cmake run on a copy, as for a
 # tarball); a wrong option still ends in the usage on stderr and exit 2.
+# The options that only print start no MPI, and answer once under mpirun.
 #   command_line.sh LIFTOFF SOURCE_DIR
 set -u
 liftoff=$1
@@ -30,6 +31,20 @@ else
 fi
 [ "$status" -eq 0 ] && [ -n "$version" ] && [[ "$printed" == "$expected"* ]] && [ ! -s stderr.txt ]
 check $? "--version: exit $status, '$printed' starts with '$expected'"
+
+# The options that only print start no MPI (most of their time): with a
+# transport that does not exist, which MPI_Init refuses, they still answer.
+for option in --help --version --parameters; do
+  OMPI_MCA_pml=no_such_transport "$liftoff" "$option" >stdout.txt 2>stderr.txt
+  status=$?
+  [ "$status" -eq 0 ] && [ -s stdout.txt ] && [ ! -s stderr.txt ]
+  check $? "$option starts no MPI: exit $status with OMPI_MCA_pml=no_such_transport"
+done
+# Under mpirun every rank gets the option; one answers.
+mpirun --allow-run-as-root --oversubscribe -np 2 "$liftoff" --version >stdout.txt 2>stderr.txt
+status=$?
+[ "$status" -eq 0 ] && [ "$(wc -l <stdout.txt)" -eq 1 ]
+check $? "mpirun -np 2 liftoff --version: exit $status, $(wc -l <stdout.txt) line(s)"
 
 mkdir tarball
 cmake -DSOURCE_DIR="$PWD/tarball" -DOUTPUT="$PWD/version.h" -DVERSION=9.9.9 \
