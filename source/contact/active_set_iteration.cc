@@ -87,31 +87,31 @@ namespace liftoff
       , foundation(foundation)
       , timer(timer)
       , solver(timer)
+  {}
+
+
+  void
+  ActiveSetIteration::multiply_by_change(const LA::MPI::Vector &src,
+                                         LA::MPI::Vector       &dst,
+                                         const Since            since)
   {
-    solver.rebuild_matrix     = [this]() { rebuild_matrix(); };
-    solver.multiply_by_change = [this](const LA::MPI::Vector    &src,
-                                       LA::MPI::Vector          &dst,
-                                       const LinearSolver::Since since) {
-      if (change_source.size() != src.size()
-          || change_source.locally_owned_elements()
-               != src.locally_owned_elements())
-        {
-          this->discretization.reinit_ghosted_vector(change_source);
-          change_owned.reinit(src, true);
-        }
-      // CG's vectors need not satisfy the constraints; the springs act on
-      // the w they stand for (hanging: the masters', supported: zero).
-      copy_values(src, change_owned);
-      ghosts.distribute(this->discretization.constraints,
-                        change_owned,
-                        change_source);
-      dst = 0;
-      this->foundation.add_change_product(
-        since == LinearSolver::Since::factorisation ? factorised_status
-                                                    : solved_status,
-        change_source,
-        dst);
-    };
+    if (change_source.size() != src.size()
+        || change_source.locally_owned_elements()
+             != src.locally_owned_elements())
+      {
+        discretization.reinit_ghosted_vector(change_source);
+        change_owned.reinit(src, true);
+      }
+    // CG's vectors need not satisfy the constraints; the springs act on
+    // the w they stand for (hanging: the masters', supported: zero).
+    copy_values(src, change_owned);
+    ghosts.distribute(discretization.constraints, change_owned, change_source);
+    dst = 0;
+    foundation.add_change_product(since == Since::factorisation
+                                    ? factorised_status
+                                    : solved_status,
+                                  change_source,
+                                  dst);
   }
 
 
@@ -134,7 +134,7 @@ namespace liftoff
     discretization.reinit_matrix(matrix);
     write_base(matrix);
     foundation.add_to_matrix(factorised_status, matrix);
-    solver.load(archive, matrix, discretization);
+    solver.load(archive, matrix, discretization, this);
     set_matrix_values(current, matrix);
   }
 
@@ -151,7 +151,7 @@ namespace liftoff
       foundation.add_to_matrix(matrix);
       factorised_status = foundation.status_in_matrix();
     }
-    solver.prepare(matrix, discretization);
+    solver.prepare(matrix, discretization, this);
   }
 
 

@@ -147,9 +147,11 @@ namespace liftoff
 
   void
   LinearSolver::prepare(const LA::MPI::SparseMatrix &A,
-                        const Discretization        &disc)
+                        const Discretization        &disc,
+                        ChangingMatrix              *changes_of_A)
   {
     SectionTimer::Scope t(timer, "factorisation");
+    changes        = changes_of_A;
     matrix         = &A;
     discretization = &disc;
     ++n_preparations;
@@ -268,6 +270,63 @@ namespace liftoff
   }
 
 
+  void
+  LinearSolver::reinit_cg_vectors(const LA::MPI::Vector &b)
+  {
+    for (LA::MPI::Vector *v : {&r, &z, &p, &q, &change_product})
+      if (v->size() != b.size()
+          || v->locally_owned_elements() != b.locally_owned_elements())
+        {
+          v->reinit(b, true);
+          residual_is_current = false;
+        }
+  }
+
+
+  void
+  LinearSolver::whole_residual(const LA::MPI::Vector &x,
+                               const LA::MPI::Vector &b)
+  {
+    matrix->vmult(r, x);
+    ++n_products;
+    r.sadd(-1.0, 1.0, b);
+  }
+
+
+  void
+  LinearSolver::derived_product(const double beta)
+  {
+    changes->multiply_by_change(z,
+                                change_product,
+                                ChangingMatrix::Since::factorisation);
+    if (beta == 0.0)
+      q = r;
+    else
+      q.sadd(beta, 1.0, r);
+    q += change_product;
+  }
+
+
+  void
+  LinearSolver::whole_product(const bool   measures_substitution,
+                              const double residual)
+  {
+    matrix->vmult(q, p);
+    ++n_products;
+    if (measures_substitution)
+      {
+        // q = A z here: its distance from r + (A - A_f) z is A_f z - r, the
+        // substitution's residual.
+        changes->multiply_by_change(z,
+                                    change_product,
+                                    ChangingMatrix::Since::factorisation);
+        change_product += r;
+        change_product -= q;
+        substitution_error = change_product.l2_norm() / residual;
+      }
+  }
+
+
   unsigned int
   LinearSolver::conjugate_gradients(LA::MPI::Vector       &x,
                                     const LA::MPI::Vector &b,
@@ -292,30 +351,21 @@ namespace liftoff
     // whole products if the check fails.
     const double b_norm = b.l2_norm();
     const double target = std::max(relative_tolerance * b_norm, 1e-300);
-    for (LA::MPI::Vector *v : {&r, &z, &p, &q, &change_product})
-      if (v->size() != b.size()
-          || v->locally_owned_elements() != b.locally_owned_elements())
-        {
-          v->reinit(b, true);
-          residual_is_current = false;
-        }
-    const bool can_use_change = type == Type::direct && multiply_by_change;
+    reinit_cg_vectors(b);
+    const bool can_use_change = type == Type::direct && changes != nullptr;
     bool       uses_change    = can_use_change && substitution_error >= 0
                        && substitution_error <= 0.1 * tolerance;
-    const auto whole_residual = [&]() {
-      matrix->vmult(r, x);
-      ++n_products;
-      r.sadd(-1.0, 1.0, b);
-    };
     bool is_derived = false;
     if (continues && uses_change && residual_is_current)
       {
-        multiply_by_change(x, change_product, Since::last_solve);
+        changes->multiply_by_change(x,
+                                    change_product,
+                                    ChangingMatrix::Since::last_solve);
         r -= change_product;
         is_derived = true;
       }
     else
-      whole_residual();
+      whole_residual(x, b);
     residual_is_current   = false;
     double       residual = r.l2_norm();
     double       rz_old   = 0;
@@ -343,28 +393,13 @@ namespace liftoff
               p.sadd(beta, 1.0, z);
             if (uses_change)
               {
-                multiply_by_change(z, change_product, Since::factorisation);
-                if (beta == 0.0)
-                  q = r;
-                else
-                  q.sadd(beta, 1.0, r);
-                q += change_product;
+                derived_product(beta);
                 is_derived = true;
               }
             else
-              {
-                matrix->vmult(q, p);
-                ++n_products;
-                if (can_use_change && substitution_error < 0 && beta == 0.0)
-                  {
-                    // q = A z here: its distance from r + (A - A_f) z is
-                    // A_f z - r, the substitution's residual.
-                    multiply_by_change(z, change_product, Since::factorisation);
-                    change_product += r;
-                    change_product -= q;
-                    substitution_error = change_product.l2_norm() / residual;
-                  }
-              }
+              whole_product(can_use_change && substitution_error < 0
+                              && beta == 0.0,
+                            residual);
             const double alpha = rz / (p * q);
             x.add(alpha, p);
             r.add(-alpha, q);
@@ -373,7 +408,7 @@ namespace liftoff
           }
         if (!is_derived || residual > tolerance * b_norm)
           break;
-        whole_residual();
+        whole_residual(x, b);
         residual   = r.l2_norm();
         is_derived = false;
         if (residual <= target)
@@ -455,9 +490,9 @@ namespace liftoff
   void
   LinearSolver::refactorise()
   {
-    if (rebuild_matrix)
-      rebuild_matrix();
-    prepare(*matrix, *discretization);
+    if (changes != nullptr)
+      changes->rebuild_matrix();
+    prepare(*matrix, *discretization, changes);
   }
 
 
@@ -473,12 +508,13 @@ namespace liftoff
   void
   LinearSolver::load(InputArchive          &archive,
                      LA::MPI::SparseMatrix &A,
-                     const Discretization  &disc)
+                     const Discretization  &disc,
+                     ChangingMatrix        *changes_of_A)
   {
     bool   exact  = false;
     double excess = 0, error = -1;
     archive >> exact >> excess >> error;
-    prepare(A, disc);
+    prepare(A, disc, changes_of_A);
     factor_is_exact    = exact;
     cg_excess_flops    = excess;
     substitution_error = error;

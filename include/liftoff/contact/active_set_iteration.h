@@ -27,7 +27,7 @@ namespace liftoff
    * not move costs one substitution.
    * The LinearSolver it owns reads its own parameters (`Linear solver`).
    */
-  class ActiveSetIteration
+  class ActiveSetIteration : private ChangingMatrix
   {
   public:
     struct Result
@@ -144,7 +144,13 @@ namespace liftoff
     /// factorisation: the factor is then of a matrix that can be built
     /// again from B and S).
     void
-    rebuild_matrix();
+    rebuild_matrix() override;
+    /// The springs whose status changed since the factorisation or the last
+    /// solve, times src (constraints applied to src first).
+    void
+    multiply_by_change(const LA::MPI::Vector &src,
+                       LA::MPI::Vector       &dst,
+                       const Since            since) override;
 
     /// The right-hand side of the system for the current set: `rhs`, plus
     /// the springs' push on the gap f_g(S) if the foundation has one (the

@@ -10,7 +10,6 @@
 #include <liftoff/fem/discretization.h>
 
 #include <chrono>
-#include <functional>
 #include <memory>
 
 namespace liftoff
@@ -19,6 +18,42 @@ namespace liftoff
 
   class CholeskyFactor;
   class MumpsCholeskyFactor;
+
+  /**
+   * What LinearSolver needs from the owner of a matrix that the owner
+   * changes in place between solves (ActiveSetIteration: the springs whose
+   * status flipped). Given to LinearSolver::prepare() with the matrix.
+   */
+  class ChangingMatrix
+  {
+  public:
+    /// Since when multiply_by_change() takes the change of the matrix.
+    enum class Since
+    {
+      factorisation,
+      last_solve
+    };
+
+    virtual ~ChangingMatrix() = default;
+
+    /// dst = (A - A_s) src, A the matrix as it is and A_s the one last
+    /// factorised or the one of the last solve. With it, CG on a changed
+    /// matrix forms products with the whole matrix once or twice per step
+    /// of the active set instead of once per iteration and solve
+    /// (LinearSolver::conjugate_gradients()).
+    virtual void
+    multiply_by_change(const LA::MPI::Vector &src,
+                       LA::MPI::Vector       &dst,
+                       const Since            since) = 0;
+
+    /// Write the matrix anew from the parts it was built from, before each
+    /// later factorisation of it. Every factor is then of a matrix that its
+    /// owner can build again, and a checkpoint keeps those parts instead of
+    /// a copy of the values (L: 218 MB); the matrix as changed in place
+    /// holds other round-off than a fresh build.
+    virtual void
+    rebuild_matrix() = 0;
+  };
 
   /**
    * Solves A x = b for a matrix that changes a little between solves: the
@@ -79,9 +114,14 @@ namespace liftoff
     explicit LinearSolver(SectionTimer &timer);
     ~LinearSolver();
 
-    /// Factorise A, or build its preconditioner. A must outlive the solves.
+    /// Factorise A, or build its preconditioner. A and `changes` must
+    /// outlive the solves. With `changes`, A may change in place between
+    /// solves (matrix_changed()); without, it is factorised as it is and a
+    /// changed A is solved by CG with whole-matrix products.
     void
-    prepare(const LA::MPI::SparseMatrix &A, const Discretization &disc);
+    prepare(const LA::MPI::SparseMatrix &A,
+            const Discretization        &disc,
+            ChangingMatrix              *changes = nullptr);
 
     /// Drop the factor and preconditioner: MUMPS's refers to the matrix it
     /// was built from, which a new mesh rebuilds.
@@ -104,9 +144,9 @@ namespace liftoff
     /// Solve A x = b with the matrix given to prepare(); x holds the
     /// initial guess on entry. `continues`: x and b are those the last
     /// solve returned and was given, unchanged, and A has changed since
-    /// only as multiply_by_change() describes; then CG starts from the last
-    /// residual instead of a product with A. Returns the CG iterations (0
-    /// for a plain substitution).
+    /// only as ChangingMatrix::multiply_by_change() describes; then CG starts
+    /// from the last residual instead of a product with A. Returns the CG
+    /// iterations (0 for a plain substitution).
     unsigned int
     solve(LA::MPI::Vector       &x,
           const LA::MPI::Vector &b,
@@ -152,34 +192,10 @@ namespace liftoff
     /// by a product with the matrix (conjugate_gradients()).
     unsigned long n_failed_checks = 0;
 
-    /// Since when multiply_by_change() takes the change of the matrix.
-    enum class Since
-    {
-      factorisation,
-      last_solve
-    };
-    /// dst = (A - A_s) src, A the matrix as it is and A_s the one last
-    /// factorised or the one of the last solve. With it, CG on a changed
-    /// matrix forms products with the whole matrix once or twice per step
-    /// of the active set instead of once per iteration and solve
-    /// (conjugate_gradients()). ActiveSetIteration: the change of the
-    /// springs' status.
-    std::function<
-      void(const LA::MPI::Vector &src, LA::MPI::Vector &dst, Since since)>
-      multiply_by_change;
-
     /// Apply the stored factor's inverse: dst = A_f^{-1} src. This makes
     /// the solver the preconditioner of its own CG.
     void
     vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const;
-
-    /// Writes the matrix given to prepare() anew from the parts it was
-    /// built from, before each later factorisation of it. Every factor is
-    /// then of a matrix that its owner can build again, and a checkpoint
-    /// keeps those parts instead of a copy of the values (L: 218 MB); the
-    /// matrix as changed in place holds other round-off than a fresh build.
-    /// Without it the matrix is factorised as it is.
-    std::function<void()> rebuild_matrix;
 
     /// What it takes to continue with the same factor, besides the matrix
     /// it was built from: whether the matrix still equals that one, and
@@ -191,7 +207,8 @@ namespace liftoff
     void
     load(InputArchive          &archive,
          LA::MPI::SparseMatrix &A,
-         const Discretization  &disc);
+         const Discretization  &disc,
+         ChangingMatrix        *changes = nullptr);
 
   private:
     Type         type                      = Type::direct;
@@ -205,6 +222,7 @@ namespace liftoff
     SectionTimer                &timer;
     const Discretization        *discretization = nullptr;
     const LA::MPI::SparseMatrix *matrix         = nullptr;
+    ChangingMatrix              *changes        = nullptr;
     /// The factor belongs to the matrix as it is now.
     bool factor_is_exact = false;
     /// See last_solve_met_tolerance().
@@ -230,10 +248,25 @@ namespace liftoff
     void
     report_fallback(const std::string &factorisation);
 
-    /// Factorise the matrix of prepare() again, as rebuild_matrix() writes
-    /// it.
+    /// Factorise the matrix of prepare() again, as
+    /// ChangingMatrix::rebuild_matrix() writes it.
     void
     refactorise();
+    /// CG's vectors in the layout of b (a new mesh changes it).
+    void
+    reinit_cg_vectors(const LA::MPI::Vector &b);
+    /// r = b - A x with a product with the whole matrix.
+    void
+    whole_residual(const LA::MPI::Vector &x, const LA::MPI::Vector &b);
+    /// q = A p for p = z + beta p_old, from r, q_old and the change of the
+    /// matrix since the factorisation: A z = r + (A - A_f) z.
+    void
+    derived_product(const double beta);
+    /// q = A p with the whole matrix; with `measures_substitution` (p = z)
+    /// also the substitution's error |A_f z - r| / |r|, r of norm
+    /// `residual`.
+    void
+    whole_product(const bool measures_substitution, const double residual);
     /// CG to the tolerance in at most `max_steps` iterations; throws
     /// SolverControl::NoConvergence otherwise.
     unsigned int
