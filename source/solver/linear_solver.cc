@@ -327,6 +327,20 @@ namespace liftoff
   }
 
 
+  // Preconditioned CG, as deal.II's SolverCG, with products with the whole
+  // matrix only where they are needed. With the stored factor of A_f as
+  // preconditioner, z = A_f^{-1} r, so A z = r + (A - A_f) z, and with p =
+  // z + beta p_old, A p = r + (A - A_f) z + beta A p_old: a product with the
+  // change of the springs since the factorisation, a few cells, instead of
+  // one with A (M: 7 ms). And a solve that continues the previous one (same
+  // x and b, A changed by the springs since) starts from its residual:
+  // b - A x = r_old - (A - A_old) x. Both hold as far as the substitution
+  // does; its error |A_f z - r| / |r| is measured in the first iteration
+  // after a factorisation, where both products are formed, and they are
+  // used only if it is below a tenth of `Tolerance`. A solution that such a
+  // solve claims to meet `Tolerance` is checked with a product with A (M:
+  // the true residual was 1e-14 where the recursive one was 1e-17), and CG
+  // goes on with whole products if the check fails.
   unsigned int
   LinearSolver::conjugate_gradients(LA::MPI::Vector       &x,
                                     const LA::MPI::Vector &b,
@@ -334,96 +348,88 @@ namespace liftoff
                                     const double           relative_tolerance,
                                     const bool             continues)
   {
-    // Preconditioned CG, as deal.II's SolverCG, with products with the
-    // whole matrix only where they are needed. With the stored factor of
-    // A_f as preconditioner, z = A_f^{-1} r, so A z = r + (A - A_f) z, and
-    // with p = z + beta p_old, A p = r + (A - A_f) z + beta A p_old: a
-    // product with the change of the springs since the factorisation, a
-    // few cells, instead of one with A (M: 7 ms). And a solve that
-    // continues the previous one (same x and b, A changed by the springs
-    // since) starts from its residual: b - A x = r_old - (A - A_old) x.
-    // Both hold as far as the substitution does; its error |A_f z - r| /
-    // |r| is measured in the first iteration after a factorisation, where
-    // both products are formed, and they are used only if it is below a
-    // tenth of `Tolerance`. A solution that such a solve claims to meet
-    // `Tolerance` is checked with a product with A (M: the true residual
-    // was 1e-14 where the recursive one was 1e-17), and CG goes on with
-    // whole products if the check fails.
     const double b_norm = b.l2_norm();
     const double target = std::max(relative_tolerance * b_norm, 1e-300);
     reinit_cg_vectors(b);
-    const bool can_use_change = type == Type::direct && changes != nullptr;
-    bool       uses_change    = can_use_change && substitution_error >= 0
-                       && substitution_error <= 0.1 * tolerance;
-    bool is_derived = false;
-    if (continues && uses_change && residual_is_current)
+    CGProgress cg;
+    cg.can_use_change = type == Type::direct && changes != nullptr;
+    cg.uses_change    = cg.can_use_change && substitution_error >= 0
+                     && substitution_error <= 0.1 * tolerance;
+    if (continues && cg.uses_change && residual_is_current)
       {
         changes->multiply_by_change(x,
                                     change_product,
                                     ChangingMatrix::Since::last_solve);
         r -= change_product;
-        is_derived = true;
+        cg.is_derived = true;
       }
     else
       whole_residual(x, b);
-    residual_is_current   = false;
-    double       residual = r.l2_norm();
-    double       rz_old   = 0;
-    unsigned int step     = 0;
-    unsigned int restart  = 0;
+    residual_is_current = false;
+    cg.residual         = r.l2_norm();
     while (true)
       {
-        while (residual > target)
-          {
-            if (step == max_steps)
-              {
-                n_cg_iterations += step;
-                throw SolverControl::NoConvergence(step, residual);
-              }
-            ++step;
-            if (type == Type::direct)
-              vmult(z, r);
-            else
-              amg->vmult(z, r);
-            const double rz   = r * z;
-            const double beta = step == restart + 1 ? 0.0 : rz / rz_old;
-            if (beta == 0.0)
-              p = z;
-            else
-              p.sadd(beta, 1.0, z);
-            if (uses_change)
-              {
-                derived_product(beta);
-                is_derived = true;
-              }
-            else
-              whole_product(can_use_change && substitution_error < 0
-                              && beta == 0.0,
-                            residual);
-            const double alpha = rz / (p * q);
-            x.add(alpha, p);
-            r.add(-alpha, q);
-            residual = r.l2_norm();
-            rz_old   = rz;
-          }
-        if (!is_derived || residual > tolerance * b_norm)
+        iterate_to(target, max_steps, x, cg);
+        if (!cg.is_derived || cg.residual > tolerance * b_norm)
           break;
         whole_residual(x, b);
-        residual   = r.l2_norm();
-        is_derived = false;
-        if (residual <= target)
+        cg.residual   = r.l2_norm();
+        cg.is_derived = false;
+        if (cg.residual <= target)
           break;
         // Not met after all: on with whole products, from this residual.
         ++n_failed_checks;
-        uses_change = false;
-        restart     = step;
+        cg.uses_change = false;
+        cg.restart     = cg.step;
       }
-    n_cg_iterations += step;
+    n_cg_iterations += cg.step;
     residual_is_current = true;
     // The residual norm is a reduction over all ranks: every rank decides
     // alike.
-    met_tolerance = residual <= tolerance * b_norm;
-    return step;
+    met_tolerance = cg.residual <= tolerance * b_norm;
+    return cg.step;
+  }
+
+
+  void
+  LinearSolver::iterate_to(const double       target,
+                           const unsigned int max_steps,
+                           LA::MPI::Vector   &x,
+                           CGProgress        &cg)
+  {
+    while (cg.residual > target)
+      {
+        if (cg.step == max_steps)
+          {
+            n_cg_iterations += cg.step;
+            throw SolverControl::NoConvergence(cg.step, cg.residual);
+          }
+        ++cg.step;
+        if (type == Type::direct)
+          vmult(z, r);
+        else
+          amg->vmult(z, r);
+        const double rz   = r * z;
+        const double beta = cg.step == cg.restart + 1 ? 0.0 : rz / cg.rz_old;
+        if (beta == 0.0)
+          p = z;
+        else
+          p.sadd(beta, 1.0, z);
+        if (cg.uses_change)
+          {
+            derived_product(beta);
+            cg.is_derived = true;
+          }
+        else
+          whole_product(cg.can_use_change && substitution_error < 0
+                          && beta == 0.0,
+                        cg.residual);
+        const double alpha = rz / (p * q);
+        x.add(alpha, p);
+        r.add(-alpha, q);
+        cg.residual = r.l2_norm();
+        cg.rz_old   = rz;
+      }
   }
 
 

@@ -252,6 +252,28 @@ namespace liftoff
     /// ChangingMatrix::rebuild_matrix() writes it.
     void
     refactorise();
+    /// Where a conjugate_gradients() run stands.
+    struct CGProgress
+    {
+      unsigned int step     = 0;
+      unsigned int restart  = 0;
+      double       residual = 0;
+      double       rz_old   = 0;
+      /// Products from the change of the matrix are allowed (a direct
+      /// factor and a ChangingMatrix), and used (the substitution is
+      /// accurate enough, and no check has failed).
+      bool can_use_change = false;
+      bool uses_change    = false;
+      /// The residual r was derived from the change, not formed with A.
+      bool is_derived = false;
+    };
+    /// CG iterations until the residual is below `target`; throws
+    /// SolverControl::NoConvergence after `max_steps` in all.
+    void
+    iterate_to(const double       target,
+               const unsigned int max_steps,
+               LA::MPI::Vector   &x,
+               CGProgress        &cg);
     /// CG's vectors in the layout of b (a new mesh changes it).
     void
     reinit_cg_vectors(const LA::MPI::Vector &b);
