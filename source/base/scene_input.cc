@@ -85,14 +85,39 @@ namespace liftoff
       return without_byte_order_mark(text);
     }
 
-    // Depth-first through the include lines of `text`, the contents of the
-    // file `chain_names.back()` (of standard input if `chain` is empty),
-    // appending every other line to `scene` with where it came from.
+    // The lines of `group`, the last of them line `last_line` of `file`,
+    // appended to the scene; each keeps its number, for the messages of
+    // ParameterHandler.
+    void
+    append_lines(const std::vector<std::string> &group,
+                 const std::string              &file,
+                 const unsigned int              last_line,
+                 SceneText                      &scene)
+    {
+      for (std::size_t i = 0; i < group.size(); ++i)
+        {
+          scene.text += group[i] + '\n';
+          scene.origins.emplace_back(file, last_line + 1 - group.size() + i);
+        }
+    }
+
+
     void
     expand_includes(const std::string        &text,
                     std::vector<std::string> &chain,
                     std::vector<std::string> &chain_names,
-                    SceneText                &scene)
+                    SceneText                &scene);
+
+
+    // The file `name` that line `line_number` of the chain's last file
+    // includes, expanded into the scene; a cycle or a chain too deep is
+    // refused.
+    void
+    expand_included_file(const std::string        &name,
+                         const unsigned int        line_number,
+                         std::vector<std::string> &chain,
+                         std::vector<std::string> &chain_names,
+                         SceneText                &scene)
     {
       // Deeper than any sensible scene, far less than the stack allows.
       constexpr std::size_t max_depth = 64;
@@ -102,6 +127,48 @@ namespace liftoff
         chain_names.empty()
           ? std::filesystem::path()
           : std::filesystem::path(chain_names.back()).parent_path();
+      const std::string named_by = " (named by the include line "
+                                   + std::to_string(line_number) + " of " + file
+                                   + ")";
+      // Relative to the folder of the file that names it, so that a scene
+      // and its includes can be run from anywhere.
+      const std::string resolved =
+        (folder / std::filesystem::path(name)).lexically_normal().string();
+      const std::string contents = read_file(resolved, named_by);
+      const std::string path =
+        std::filesystem::weakly_canonical(resolved).string();
+      std::string cycle;
+      for (std::size_t i = 0; i < chain.size(); ++i)
+        if (!cycle.empty() || chain[i] == path)
+          cycle += chain_names[i] + " -> ";
+      AssertThrow(cycle.empty(),
+                  ExcMessage("The scene's include lines form a cycle: " + cycle
+                             + resolved
+                             + ". A file must not include itself, "
+                               "directly or through others."));
+      AssertThrow(chain.size() < max_depth,
+                  ExcMessage("The scene's include lines nest more than "
+                             + std::to_string(max_depth) + " files deep (at "
+                             + resolved + ")."));
+      chain.push_back(path);
+      chain_names.push_back(resolved);
+      expand_includes(contents, chain, chain_names, scene);
+      chain.pop_back();
+      chain_names.pop_back();
+    }
+
+
+    // Depth-first through the include lines of `text`, the contents of the
+    // file `chain_names.back()` (of standard input if `chain` is empty),
+    // appending every other line to `scene` with where it came from.
+    void
+    expand_includes(const std::string        &text,
+                    std::vector<std::string> &chain,
+                    std::vector<std::string> &chain_names,
+                    SceneText                &scene)
+    {
+      const std::string file =
+        chain_names.empty() ? "standard input" : chain_names.back();
       std::istringstream       lines(text);
       std::string              line, joined;
       std::vector<std::string> group; // the lines of one continued line
@@ -120,55 +187,13 @@ namespace liftoff
           const std::string name = included_file(joined + line);
           joined.clear();
           if (name.empty())
-            {
-              // Each line keeps its number, for the messages of
-              // ParameterHandler.
-              for (std::size_t i = 0; i < group.size(); ++i)
-                {
-                  scene.text += group[i] + '\n';
-                  scene.origins.emplace_back(file,
-                                             line_number + 1 - group.size()
-                                               + i);
-                }
-              group.clear();
-              continue;
-            }
+            append_lines(group, file, line_number, scene);
+          else
+            expand_included_file(name, line_number, chain, chain_names, scene);
           group.clear();
-          const std::string named_by = " (named by the include line "
-                                       + std::to_string(line_number) + " of "
-                                       + file + ")";
-          // Relative to the folder of the file that names it, so that a
-          // scene and its includes can be run from anywhere.
-          const std::string resolved =
-            (folder / std::filesystem::path(name)).lexically_normal().string();
-          const std::string contents = read_file(resolved, named_by);
-          const std::string path =
-            std::filesystem::weakly_canonical(resolved).string();
-          std::string cycle;
-          for (std::size_t i = 0; i < chain.size(); ++i)
-            if (!cycle.empty() || chain[i] == path)
-              cycle += chain_names[i] + " -> ";
-          AssertThrow(cycle.empty(),
-                      ExcMessage("The scene's include lines form a cycle: "
-                                 + cycle + resolved
-                                 + ". A file must not include itself, "
-                                   "directly or through others."));
-          AssertThrow(chain.size() < max_depth,
-                      ExcMessage("The scene's include lines nest more than "
-                                 + std::to_string(max_depth)
-                                 + " files deep (at " + resolved + ")."));
-          chain.push_back(path);
-          chain_names.push_back(resolved);
-          expand_includes(contents, chain, chain_names, scene);
-          chain.pop_back();
-          chain_names.pop_back();
         }
       // A file that ends inside a continued line: its lines as they are.
-      for (std::size_t i = 0; i < group.size(); ++i)
-        {
-          scene.text += group[i] + '\n';
-          scene.origins.emplace_back(file, line_number + 1 - group.size() + i);
-        }
+      append_lines(group, file, line_number, scene);
     }
   } // namespace
 

@@ -128,52 +128,56 @@ namespace liftoff
       "springs), with the initial displacement added to that equilibrium; "
       "the other loads act on top. A static analysis adds it to the loads.");
     for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
-      {
-        declare_load(
-          prm, subsection_name("Point load", i), "Force in units of F0", [&]() {
-            prm.declare_entry("Position",
-                              "0, 0",
-                              Patterns::List(Patterns::Double(), 2, 2, ","),
-                              "x, y on the full plate (any point, not only "
-                              "nodes).");
-          });
-        declare_load(prm,
-                     subsection_name("Pressure", i),
-                     "Pressure in units of F0 / L^2",
-                     [&]() {
-                       prm.declare_entry(
-                         "Region",
-                         "whole plate",
-                         Patterns::Anything(),
-                         "'whole plate' or 'x_min, x_max, y_min, y_max' on "
-                         "the full plate, anywhere on the mesh: each cell "
-                         "the rectangle cuts is integrated over its part "
-                         "inside (exactly for intensities of degree up to "
-                         "p+3 in x and in y).");
-                       prm.declare_entry(
-                         "Intensity",
-                         "1",
-                         Patterns::Anything(),
-                         "f(x, y, tau), muParser; the pressure is "
-                         "Magnitude * f * h(tau).");
-                     });
-        declare_load(prm,
-                     subsection_name("Line load", i),
-                     "Force per unit length in units of F0 / L",
-                     [&]() {
-                       prm.declare_entry("Edge",
-                                         "Right",
-                                         plate_edges.pattern(),
-                                         "Edge of the full plate that carries "
-                                         "the load.");
-                       prm.declare_entry("Intensity",
-                                         "1",
-                                         Patterns::Anything(),
-                                         "f(x, y, tau) along the edge, "
-                                         "muParser.");
-                     });
-      }
+      declare_numbered_loads(prm, i);
     prm.leave_subsection();
+  }
+
+
+  void
+  LoadSet::declare_numbered_loads(ParameterHandler &prm, const unsigned int i)
+  {
+    declare_load(
+      prm, subsection_name("Point load", i), "Force in units of F0", [&]() {
+        prm.declare_entry("Position",
+                          "0, 0",
+                          Patterns::List(Patterns::Double(), 2, 2, ","),
+                          "x, y on the full plate (any point, not only "
+                          "nodes).");
+      });
+    declare_load(prm,
+                 subsection_name("Pressure", i),
+                 "Pressure in units of F0 / L^2",
+                 [&]() {
+                   prm.declare_entry(
+                     "Region",
+                     "whole plate",
+                     Patterns::Anything(),
+                     "'whole plate' or 'x_min, x_max, y_min, y_max' on "
+                     "the full plate, anywhere on the mesh: each cell "
+                     "the rectangle cuts is integrated over its part "
+                     "inside (exactly for intensities of degree up to "
+                     "p+3 in x and in y).");
+                   prm.declare_entry("Intensity",
+                                     "1",
+                                     Patterns::Anything(),
+                                     "f(x, y, tau), muParser; the pressure is "
+                                     "Magnitude * f * h(tau).");
+                 });
+    declare_load(prm,
+                 subsection_name("Line load", i),
+                 "Force per unit length in units of F0 / L",
+                 [&]() {
+                   prm.declare_entry("Edge",
+                                     "Right",
+                                     plate_edges.pattern(),
+                                     "Edge of the full plate that carries "
+                                     "the load.");
+                   prm.declare_entry("Intensity",
+                                     "1",
+                                     Patterns::Anything(),
+                                     "f(x, y, tau) along the edge, "
+                                     "muParser.");
+                 });
   }
 
 

@@ -43,6 +43,15 @@ namespace liftoff
   MeshRefinement::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh refinement");
+    declare_when_parameters(prm);
+    declare_where_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  MeshRefinement::declare_when_parameters(ParameterHandler &prm)
+  {
     prm.declare_entry("Adaptive",
                       "false",
                       Patterns::Bool(),
@@ -60,6 +69,22 @@ namespace liftoff
                       Patterns::Integer(0, 30),
                       "Static analysis: adapt the mesh and solve again this "
                       "many times after the first solve.");
+    prm.declare_entry("Initial refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Refine the cells holding a point load this many times "
+                      "before the first step (or the first static solve), "
+                      "up to Maximum level. A dynamic run that does not "
+                      "start at rest also adapts the mesh this many times to "
+                      "its initial displacement, by the Indicators, before "
+                      "the first step: an error in the initial state is "
+                      "carried by the waves to the end of the run.");
+  }
+
+
+  void
+  MeshRefinement::declare_where_parameters(ParameterHandler &prm)
+  {
     prm.declare_entry("Indicators",
                       "kelly, contact front, point loads",
                       Patterns::MultipleSelection(indicators.names()),
@@ -113,17 +138,6 @@ namespace liftoff
                       "Layers of cells around the cells cut by the contact "
                       "front that are refined with them (cells sharing a "
                       "vertex count as one layer).");
-    prm.declare_entry("Initial refinements",
-                      "0",
-                      Patterns::Integer(0, 12),
-                      "Refine the cells holding a point load this many times "
-                      "before the first step (or the first static solve), "
-                      "up to Maximum level. A dynamic run that does not "
-                      "start at rest also adapts the mesh this many times to "
-                      "its initial displacement, by the Indicators, before "
-                      "the first step: an error in the initial state is "
-                      "carried by the waves to the end of the run.");
-    prm.leave_subsection();
   }
 
 

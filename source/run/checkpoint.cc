@@ -231,6 +231,29 @@ namespace liftoff
                              + scene_line + ">, in the checkpoint <"
                              + saved_line + ">."));
     }
+
+
+    // The header of the checkpoint in `folder`: format, step, every file
+    // with its checksum, and the scene.
+    std::string
+    header_text(const std::string              &folder,
+                const unsigned int              step,
+                const std::vector<FileSum>     &sums,
+                const std::vector<std::string> &shared_names,
+                const std::string              &scene)
+    {
+      std::ostringstream header;
+      header << format_line << Checkpoint::format << '\n'
+             << "step = " << step << '\n'
+             << "ranks = " << sums.size() << '\n';
+      for (unsigned int r = 0; r < sums.size(); ++r)
+        header << rank_name(r) << " = " << describe(sums[r]) << '\n';
+      for (const auto &name : shared_names)
+        header << shared_file_label << name << " = "
+               << describe(sum_of_file(folder + "/" + name)) << '\n';
+      header << "scene:\n" << scene;
+      return header.str();
+    }
   } // namespace
 
 
@@ -380,18 +403,10 @@ namespace liftoff
     collective_attempt(comm, what, [&]() {
       if (!is_root)
         return;
-      std::ostringstream header;
-      header << format_line << Checkpoint::format << '\n'
-             << "step = " << step << '\n'
-             << "ranks = " << sums.size() << '\n';
-      for (unsigned int r = 0; r < sums.size(); ++r)
-        header << rank_name(r) << " = " << describe(sums[r]) << '\n';
-      for (const auto &name : shared_names)
-        header << shared_file_label << name << " = "
-               << describe(sum_of_file(fresh + "/" + name)) << '\n';
-      header << "scene:\n" << scene;
       write_file_atomically(fresh + "/" + header_name, [&](std::ostream &out) {
-        out << header.str() << checksum_line(header.str());
+        const std::string header =
+          header_text(fresh, step, sums, shared_names, scene);
+        out << header << checksum_line(header);
       });
       std::filesystem::remove_all(previous);
       if (std::filesystem::exists(target))

@@ -160,53 +160,64 @@ namespace liftoff
     substitution_error  = -1;
     residual_is_current = false;
     if (type == Type::direct)
-      {
-        // Release the old factor before the new one is built.
-        direct.reset();
-        cholesky.reset();
-        mumps_cholesky.reset();
-        // The number of ranks is the same on all of them, and so is the
-        // test of positive definiteness (CHOLMOD's on one rank, MUMPS's
-        // global status), so every rank takes the same branch.
-        const bool one_rank = A.trilinos_matrix().Comm().NumProc() == 1;
-        if (package == Package::cholmod && one_rank)
-          {
-            cholesky = std::make_unique<CholeskyFactor>();
-            if (cholesky->factorize(A.trilinos_matrix()))
-              return;
-            cholesky.reset();
-            report_fallback("CHOLMOD");
-          }
-        else if (package == Package::cholmod || package == Package::mumps)
-          {
-            mumps_cholesky =
-              std::make_unique<MumpsCholeskyFactor>(A.get_mpi_communicator());
-            if (mumps_cholesky->factorize(A))
-              return;
-            mumps_cholesky.reset();
-            report_fallback("MUMPS's Cholesky factorisation");
-          }
-        direct_control.set_max_steps(1);
-        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-          direct_control,
-          TrilinosWrappers::SolverDirect::AdditionalData(
-            false, package == Package::klu ? "Amesos_Klu" : "Amesos_Mumps"));
-        direct->initialize(A);
-      }
+      factorize(A);
     else
+      build_multigrid(A, disc);
+  }
+
+
+  void
+  LinearSolver::factorize(const LA::MPI::SparseMatrix &A)
+  {
+    // Release the old factor before the new one is built.
+    direct.reset();
+    cholesky.reset();
+    mumps_cholesky.reset();
+    // The number of ranks is the same on all of them, and so is the test
+    // of positive definiteness (CHOLMOD's on one rank, MUMPS's global
+    // status), so every rank takes the same branch.
+    const bool one_rank = A.trilinos_matrix().Comm().NumProc() == 1;
+    if (package == Package::cholmod && one_rank)
       {
-        TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic              = true;
-        data.higher_order_elements = (disc.degree() > 1);
-        data.smoother_sweeps       = 2;
-        data.aggregation_threshold = 0.02;
-        DoFTools::extract_constant_modes(disc.dof_handler,
-                                         ComponentMask(),
-                                         data.constant_modes);
-        amg.reset();
-        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg->initialize(A, data);
+        cholesky = std::make_unique<CholeskyFactor>();
+        if (cholesky->factorize(A.trilinos_matrix()))
+          return;
+        cholesky.reset();
+        report_fallback("CHOLMOD");
       }
+    else if (package == Package::cholmod || package == Package::mumps)
+      {
+        mumps_cholesky =
+          std::make_unique<MumpsCholeskyFactor>(A.get_mpi_communicator());
+        if (mumps_cholesky->factorize(A))
+          return;
+        mumps_cholesky.reset();
+        report_fallback("MUMPS's Cholesky factorisation");
+      }
+    direct_control.set_max_steps(1);
+    direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+      direct_control,
+      TrilinosWrappers::SolverDirect::AdditionalData(
+        false, package == Package::klu ? "Amesos_Klu" : "Amesos_Mumps"));
+    direct->initialize(A);
+  }
+
+
+  void
+  LinearSolver::build_multigrid(const LA::MPI::SparseMatrix &A,
+                                const Discretization        &disc)
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = (disc.degree() > 1);
+    data.smoother_sweeps       = 2;
+    data.aggregation_threshold = 0.02;
+    DoFTools::extract_constant_modes(disc.dof_handler,
+                                     ComponentMask(),
+                                     data.constant_modes);
+    amg.reset();
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(A, data);
   }
 
 

@@ -119,11 +119,10 @@ namespace liftoff
   }
 
 
-  bool
-  MumpsCholeskyFactor::factorize(const LA::MPI::SparseMatrix &A)
+  void
+  MumpsCholeskyFactor::copy_upper_triangle(const Epetra_CrsMatrix &matrix)
   {
-    const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
-    const int               n_rows = matrix.NumMyRows();
+    const int n_rows = matrix.NumMyRows();
     owned_rows.resize(n_rows);
     row_indices.clear();
     column_indices.clear();
@@ -147,7 +146,13 @@ namespace liftoff
               values.push_back(row_values[k]);
             }
       }
+  }
 
+
+  void
+  MumpsCholeskyFactor::plan_gathering(const Epetra_CrsMatrix &matrix)
+  {
+    const int n_rows = matrix.NumMyRows();
     // Where each rank's entries go in a gathered vector, on the host.
     const bool host    = Utilities::MPI::this_mpi_process(comm) == 0;
     const int  n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -168,6 +173,15 @@ namespace liftoff
                 comm);
     gathered.resize(all_rows.size());
     rhs.resize(all_rows.size());
+  }
+
+
+  bool
+  MumpsCholeskyFactor::factorize(const LA::MPI::SparseMatrix &A)
+  {
+    const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
+    copy_upper_triangle(matrix);
+    plan_gathering(matrix);
 
     mumps->n         = matrix.NumGlobalRows();
     mumps->nnz_loc   = values.size();

@@ -93,6 +93,9 @@ namespace liftoff
     set_body_force(Function<2> *force);
 
   private:
+    /// The entries of the i-th point load, pressure and line load.
+    static void
+    declare_numbered_loads(ParameterHandler &prm, const unsigned int i);
     enum class Kind
     {
       point,

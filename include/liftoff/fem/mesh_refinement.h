@@ -89,6 +89,12 @@ namespace liftoff
             const std::vector<LA::MPI::Vector *> &vectors) const;
 
   private:
+    /// Entries on when the mesh adapts (Adaptive, Interval, Static cycles,
+    /// Initial refinements), and on where (Indicators and their limits).
+    static void
+    declare_when_parameters(ParameterHandler &prm);
+    static void
+                 declare_where_parameters(ParameterHandler &prm);
     bool         enabled          = false;
     unsigned int interval         = 10;
     unsigned int static_cycles    = 3;

@@ -243,6 +243,13 @@ namespace liftoff
     std::unique_ptr<MumpsCholeskyFactor>            mumps_cholesky;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
+    /// A factor of A: a Cholesky factor (CHOLMOD, MUMPS) where the package
+    /// allows and A is positive definite, else an LU (Amesos).
+    void
+    factorize(const LA::MPI::SparseMatrix &A);
+    /// `cg`'s algebraic multigrid preconditioner for A.
+    void
+    build_multigrid(const LA::MPI::SparseMatrix &A, const Discretization &disc);
     /// Say once (rank 0) that `factorisation` found the matrix not
     /// positive definite and MUMPS's LU takes over.
     void

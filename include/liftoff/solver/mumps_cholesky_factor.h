@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+class Epetra_CrsMatrix;
+
 namespace liftoff
 {
   using namespace dealii;
@@ -64,6 +66,12 @@ namespace liftoff
     std::vector<int>    row_indices, column_indices;
     std::vector<double> values;
 
+    /// row_indices, column_indices and values from this rank's rows.
+    void
+    copy_upper_triangle(const Epetra_CrsMatrix &matrix);
+    /// Where each rank's rows go in the vectors gathered on rank 0.
+    void
+    plan_gathering(const Epetra_CrsMatrix &matrix);
     /// Run MUMPS's `job`; then succeeded().
     bool
     run(const int job, const std::string &what);
