@@ -77,6 +77,7 @@ namespace liftoff
                                + " is given twice."));
     write_energies  = prm.get_bool("Write energies");
     write_resultant = prm.get_bool("Write foundation resultant");
+    make_columns();
   }
 
 
@@ -127,6 +128,46 @@ namespace liftoff
   TimeHistory::show_dissipated_energy(const bool show)
   {
     write_dissipated = show;
+    make_columns();
+  }
+
+
+  void
+  TimeHistory::make_columns()
+  {
+    columns.clear();
+    const auto add = [this](const std::string                 &name,
+                            std::function<double(const Row &)> value) {
+      columns.push_back({name, std::move(value)});
+    };
+    add("tau", [](const Row &r) { return r.tau; });
+    const std::vector<std::string> probe_names = probe_column_names();
+    for (unsigned int k = 0; k < probe_names.size(); ++k)
+      add(probe_names[k], [k](const Row &r) { return r.probe_w[k]; });
+    add("contact_fraction", [](const Row &r) { return r.contact_fraction; });
+    add("max_uplift", [](const Row &r) { return r.max_uplift; });
+    add("active_set_iterations", [](const Row &r) { return r.iterations; });
+    add("active_set_cycle", [](const Row &r) { return r.cycle_length; });
+    add("cells", [](const Row &r) { return r.n_cells; });
+    add("dofs", [](const Row &r) { return r.n_dofs; });
+    if (write_energies)
+      {
+        add("kinetic", [](const Row &r) { return r.energies.kinetic; });
+        add("strain", [](const Row &r) { return r.energies.strain; });
+        add("foundation", [](const Row &r) { return r.energies.foundation; });
+        add("work", [](const Row &r) { return r.energies.work; });
+        if (write_dissipated)
+          add("dissipated_energy",
+              [](const Row &r) { return r.energies.dissipated; });
+        add("balance_error", [](const Row &r) { return r.balance_error; });
+      }
+    if (write_resultant)
+      {
+        add("resultant", [](const Row &r) { return r.resultant; });
+        add("resultant_x", [](const Row &r) { return r.resultant_x; });
+        add("resultant_y", [](const Row &r) { return r.resultant_y; });
+        add("contact_area", [](const Row &r) { return r.contact_area; });
+      }
   }
 
 
@@ -181,16 +222,8 @@ namespace liftoff
   TimeHistory::write_header()
   {
     std::ostream &out = file.stream();
-    out << "tau";
-    for (const auto &name : probe_column_names())
-      out << ',' << name;
-    out << ",contact_fraction,max_uplift,active_set_iterations,"
-           "active_set_cycle,cells,dofs";
-    if (write_energies)
-      out << ",kinetic,strain,foundation,work"
-          << (write_dissipated ? ",dissipated_energy" : "") << ",balance_error";
-    if (write_resultant)
-      out << ",resultant,resultant_x,resultant_y,contact_area";
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      out << (c > 0 ? "," : "") << columns[c].name;
     out << '\n';
   }
 
@@ -266,40 +299,20 @@ namespace liftoff
       out.write(text, end - text);
     }
 
-
-    void
-    put(std::ostream &out, const std::initializer_list<double> values)
-    {
-      for (const double value : values)
-        {
-          out << ',';
-          put(out, value);
-        }
-    }
   } // namespace
 
 
   void
   TimeHistory::write_row(const Row &row)
   {
+    // Integer columns are exact in a double and written alike below 1e12.
     std::ostream &out = file.stream();
-    put(out, row.tau);
-    for (const double value : row.probe_w)
-      put(out, {value});
-    put(out, {row.contact_fraction, row.max_uplift});
-    out << ',' << row.iterations << ',' << row.cycle_length << ','
-        << row.n_cells << ',' << row.n_dofs;
-    if (write_energies)
+    for (unsigned int c = 0; c < columns.size(); ++c)
       {
-        const EnergyBalance &e = row.energies;
-        put(out, {e.kinetic, e.strain, e.foundation, e.work});
-        if (write_dissipated)
-          put(out, {e.dissipated});
-        put(out, {row.balance_error});
+        if (c > 0)
+          out << ',';
+        put(out, columns[c].value(row));
       }
-    if (write_resultant)
-      put(out,
-          {row.resultant, row.resultant_x, row.resultant_y, row.contact_area});
     out << '\n';
   }
 
@@ -314,7 +327,7 @@ namespace liftoff
   void
   TimeHistory::save(OutputArchive &archive) const
   {
-    archive << history;
+    archive << column_names() << history;
   }
 
 
@@ -324,6 +337,23 @@ namespace liftoff
     // history.csv is a function of the rows: they are written again as
     // they were, and those of steps after the checkpoint are gone once the
     // file is rewritten.
+    // The rows' layout follows the columns: a checkpoint of other columns
+    // (another version of liftoff) is refused before its rows are read.
+    std::vector<std::string> saved;
+    archive >> saved;
+    const auto joined = [](const std::vector<std::string> &names) {
+      std::string text;
+      for (const auto &name : names)
+        text += (text.empty() ? "" : ",") + name;
+      return text;
+    };
+    AssertThrow(saved == column_names(),
+                ExcMessage("The checkpoint's time history has the columns "
+                           + joined(saved) + ", this liftoff writes "
+                           + joined(column_names())
+                           + ": it was written by another version of liftoff; "
+                             "resume with that version, or start the scene "
+                             "anew."));
     archive >> history;
     file.hold();
     for (const Row &row : history)
@@ -346,6 +376,16 @@ namespace liftoff
         }
     statistics.mean = (n > 0 ? double(total) / n : 0.0);
     return statistics;
+  }
+
+
+  std::vector<std::string>
+  TimeHistory::column_names() const
+  {
+    std::vector<std::string> names;
+    for (const Column &column : columns)
+      names.push_back(column.name);
+    return names;
   }
 
 

@@ -8,6 +8,7 @@
 #include <liftoff/output/output.h>
 #include <liftoff/time/energy_balance.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,10 @@ namespace liftoff
    * is replaced whole (atomically) at most once a second and at the end, so a
    * reader never sees a half-written row.
    *
-   * A new column is a member of Row, its value in row_of(), its header and
-   * value in the two writers, and its place in Row::serialize().
+   * A new column is a change of this class alone: a member of Row, its
+   * value in row_of(), its name and value in make_columns(), and its place
+   * in Row::serialize(). A checkpoint keeps the column names, so one of
+   * other columns is refused by name instead of misread.
    */
   class TimeHistory : public Output
   {
@@ -116,6 +119,21 @@ namespace liftoff
     /// digits to tell every two points apart.
     std::vector<std::string>
     probe_column_names() const;
+
+    /// One column of history.csv: its name in the header and its value in
+    /// a row (integers are exact in a double).
+    struct Column
+    {
+      std::string                        name;
+      std::function<double(const Row &)> value;
+    };
+    /// The columns of this run, in the file's order; made anew whenever a
+    /// parameter that chooses them is set.
+    std::vector<Column> columns;
+    void
+    make_columns();
+    std::vector<std::string>
+    column_names() const;
 
     std::vector<Point<2>>        probe_points;
     bool                         write_energies   = true;
