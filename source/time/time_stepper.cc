@@ -424,9 +424,15 @@ namespace liftoff
   }
 
 
-  void
-  TimeStepper::continue_on_new_mesh()
+  std::optional<double>
+  TimeStepper::adapt_mesh_in_time_loop()
   {
+    const double before = stored_energy();
+    if (!adapt_mesh())
+      return {};
+    // The state on the new mesh: its contact status at the new Gauss
+    // points, the load and force balance there, an acceleration in
+    // balance with them, the system matrix and its factor (once per mesh).
     {
       SectionTimer::Scope t(timer, "mesh refinement");
       equilibrate(state_.step, state_.tau, "the acceleration after a new mesh");
@@ -439,7 +445,9 @@ namespace liftoff
     foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     active_set.set_base_matrix(effective_base_matrix());
     check_time_step();
-    state_.energies = energies();
+    state_.energies    = energies();
+    const double after = stored_energy();
+    return before > 0 ? (after - before) / before : 0.0;
   }
 
 

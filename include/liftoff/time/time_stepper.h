@@ -9,6 +9,7 @@
 #include <liftoff/time/plate_state.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -87,18 +88,19 @@ namespace liftoff
     check_time_step();
 
     /// Mark cells and, if the mesh changes, move u, v and a to the new mesh
-    /// and rebuild what depends on it; returns whether it changed.
+    /// and rebuild what depends on it; returns whether it changed. For a
+    /// state that the caller sets anew (initial refinements) or solves
+    /// again (static cycles).
     bool
     adapt_mesh();
-    /// After a new mesh in the time loop: the contact status, load and
-    /// force balance at the new Gauss points, an acceleration in balance
-    /// with them, the system matrix and its factor, and the time step's
-    /// stability on the new mesh.
-    void
-    continue_on_new_mesh();
-    /// Kinetic + strain + foundation energy of the state (collective).
-    double
-    stored_energy();
+    /// adapt_mesh() within the time loop: on a new mesh also the contact
+    /// status, load and force balance at the new Gauss points, an
+    /// acceleration in balance with them, the system matrix and its
+    /// factor, and the time step's stability. Returns the change of the
+    /// stored energy (kinetic + strain + foundation) the transfer caused,
+    /// relative to the energy before it, if the mesh changed.
+    std::optional<double>
+    adapt_mesh_in_time_loop();
 
     /// The static equilibrium under the loads at tau = 0 on the current
     /// mesh, with its checks, the work of the loads and the energies.
@@ -261,6 +263,10 @@ namespace liftoff
     /// The system matrix of the time steps from the bilateral set.
     void
     use_time_step_matrix();
+
+    /// Kinetic + strain + foundation energy of the state (collective).
+    double
+    stored_energy();
 
     /// The parts of do_step(), in their order.
     void
