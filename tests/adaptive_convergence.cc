@@ -31,7 +31,7 @@
 //     rule and must stay equal to it through the transfers (6.2e-14); it
 //     weights the last step's force balance, so an acceleration left as
 //     interpolated (out of balance on the new mesh) makes them differ
-//     (4.5e-2, seen before Simulator::equilibrate ran after a transfer).
+//     (4.5e-2, seen before TimeStepper::equilibrate ran after a transfer).
 //
 // Seen to fail: `./test_adaptive_convergence "point loads"` (an indicator
 // that marks no cell here) keeps the coarse mesh: 13 checks fail.

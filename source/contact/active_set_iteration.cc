@@ -253,14 +253,41 @@ namespace liftoff
     const LA::MPI::Vector       &rhs,
     LA::MPI::Vector             &solution,
     LA::MPI::Vector             &ghosted_solution,
-    const LinearSolver::Accuracy accuracy)
+    const LinearSolver::Accuracy accuracy,
+    const Support                support)
   {
     solve_with_current_set(rhs, solution, ghosted_solution, accuracy);
-    if (requires_contact
+    if (support == Support::contact_only
         && !is_solution_of_system(solution, with_gap_load(rhs), accuracy))
       return {};
     SectionTimer::Scope t(timer, "contact update");
     return foundation.update_contact_status(ghosted_solution);
+  }
+
+
+  std::optional<unsigned long>
+  ActiveSetIteration::solve_for_next_set(const LA::MPI::Vector &rhs,
+                                         LA::MPI::Vector       &solution,
+                                         LA::MPI::Vector &ghosted_solution,
+                                         const Support    support)
+  {
+    // While the set may still change, a solution only decides the next
+    // one; the solve to the full tolerance waits until a set holds, and
+    // the set is asked again for its solution.
+    const auto                         accuracy = solver.has_looser_trials()
+                                                    ? LinearSolver::Accuracy::trial
+                                                    : LinearSolver::Accuracy::final;
+    const std::optional<unsigned long> n_changed =
+      solve_and_update_set(rhs, solution, ghosted_solution, accuracy, support);
+    if (n_changed && *n_changed == 0
+        && accuracy == LinearSolver::Accuracy::trial
+        && !solver.last_solve_met_tolerance())
+      return solve_and_update_set(rhs,
+                                  solution,
+                                  ghosted_solution,
+                                  LinearSolver::Accuracy::final,
+                                  support);
+    return n_changed;
   }
 
 
@@ -330,6 +357,7 @@ namespace liftoff
   ActiveSetIteration::solve(const LA::MPI::Vector &rhs,
                             LA::MPI::Vector       &solution,
                             LA::MPI::Vector       &ghosted_solution,
+                            const Support          support,
                             const bool             guess_is_prediction)
   {
     Assert(matrix.m() > 0, ExcMessage("set_base_matrix() first."));
@@ -347,21 +375,8 @@ namespace liftoff
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
-        // While the set may still change, a solution only decides the next
-        // one; the solve to the full tolerance waits until a set holds,
-        // and the set is asked again for its solution.
-        const auto                   accuracy = solver.has_looser_trials()
-                                                  ? LinearSolver::Accuracy::trial
-                                                  : LinearSolver::Accuracy::final;
-        std::optional<unsigned long> n_changed =
-          solve_and_update_set(rhs, solution, ghosted_solution, accuracy);
-        if (n_changed && *n_changed == 0
-            && accuracy == LinearSolver::Accuracy::trial
-            && !solver.last_solve_met_tolerance())
-          n_changed = solve_and_update_set(rhs,
-                                           solution,
-                                           ghosted_solution,
-                                           LinearSolver::Accuracy::final);
+        const std::optional<unsigned long> n_changed =
+          solve_for_next_set(rhs, solution, ghosted_solution, support);
         if (!n_changed)
           {
             result.lost_contact = true;
@@ -373,7 +388,8 @@ namespace liftoff
             result.converged = true;
             return result;
           }
-        if (requires_contact && foundation.contact_area_fraction() == 0.0)
+        if (support == Support::contact_only
+            && foundation.contact_area_fraction() == 0.0)
           {
             result.lost_contact = true;
             return result;

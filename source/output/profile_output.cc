@@ -1,9 +1,11 @@
 #include <deal.II/base/mpi.h>
 
+#include <liftoff/base/number_text.h>
 #include <liftoff/output/profile_output.h>
 
 #include <algorithm>
 #include <iomanip>
+#include <iostream>
 
 namespace liftoff
 {
@@ -90,6 +92,23 @@ namespace liftoff
         if (tau > end_time + 0.5 * dt * (1 + 1e-12))
           late.push_back(tau);
     return late;
+  }
+
+
+  void
+  ProfileOutput::warn_of_times_not_reached(const double   end_time,
+                                           const double   dt,
+                                           const MPI_Comm comm) const
+  {
+    const auto late = times_not_reached(end_time, dt);
+    if (late.empty() || Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::cerr << "liftoff: warning: Output/Profile times";
+    for (const double tau : late)
+      std::cerr << ' ' << format_number(tau);
+    std::cerr << " lie beyond Time integration/End time = "
+              << format_number(end_time) << "; no profile is written for them."
+              << std::endl;
   }
 
 

@@ -1,5 +1,10 @@
+#include <deal.II/base/utilities.h>
+
 #include <liftoff/base/output_files.h>
+#include <liftoff/base/section_timer.h>
+#include <liftoff/fem/discretization.h>
 #include <liftoff/output/run_summary.h>
+#include <liftoff/solver/linear_solver.h>
 
 #include <cmath>
 #include <iomanip>
@@ -123,5 +128,52 @@ namespace liftoff
       write_file_atomically(directory + "/summary.txt",
                             [&](std::ostream &out) { out << text(); });
     });
+  }
+
+
+  void
+  RunSummary::add_mesh(const Discretization &discretization)
+  {
+    add("ranks",
+        double(
+          Utilities::MPI::n_mpi_processes(discretization.mpi_communicator)));
+    add("cells", double(discretization.triangulation.n_global_active_cells()));
+    add("degree", double(discretization.degree()));
+    add("element", discretization.element_name());
+    add("dofs", double(discretization.dof_handler.n_dofs()));
+  }
+
+
+  void
+  RunSummary::add_linear_solver(const LinearSolver &solver)
+  {
+    add("factorisations", double(solver.n_preparations));
+    add("factor", solver.factor_name());
+    add("substitutions", double(solver.n_substitutions));
+    add("time per substitution [s]",
+        solver.n_substitutions > 0
+          ? solver.substitution_timer.wall_time() / solver.n_substitutions
+          : 0.0);
+    add("CG iterations", double(solver.n_cg_iterations));
+    add("CG products with the whole matrix", double(solver.n_products));
+    add("CG solutions that failed the residual check",
+        double(solver.n_failed_checks));
+  }
+
+
+  void
+  RunSummary::add_resources(const SectionTimer &timer,
+                            const double        wall_time,
+                            const MPI_Comm      comm)
+  {
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    add("peak memory per rank, max [MB]",
+        Utilities::MPI::max(memory.VmHWM / 1024.0, comm));
+    add("wall time [s]", wall_time);
+    Section sections;
+    for (const auto &[section, seconds] : timer.wall_times())
+      sections.emplace_back(section, seconds);
+    add("wall time by section [s]", sections);
   }
 } // namespace liftoff

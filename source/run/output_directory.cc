@@ -289,6 +289,18 @@ namespace liftoff
 
 
   void
+  OutputDirectory::write_used_parameters(const std::string &parameters) const
+  {
+    collective_attempt(
+      comm, "Output/Directory = " + path + " cannot be written", [&]() {
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          write_file_atomically(path + "/used_parameters.prm",
+                                [&](std::ostream &out) { out << parameters; });
+      });
+  }
+
+
+  void
   OutputDirectory::remove_summary() const
   {
     collective_attempt(comm, "Output/Directory = " + path, [&]() {

@@ -34,7 +34,7 @@ namespace liftoff
     {
       unsigned int iterations = 0;
       bool         converged  = false;
-      /// Only with requires_contact: the set emptied or the system was
+      /// Only with Support::contact_only: the set emptied or the system was
       /// singular, i.e. nothing holds the plate.
       bool lost_contact = false;
       /// Length of the cycle the set fell into (0: none): the number of
@@ -75,6 +75,16 @@ namespace liftoff
     void
     set_base_matrix(const BaseMatrix &write_base);
 
+    /// What holds the plate in a solve.
+    enum class Support
+    {
+      /// Supported edges or the inertia of a time step.
+      held,
+      /// Nothing but the foundation (a static free plate): the iteration
+      /// stops when the contact set empties or the solve is singular.
+      contact_only
+    };
+
     /// Solve; `solution` holds the initial guess on entry and the result
     /// on exit (owned entries, constraints distributed), `ghosted_solution`
     /// the same with ghosts. With `guess_is_prediction` (a time step's
@@ -84,6 +94,7 @@ namespace liftoff
     solve(const LA::MPI::Vector &rhs,
           LA::MPI::Vector       &solution,
           LA::MPI::Vector       &ghosted_solution,
+          const Support          support,
           const bool             guess_is_prediction = false);
 
     /// The linear solver, for its counters and its parameters.
@@ -112,10 +123,6 @@ namespace liftoff
     /// near the limit of double precision (collective).
     double
     refinement_change(const LA::MPI::Vector &x, const LA::MPI::Vector &b);
-
-    /// Nothing but the foundation holds the plate (a static free plate):
-    /// stop when the contact set empties or the solve is singular.
-    bool requires_contact = false;
 
   private:
     const Discretization         &discretization;
@@ -183,7 +190,16 @@ namespace liftoff
     solve_and_update_set(const LA::MPI::Vector &rhs,
                          LA::MPI::Vector       &solution,
                          LA::MPI::Vector       &ghosted_solution,
-                         LinearSolver::Accuracy accuracy);
+                         LinearSolver::Accuracy accuracy,
+                         const Support          support);
+    /// One iteration's solve: solve_and_update_set() at the trial accuracy
+    /// where the solver has one, and once more to the full tolerance if
+    /// the set held on a trial solution that missed it.
+    std::optional<unsigned long>
+    solve_for_next_set(const LA::MPI::Vector &rhs,
+                       LA::MPI::Vector       &solution,
+                       LA::MPI::Vector       &ghosted_solution,
+                       const Support          support);
 
     /// No status changed in the last update, and none within the round-off
     /// band differs from `start_set`, the set the step began with (those

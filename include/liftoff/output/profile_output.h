@@ -37,6 +37,13 @@ namespace liftoff
     /// `end_time` does not reach (nearer to no step than dt/2).
     std::vector<double>
     times_not_reached(const double end_time, const double dt) const;
+    /// A shortened run (a try, or a resume to a later end) may skip
+    /// profiles: a warning on rank 0 names them rather than drop them
+    /// unnoticed.
+    void
+    warn_of_times_not_reached(const double   end_time,
+                              const double   dt,
+                              const MPI_Comm comm) const;
 
     void
     setup(const Discretization &discretization,

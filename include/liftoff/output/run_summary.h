@@ -9,6 +9,10 @@
 
 namespace liftoff
 {
+  class Discretization;
+  class LinearSolver;
+  class SectionTimer;
+
   /**
    * How a run ended and what it cost, as one list of named values written
    * twice: summary.txt ("key: value" lines, a section's entries indented
@@ -23,6 +27,20 @@ namespace liftoff
 
     void
     add(const std::string &key, const Value &value);
+    /// The entries every run reports the same way, in the summary's order:
+    /// the mesh (ranks, cells, element, dofs, collective), ...
+    void
+    add_mesh(const Discretization &discretization);
+    /// ... the linear solver's factorisations, substitutions and CG work,
+    /// ...
+    void
+    add_linear_solver(const LinearSolver &solver);
+    /// ... and the peak memory per rank and the wall time, by section
+    /// (collective).
+    void
+    add_resources(const SectionTimer &timer,
+                  const double        wall_time,
+                  const MPI_Comm      comm);
 
     std::string
     text() const;

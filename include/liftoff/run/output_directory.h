@@ -78,6 +78,11 @@ namespace liftoff
     void
     release_space_for_summary() const;
 
+    /// used_parameters.prm: the parameters of the run as it read them,
+    /// replaced atomically from rank 0.
+    void
+    write_used_parameters(const std::string &parameters) const;
+
   private:
     std::string path;
     MPI_Comm    comm;

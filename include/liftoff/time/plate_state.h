@@ -14,7 +14,9 @@ namespace liftoff
    * Newmark state (u, v, a) at tau, the load F(tau), the force balance
    * F - K u - K_f u that generalized-alpha weighs into the next step, and
    * the work of the loads so far. A checkpoint saves it as it is, bit for
-   * bit; a static analysis uses u and the load only.
+   * bit; a static analysis uses u and the load only. The TimeStepper lays
+   * the vectors out on a mesh in one list with its own
+   * (TimeStepper::build_on_current_mesh()).
    */
   struct PlateState
   {
@@ -30,10 +32,6 @@ namespace liftoff
     double dissipated = 0;
     /// At tau, and at tau = 0 (the reference of the balance error).
     EnergyBalance energies, initial_energies;
-
-    /// Zero vectors laid out on `discretization`.
-    void
-    reinit(const Discretization &discretization);
 
     template <class Archive>
     void

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <liftoff/base/section_timer.h>
+#include <liftoff/contact/active_set_iteration.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/initial_conditions.h>
+#include <liftoff/fem/load_set.h>
+#include <liftoff/fem/mesh_refinement.h>
+#include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/plate_matrices.h>
+#include <liftoff/time/energy_check.h>
+#include <liftoff/time/newmark_integrator.h>
+#include <liftoff/time/time_stepper.h>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The physical and numerical parts of a scene, as step-69's OfflineData
+   * groups what the time stepping works on: each reads its own parameters;
+   * here they are declared and parsed together and checked against each
+   * other. The Simulator owns one and hands its parts to the TimeStepper;
+   * the outputs, the folder and the checkpoint are the Simulator's.
+   */
+  struct SceneParts
+  {
+    /// `Analysis/Type`.
+    enum class Analysis
+    {
+      static_analysis,
+      dynamic_analysis
+    };
+
+    SceneParts(const MPI_Comm comm, SectionTimer &timer);
+
+    /// The parameters of every part below (not the outputs' and the
+    /// checkpoint's).
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// Read them; throws with a message naming the offending parameter.
+    void
+    parse_parameters(ParameterHandler &prm);
+    /// The checks across parts that need no mesh.
+    void
+    check() const;
+
+    /// The mesh of the scene, refined around its point loads, with the
+    /// checks of the loads against it.
+    void
+    setup_mesh();
+    /// Refuse a scene whose solution is u = 0 (no load, no precompressed
+    /// bed, at rest); after the foundation's setup.
+    void
+    check_not_trivial() const;
+
+    bool
+    is_dynamic() const;
+    /// What the TimeStepper works on.
+    TimeStepper::Parts
+    for_stepper();
+
+    Analysis                     analysis = Analysis::dynamic_analysis;
+    InitialConditions            initial_conditions;
+    MindlinPlate                 plate;
+    Discretization               discretization;
+    PlateMatrices                matrices;
+    TensionlessWinklerFoundation foundation;
+    LoadSet                      loads;
+    NewmarkIntegrator            newmark;
+    EnergyCheck                  energy_check;
+    MeshRefinement               mesh_refinement;
+    ActiveSetIteration           active_set;
+  };
+} // namespace liftoff

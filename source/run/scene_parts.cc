@@ -1,0 +1,141 @@
+#include <liftoff/base/selection.h>
+#include <liftoff/run/scene_parts.h>
+
+namespace liftoff
+{
+  namespace
+  {
+    using Analysis                     = SceneParts::Analysis;
+    const Selection<Analysis> analyses = {
+      {"dynamic", Analysis::dynamic_analysis},
+      {"static", Analysis::static_analysis}};
+  } // namespace
+
+
+  SceneParts::SceneParts(const MPI_Comm comm, SectionTimer &timer)
+      : discretization(comm)
+      , active_set(discretization, foundation, timer)
+  {}
+
+
+  void
+  SceneParts::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analysis");
+    prm.declare_entry("Type",
+                      "dynamic",
+                      analyses.pattern(),
+                      "dynamic: Newmark time integration to the end time; "
+                      "static: equilibrium under the loads at tau = 0.");
+    prm.leave_subsection();
+
+    InitialConditions::declare_parameters(prm);
+    MindlinPlate::declare_parameters(prm);
+    Discretization::declare_parameters(prm);
+    MeshRefinement::declare_parameters(prm);
+    TensionlessWinklerFoundation::declare_parameters(prm);
+    LoadSet::declare_parameters(prm);
+    NewmarkIntegrator::declare_parameters(prm);
+    EnergyCheck::declare_parameters(prm);
+    ActiveSetIteration::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
+  }
+
+
+  void
+  SceneParts::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analysis");
+    analysis = analyses.parse(prm.get("Type"), "Analysis/Type");
+    prm.leave_subsection();
+    initial_conditions.parse_parameters(prm);
+    plate.parse_parameters(prm);
+    discretization.parse_parameters(prm, plate);
+    mesh_refinement.parse_parameters(prm);
+    foundation.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    newmark.parse_parameters(prm);
+    energy_check.parse_parameters(prm);
+    active_set.parse_parameters(prm);
+    active_set.linear_solver().parse_parameters(prm);
+  }
+
+
+  void
+  SceneParts::check() const
+  {
+    if (analysis == Analysis::static_analysis)
+      AssertThrow(discretization.has_kinematic_support()
+                    || foundation.model
+                         != TensionlessWinklerFoundation::Model::none,
+                  ExcMessage("Analysis/Type = static: a plate with all edges "
+                             "free and Foundation/Model = none has no static "
+                             "equilibrium."));
+
+    if (analysis == Analysis::dynamic_analysis)
+      newmark.check_end_time();
+    mesh_refinement.check_against(discretization);
+  }
+
+
+  void
+  SceneParts::setup_mesh()
+  {
+    // The direct solver's factor dominates a large scene: what it and the
+    // mesh would allocate is estimated before anything is built.
+    discretization.check_memory(active_set.linear_solver().factor_placement());
+    discretization.setup();
+    mesh_refinement.refine_around_points(
+      discretization, loads.point_load_positions(discretization));
+    if (analysis == Analysis::static_analysis)
+      loads.check_against(discretization, 0.0, 0);
+    else
+      loads.check_against(discretization, newmark.time_step, newmark.n_steps());
+  }
+
+
+  void
+  SceneParts::check_not_trivial() const
+  {
+    // Nothing to compute: most likely a load whose Magnitude was left at its
+    // default 0.
+    if (loads.is_empty() && !foundation.is_pressing_plate())
+      AssertThrow(analysis == Analysis::dynamic_analysis
+                    && !initial_conditions.is_at_rest(discretization),
+                  ExcMessage(
+                    "The scene has no load (every Loads/.../Magnitude is 0)"
+                    + std::string(analysis == Analysis::dynamic_analysis
+                                    ? " and starts at rest (Initial "
+                                      "conditions are 0)"
+                                    : "")
+                    + " on a bed that presses nowhere (Foundation/Initial "
+                      "gap >= 0), so its solution is u = 0. Give a load a "
+                      "Magnitude"
+                    + (analysis == Analysis::dynamic_analysis
+                         ? ", or the plate an initial displacement or "
+                           "velocity."
+                         : ".")));
+  }
+
+
+  bool
+  SceneParts::is_dynamic() const
+  {
+    return analysis == Analysis::dynamic_analysis;
+  }
+
+
+  TimeStepper::Parts
+  SceneParts::for_stepper()
+  {
+    return {plate,
+            discretization,
+            matrices,
+            foundation,
+            loads,
+            newmark,
+            energy_check,
+            mesh_refinement,
+            active_set};
+  }
+} // namespace liftoff

@@ -1,0 +1,779 @@
+#include <deal.II/base/mpi.h>
+
+#include <liftoff/base/number_text.h>
+#include <liftoff/base/output_files.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/initial_conditions.h>
+#include <liftoff/fem/load_set.h>
+#include <liftoff/fem/mesh_refinement.h>
+#include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/plate_matrices.h>
+#include <liftoff/fem/point_functional.h>
+#include <liftoff/time/energy_check.h>
+#include <liftoff/time/newmark_integrator.h>
+#include <liftoff/time/time_stepper.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace liftoff
+{
+  namespace
+  {
+    // Why an active-set iteration did not settle, for error messages.
+    std::string
+    unsettled(const ActiveSetIteration::Result &result,
+              const unsigned int                max_iterations)
+    {
+      if (result.cycle_length > 0)
+        return "went round a cycle of " + std::to_string(result.cycle_length)
+               + " sets";
+      return "did not settle in " + std::to_string(max_iterations)
+             + " iterations";
+    }
+
+    /// "a; or b; or c.": the likely causes of a failure, most likely first.
+    std::string
+    as_alternatives(const std::vector<std::string> &causes)
+    {
+      std::string text;
+      for (const auto &cause : causes)
+        text += (text.empty() ? "" : "; or ") + cause;
+      return text + ".";
+    }
+  } // namespace
+
+
+  TimeStepper::TimeStepper(const Parts   &parts,
+                           const Options &options,
+                           SectionTimer  &timer)
+      : plate(parts.plate)
+      , discretization(parts.discretization)
+      , matrices(parts.matrices)
+      , foundation(parts.foundation)
+      , loads(parts.loads)
+      , newmark(parts.newmark)
+      , energy_check(parts.energy_check)
+      , mesh_refinement(parts.mesh_refinement)
+      , active_set(parts.active_set)
+      , options(options)
+      , timer(timer)
+  {}
+
+
+  void
+  TimeStepper::setup()
+  {
+    build_on_current_mesh(false);
+  }
+
+
+  void
+  TimeStepper::build_on_current_mesh(const bool keep_motion)
+  {
+    {
+      SectionTimer::Scope t(timer, "assembly");
+      matrices.assemble(discretization, plate);
+    }
+    SectionTimer::Scope t(timer, "setup");
+    foundation.setup(discretization);
+    loads.setup(discretization);
+    if (!keep_motion)
+      for (auto *vector : {&state_.u, &state_.v, &state_.a})
+        discretization.reinit_vector(*vector);
+    for (auto *vector : {&state_.load,
+                         &state_.balance,
+                         &next_load,
+                         &rhs,
+                         &u_next,
+                         &scratch,
+                         &scratch_2,
+                         &dashpot_force})
+      discretization.reinit_vector(*vector);
+    discretization.reinit_ghosted_vector(state_.ghosted_u);
+    discretization.reinit_ghosted_vector(ghosted_scratch);
+    state_.ghosted_u   = state_.u;
+    largest_eigenvalue = 0;
+  }
+
+
+  void
+  TimeStepper::set_initial_state(const InitialConditions &initial_conditions)
+  {
+    initial_conditions.interpolate(discretization, state_.u, state_.v);
+    state_.ghosted_u = state_.u;
+  }
+
+
+  void
+  TimeStepper::check_time_step()
+  {
+    if (!newmark.is_conditionally_stable())
+      return;
+    const double limit = stable_time_step();
+    AssertThrow(
+      newmark.time_step <= limit,
+      ExcMessage(
+        "Time integration/Time step = " + format_number(newmark.time_step)
+        + " exceeds the stability limit " + format_number(limit)
+        + " of Newmark's method with Beta = " + format_number(newmark.beta)
+        + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
+        + " (omega_max^2 of M^-1 (K + K_f) estimated as "
+        + format_number(largest_eigenvalue)
+        + (n_new_meshes > 0
+             ? " on the mesh refined at step " + std::to_string(state_.step)
+             : std::string())
+        + "): the run would blow up. Use a smaller Time "
+          "step or Beta >= Gamma/2 (e.g. 0.25 and 0.5)"
+        + (mesh_refinement.is_enabled()
+             ? ", or a smaller Mesh refinement/Maximum level."
+             : ".")));
+  }
+
+
+  double
+  TimeStepper::stable_time_step()
+  {
+    if (largest_eigenvalue == 0)
+      {
+        SectionTimer::Scope t(timer, "stability limit");
+        // Every spring in contact (the status setup() leaves): the stiffest
+        // the foundation can make the plate.
+        LA::MPI::Vector ghosted;
+        discretization.reinit_ghosted_vector(ghosted);
+        largest_eigenvalue = matrices.largest_eigenvalue(
+          discretization, [&](const LA::MPI::Vector &x, LA::MPI::Vector &y) {
+            ghosted = x;
+            foundation.add_reaction(ghosted, y);
+          });
+      }
+    return newmark.stable_time_step(largest_eigenvalue);
+  }
+
+
+  void
+  TimeStepper::require_finite(
+    const unsigned int                          step,
+    const double                                tau,
+    const std::string                          &what,
+    const std::vector<const LA::MPI::Vector *> &vectors,
+    const std::vector<double>                  &numbers,
+    const std::function<std::string()>         &cause)
+  {
+    bool finite = std::all_of(numbers.begin(), numbers.end(), [](double x) {
+      return std::isfinite(x);
+    });
+    for (const auto *vector : vectors)
+      finite = finite && has_finite_local_entries(*vector);
+    if (Utilities::MPI::min(static_cast<int>(finite),
+                            discretization.mpi_communicator)
+        == 1)
+      return;
+    AssertThrow(false,
+                ExcMessage("Step " + std::to_string(step)
+                           + " (tau = " + format_number(tau) + "): " + what
+                           + " is not a finite number. Likely cause: "
+                           + cause()));
+  }
+
+
+  void
+  TimeStepper::require_finite_state(
+    const std::string                          &what,
+    const std::vector<const LA::MPI::Vector *> &vectors,
+    const std::vector<double>                  &numbers,
+    const LA::MPI::Vector                      &load)
+  {
+    require_finite(state_.step, state_.tau, what, vectors, numbers, [&]() {
+      return cause_of_non_finite_state(load);
+    });
+  }
+
+
+  std::string
+  TimeStepper::cause_of_non_finite_state(const LA::MPI::Vector &load)
+  {
+    if (newmark.is_conditionally_stable() && options.is_dynamic)
+      return "Newmark's method with Beta = " + format_number(newmark.beta)
+             + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
+             + " is stable only for Time step <= about "
+             + format_number(stable_time_step())
+             + " (an estimate from below of omega_max); Time integration/Time "
+               "step = "
+             + format_number(newmark.time_step) + " is too large for it.";
+    return "the values overflow the range of double: the largest load "
+           "entry is "
+           + format_number(load.linfty_norm())
+           + "; check Loads/.../Magnitude and the initial conditions.";
+  }
+
+
+  bool
+  TimeStepper::checks_energy() const
+  {
+    // The balance is a law of the scheme only where the scheme conserves
+    // the energy or can only lose it; Beta != 1/4 with Gamma = 1/2
+    // conserves another energy (Beta = 1/2 on a quarter plate under a
+    // sudden point load: 0.335 of the scale at the first step).
+    return options.is_dynamic && energy_check.is_enabled()
+           && (newmark.conserves_energy() || newmark.dissipates_energy());
+  }
+
+
+  void
+  TimeStepper::check_energy_balance()
+  {
+    if (!checks_energy())
+      return;
+    if (!energy_check.exceeds(state_.step,
+                              state_.energies,
+                              state_.initial_energies,
+                              newmark.dissipates_energy()))
+      return;
+    const std::string message =
+      "Step " + std::to_string(state_.step) + " (tau = "
+      + format_number(state_.tau) + "): " + energy_check.describe_violation()
+      + ". Likely cause: " + likely_cause_of_energy_error();
+    AssertThrow(energy_check.mode() != EnergyCheck::Mode::fail,
+                ExcMessage(message));
+    warning = message;
+    if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
+      std::cerr << "liftoff: warning: " << message << std::endl;
+  }
+
+
+  std::string
+  TimeStepper::likely_cause_of_energy_error() const
+  {
+    std::vector<std::string> causes;
+    // The plate on its springs swings at sqrt(Gamma) (unit mass): a step
+    // longer than a radian of that swing lets contact switch within it.
+    const double omega = foundation.rigid_body_frequency();
+    if (newmark.time_step * omega > 1)
+      causes.push_back(
+        "Time integration/Time step = " + format_number(newmark.time_step)
+        + " is long for the bed: the plate swings on it at "
+          "sqrt(Gamma) = "
+        + format_number(omega) + ", so Time step * sqrt(Gamma) = "
+        + format_number(newmark.time_step * omega)
+        + " > 1; use a Time step below " + format_number(1 / omega));
+    const double tolerance = active_set.linear_solver().relative_tolerance();
+    if (tolerance > 1e-8)
+      causes.push_back("Linear solver/Tolerance = " + format_number(tolerance)
+                       + " lets each solve miss its equations by that share; "
+                         "use 1e-10 or less");
+    if (causes.empty())
+      causes.push_back(
+        "a parameter near the end of its range (Foundation/Stiffness, Shear "
+        "modulus, Damping) or a mesh too coarse for the contact front; "
+        "compare a run with half the Time step");
+    return as_alternatives(causes);
+  }
+
+
+  std::string
+  TimeStepper::likely_cause_of_ill_conditioning() const
+  {
+    std::vector<std::string> causes;
+    const std::string        edge = discretization.only_supported_edge();
+    if (!edge.empty())
+      causes.push_back("the plate is held on one edge only (Boundary "
+                       "conditions/"
+                       + edge
+                       + "), about which it can turn: a mechanism that "
+                         "only the foundation's contact holds; clamp that "
+                         "edge or support another");
+    const double elongation = discretization.largest_cell_aspect_ratio();
+    if (elongation > 100)
+      causes.push_back("the cells are " + format_number(elongation)
+                       + " times longer than wide (Plate/Aspect ratio against "
+                         "Discretization/Cells along x and y); use cells "
+                         "closer to square");
+    if (causes.empty())
+      causes.push_back(
+        "a very small Foundation/Stiffness under a thin plate (Plate/Thickness "
+        "ratio) with free edges; use a stiffer foundation, support an edge "
+        "or run a dynamic analysis");
+    return as_alternatives(causes);
+  }
+
+
+  ActiveSetIteration::Result
+  TimeStepper::solve_static(const LA::MPI::Vector &load,
+                            const std::string     &what,
+                            const std::string     &during,
+                            const std::string     &remedy,
+                            const StopCheck       &stop_if_requested)
+  {
+    const auto support = discretization.has_kinematic_support()
+                           ? ActiveSetIteration::Support::held
+                           : ActiveSetIteration::Support::contact_only;
+    foundation.activate_all();
+    active_set.set_base_matrix([this](LA::MPI::SparseMatrix &base) {
+      base.copy_from(matrices.stiffness);
+    });
+
+    const auto result =
+      active_set.solve(load, state_.u, state_.ghosted_u, support);
+    require_finite_state("the static solution", {&state_.u}, {}, load);
+    // The one "step" of a static analysis is done: a stop request ends the
+    // run here, like a dynamic run after a step, with no result written.
+    stop_if_requested("during " + during + "; no result was written.");
+    check_static_solution(result, load, what, remedy);
+    return result;
+  }
+
+
+  void
+  TimeStepper::check_static_solution(const ActiveSetIteration::Result &result,
+                                     const LA::MPI::Vector            &load,
+                                     const std::string                &what,
+                                     const std::string                &remedy)
+  {
+    AssertThrow(!result.lost_contact,
+                ExcMessage(what
+                           + ": the plate lifts off the "
+                             "foundation everywhere (or keeps too little "
+                             "contact to be held) and has no support, so it "
+                             "has no static equilibrium under these loads. "
+                           + remedy));
+    AssertThrow(result.converged,
+                ExcMessage(what + ": the active set "
+                           + unsettled(result, active_set.max_iterations)
+                           + (result.cycle_length > 0
+                                ? " (Active set/Cycle rule = stop)."
+                                : " (Active set/Maximum iterations).")));
+    // A very soft foundation under a plate with free edges leaves the
+    // rigid-body motion held by Gamma alone: the system is regular, its
+    // residual small, and its answer still round-off. Measure, don't trust.
+    const double change = active_set.refinement_change(state_.u, load);
+    AssertThrow(change <= 1e-3,
+                ExcMessage(what
+                           + ": the solution is not accurate to "
+                             "0.1 %: one step of iterative refinement changes "
+                             "it by "
+                           + format_number(change)
+                           + " (relative). The system is too ill-conditioned "
+                             "for double precision. Likely cause: "
+                           + likely_cause_of_ill_conditioning()));
+  }
+
+
+  ActiveSetIteration::Result
+  TimeStepper::solve_static_analysis(const StopCheck &stop_if_requested)
+  {
+    LA::MPI::Vector &load = state_.load;
+    assemble_loads(0, 0.0, load);
+    const auto result =
+      solve_static(load,
+                   "Static analysis",
+                   "the static analysis",
+                   "Use a dynamic analysis or support an edge.",
+                   stop_if_requested);
+    // Loads applied proportionally: the response is positively homogeneous
+    // (max(w, 0) is), so their work is 1/2 F.u (Clapeyron) even with
+    // lift-off, and the balance column checks it against the state at
+    // rest. A gap makes the response affine; Clapeyron's identity at the
+    // equilibrium then gains the gap's term (gap_work()).
+    state_.work = 0.5 * discretization.n_symmetry_copies()
+                  * (load * state_.u + foundation.gap_work(state_.ghosted_u));
+    state_.energies = energies();
+    require_finite_state("an energy", {}, state_.energies.values(), load);
+    return result;
+  }
+
+
+  void
+  TimeStepper::settle_under_permanent_loads(const StopCheck &stop_if_requested)
+  {
+    SectionTimer::Scope t(timer, "permanent loads");
+    // The initial displacement is measured from the settled state.
+    LA::MPI::Vector initial_displacement = state_.u;
+    state_.u                             = 0;
+    loads.assemble_permanent(scratch);
+    solve_static(scratch,
+                 "The static equilibrium under Loads/Self weight, from "
+                 "which the time integration starts",
+                 "the static equilibrium under Loads/Self weight",
+                 "Give it a foundation (Foundation/Model) or support an "
+                 "edge.",
+                 stop_if_requested);
+    state_.u += initial_displacement;
+    state_.ghosted_u = state_.u;
+  }
+
+
+  bool
+  TimeStepper::adapt_mesh()
+  {
+    {
+      SectionTimer::Scope t(timer, "mesh refinement");
+      if (!mesh_refinement.mark_cells(discretization,
+                                      foundation,
+                                      loads.point_load_positions(
+                                        discretization),
+                                      state_.ghosted_u))
+        return false;
+      mesh_refinement.execute(discretization,
+                              {&state_.u, &state_.v, &state_.a});
+    }
+    ++n_new_meshes;
+    build_on_current_mesh(true);
+    return true;
+  }
+
+
+  std::optional<double>
+  TimeStepper::adapt_mesh_in_time_loop()
+  {
+    const double before = stored_energy();
+    if (!adapt_mesh())
+      return {};
+    // The state on the new mesh: its contact status at the new Gauss
+    // points, the load and force balance there, an acceleration in
+    // balance with them, the system matrix and its factor (once per mesh).
+    {
+      SectionTimer::Scope t(timer, "mesh refinement");
+      equilibrate(state_.step, state_.tau, "the acceleration after a new mesh");
+    }
+    // The foundation's setup on the new mesh left its matrix with the
+    // springs alone; the time steps' matrix holds the dashpots too (Gamma
+    // + c kappa). Without this, a damped adaptive run solved with
+    // Gamma alone after its first new mesh: balance error 0.38 of the
+    // energy scale (issue 31).
+    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
+    active_set.set_base_matrix(effective_base_matrix());
+    check_time_step();
+    state_.energies    = energies();
+    const double after = stored_energy();
+    return before > 0 ? (after - before) / before : 0.0;
+  }
+
+
+  double
+  TimeStepper::stored_energy()
+  {
+    const EnergyBalance e = state_energies();
+    return e.kinetic + e.strain + e.foundation;
+  }
+
+
+  EnergyBalance
+  TimeStepper::state_energies()
+  {
+    EnergyBalance e = energies_of(matrices,
+                                  foundation,
+                                  state_.u,
+                                  state_.ghosted_u,
+                                  state_.v,
+                                  discretization.n_symmetry_copies(),
+                                  state_.work,
+                                  scratch);
+    e.dissipated    = state_.dissipated;
+    return e;
+  }
+
+
+  EnergyBalance
+  TimeStepper::energies()
+  {
+    if (!options.records_energies && !checks_energy())
+      return EnergyBalance{0, 0, 0, state_.work, state_.dissipated};
+    return state_energies();
+  }
+
+
+  ActiveSetIteration::BaseMatrix
+  TimeStepper::effective_base_matrix() const
+  {
+    return [this](LA::MPI::SparseMatrix &base) {
+      base.copy_from(matrices.stiffness);
+      base.add(newmark.mass_factor(), matrices.mass);
+    };
+  }
+
+
+  void
+  TimeStepper::equilibrate(const unsigned int step,
+                           const double       tau,
+                           const std::string &what)
+  {
+    if (foundation.has_damping())
+      set_dashpots_to_velocity();
+    foundation.update_contact_status(state_.ghosted_u);
+    assemble_loads(step, tau, state_.load);
+    force_balance(state_.load, state_.balance);
+    if (foundation.has_damping())
+      compute_dashpot_force();
+    matrices.solve_with_mass(state_.a, state_.balance);
+    discretization.constraints.distribute(state_.a);
+    require_finite_state(what, {&state_.a}, {}, state_.load);
+  }
+
+
+  void
+  TimeStepper::start_time_integration(const StopCheck &stop_if_requested)
+  {
+    // The initial acceleration solves M a0 = F(0) - (K + K_f(u0)) u0 with
+    // the contact set of u0.
+    if (loads.has_permanent_loads())
+      settle_under_permanent_loads(stop_if_requested);
+    {
+      SectionTimer::Scope t(timer, "initial acceleration");
+      equilibrate(0, 0.0, "the initial acceleration");
+    }
+    // The energies with the contact status of the initial state (the shear
+    // layer's is taken over it), before the first iterate replaces it.
+    state_.energies         = energies();
+    state_.initial_energies = state_.energies;
+    require_finite_state("an energy",
+                         {},
+                         state_.energies.values(),
+                         state_.load);
+    // The first iterate is the bilateral problem.
+    foundation.activate_all();
+    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
+    active_set.set_base_matrix(effective_base_matrix());
+  }
+
+
+  ActiveSetIteration::Result
+  TimeStepper::do_step(const unsigned int step)
+  {
+    assemble_right_hand_side(step);
+    const auto iteration = solve_contact_problem(step);
+    advance(step);
+    return iteration;
+  }
+
+
+  void
+  TimeStepper::assemble_right_hand_side(const unsigned int step)
+  {
+    assemble_loads(step, step * newmark.time_step, next_load);
+    SectionTimer::Scope t(timer, "right hand side");
+    newmark.right_hand_side(matrices.mass,
+                            state_.u,
+                            state_.v,
+                            state_.a,
+                            next_load,
+                            state_.balance,
+                            scratch,
+                            rhs);
+  }
+
+
+  void
+  TimeStepper::set_dashpots_to_velocity()
+  {
+    // At a given state v is given: kappa = 0, o = -v.
+    scratch.equ(-1.0, state_.v);
+    ghosted_scratch = scratch;
+    foundation.set_dashpot_velocity(0.0, ghosted_scratch);
+  }
+
+
+  void
+  TimeStepper::compute_dashpot_force()
+  {
+    ghosted_scratch = state_.v;
+    dashpot_force   = 0;
+    foundation.add_dashpot_force(ghosted_scratch, dashpot_force);
+  }
+
+
+  ActiveSetIteration::Result
+  TimeStepper::solve_contact_problem(const unsigned int step)
+  {
+    if (foundation.has_damping())
+      {
+        // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
+        // is affine in the new displacement, like a spring on a gap.
+        newmark.velocity_offset(state_.u, state_.v, state_.a, scratch);
+        ghosted_scratch = scratch;
+        foundation.set_dashpot_velocity(newmark.velocity_factor(),
+                                        ghosted_scratch);
+      }
+    newmark.predict(state_.u, state_.v, state_.a, u_next);
+    // The first step starts from the bilateral set: the predictor has no
+    // motion yet to extrapolate.
+    const auto result = active_set.solve(rhs,
+                                         u_next,
+                                         state_.ghosted_u,
+                                         ActiveSetIteration::Support::held,
+                                         step > 1);
+    // Before the convergence test: a nan makes the contact set wander.
+    const double tau = step * newmark.time_step;
+    require_finite(step, tau, "the solution", {&u_next}, {}, [&]() {
+      return cause_of_non_finite_state(next_load);
+    });
+    AssertThrow(result.converged,
+                ExcMessage("The active set "
+                           + unsettled(result, active_set.max_iterations)
+                           + " at step " + std::to_string(step)
+                           + " (tau = " + format_number(tau)
+                           + (result.cycle_length > 0
+                                ? "); Active set/Cycle rule = stop asks "
+                                  "for this error; union resolves it."
+                                : "); raise Active set/Maximum iterations "
+                                  "or reduce Time integration/Time "
+                                  "step.")));
+    return result;
+  }
+
+
+  void
+  TimeStepper::advance(const unsigned int step)
+  {
+    state_.work += work_of_step(state_.u,
+                                u_next,
+                                state_.load,
+                                next_load,
+                                discretization.n_symmetry_copies(),
+                                scratch,
+                                scratch_2);
+    copy_values(next_load, state_.load);
+    newmark.advance(u_next, state_.u, state_.v, state_.a);
+    state_.step = step;
+    state_.tau  = step * newmark.time_step;
+    if (foundation.has_damping())
+      add_dissipated_energy();
+    if (newmark.needs_force_balance())
+      {
+        SectionTimer::Scope t(timer, "right hand side");
+        if (foundation.has_damping())
+          set_dashpots_to_velocity();
+        force_balance(state_.load, state_.balance);
+      }
+    state_.energies = energies();
+    require_finite_state("the velocity, acceleration or an energy",
+                         {&state_.v, &state_.a},
+                         state_.energies.values(),
+                         state_.load);
+    check_energy_balance();
+  }
+
+
+  void
+  TimeStepper::add_dissipated_energy()
+  {
+    // The dashpots' work over the step by the trapezoidal rule, as the
+    // loads': 1/2 (u_{n+1} - u_n).(f_n + f_{n+1}); `scratch` still holds
+    // u_{n+1} - u_n from work_of_step().
+    LA::MPI::Vector &previous_force = scratch_2;
+    previous_force                  = dashpot_force;
+    compute_dashpot_force();
+    previous_force += dashpot_force;
+    state_.dissipated +=
+      0.5 * discretization.n_symmetry_copies() * (scratch * previous_force);
+  }
+
+
+  void
+  TimeStepper::assemble_loads(const unsigned int step,
+                              const double       tau,
+                              LA::MPI::Vector   &load)
+  {
+    loads.assemble(tau, load);
+    require_finite(step, tau, "the load vector", {&load}, {}, [&]() {
+      return loads.non_finite_load(tau);
+    });
+  }
+
+
+  void
+  TimeStepper::force_balance(const LA::MPI::Vector &load,
+                             LA::MPI::Vector       &balance) const
+  {
+    matrices.stiffness.vmult(balance, state_.u);
+    foundation.add_reaction(state_.ghosted_u, balance);
+    balance.sadd(-1.0, 1.0, load);
+    if (foundation.has_gap())
+      foundation.add_gap_load(balance);
+  }
+
+
+  const PlateState &
+  TimeStepper::state() const
+  {
+    return state_;
+  }
+
+
+  double
+  TimeStepper::deflection_at(const Point<2> &p) const
+  {
+    const PointFunctional probe(discretization,
+                                discretization.to_modelled_part(p));
+    return Utilities::MPI::sum(probe.local_value(state_.ghosted_u),
+                               discretization.mpi_communicator);
+  }
+
+
+  TensionlessWinklerFoundation::PressureRange
+  TimeStepper::contact_pressure_range() const
+  {
+    LA::MPI::Vector v;
+    discretization.reinit_ghosted_vector(v);
+    v = state_.v;
+    return foundation.pressure_range(state_.ghosted_u, v);
+  }
+
+
+  const std::string &
+  TimeStepper::energy_warning() const
+  {
+    return warning;
+  }
+
+
+  unsigned int
+  TimeStepper::n_adaptations() const
+  {
+    return n_new_meshes;
+  }
+
+
+  template <class Archive>
+  void
+  TimeStepper::serialize_state(Archive &archive)
+  {
+    archive &state_;
+    archive &energy_check;
+  }
+
+
+  template <class Archive>
+  void
+  TimeStepper::serialize_contact(Archive &archive)
+  {
+    if constexpr (Archive::is_loading::value)
+      {
+        // The matrix of the time steps, which the saved one is, holds the
+        // dashpots (Gamma + c kappa).
+        foundation.set_matrix_velocity_factor(newmark.velocity_factor());
+        transfer(archive, foundation);
+        active_set.load(archive, effective_base_matrix());
+        // The dashpots' force of the saved state, for the next step's
+        // dissipation.
+        if (foundation.has_damping())
+          compute_dashpot_force();
+      }
+    else
+      {
+        transfer(archive, foundation);
+        active_set.save(archive);
+      }
+  }
+
+
+  template void
+  TimeStepper::serialize_state(InputArchive &);
+  template void
+  TimeStepper::serialize_state(OutputArchive &);
+  template void
+  TimeStepper::serialize_contact(InputArchive &);
+  template void
+  TimeStepper::serialize_contact(OutputArchive &);
+} // namespace liftoff
