@@ -154,8 +154,7 @@ namespace liftoff
   {
     if (analysis == Analysis::static_analysis)
       AssertThrow(discretization.has_kinematic_support()
-                    || foundation.model
-                         != TensionlessWinklerFoundation::Model::none,
+                    || foundation.law().model() != ContactLaw::Model::none,
                   ExcMessage("Analysis/Type = static: a plate with all edges "
                              "free and Foundation/Model = none has no static "
                              "equilibrium."));
@@ -263,7 +262,7 @@ namespace liftoff
     }
     // Nothing to compute: most likely a load whose Magnitude was left at its
     // default 0.
-    if (loads.is_empty() && !foundation.is_pressing_plate())
+    if (loads.is_empty() && !foundation.law().is_pressing_plate())
       AssertThrow(analysis == Analysis::dynamic_analysis
                     && !initial_conditions.is_at_rest(discretization),
                   ExcMessage(
@@ -454,7 +453,7 @@ namespace liftoff
     std::vector<std::string> causes;
     // The plate on its springs swings at sqrt(Gamma) (unit mass): a step
     // longer than a radian of that swing lets contact switch within it.
-    const double omega = foundation.rigid_body_frequency();
+    const double omega = foundation.law().rigid_body_frequency();
     if (newmark.time_step * omega > 1)
       causes.push_back(
         "Time integration/Time step = " + format_time(newmark.time_step)
@@ -640,7 +639,7 @@ namespace liftoff
                         discretization,
                         foundation,
                         iteration,
-                        foundation.contact_area_fraction(),
+                        foundation.diagnostics().contact_area_fraction(),
                         is_static ? 0.0 : newmark.time_step,
                         is_static ? 0 : newmark.n_steps(),
                         is_static || state.step == newmark.n_steps()};
@@ -656,15 +655,18 @@ namespace liftoff
                           const std::string     &what,
                           const std::string     &during)
   {
-    const bool needs_contact    = !discretization.has_kinematic_support();
-    active_set.requires_contact = needs_contact;
+    // The plate at rest: the springs' Gamma (w - g), no dashpot force.
+    const SpringPressure             pressure = foundation.law().pressure();
+    const ActiveSetIteration::System system{
+      load, pressure, !discretization.has_kinematic_support()};
     foundation.activate_all();
-    active_set.set_base_matrix([this](LA::MPI::SparseMatrix &base) {
-      base.copy_from(matrices.stiffness);
-    });
+    active_set.set_base_matrix(
+      [this](LA::MPI::SparseMatrix &base) {
+        base.copy_from(matrices.stiffness);
+      },
+      0.0);
 
-    const auto result = active_set.solve(load, state.u, state.ghosted_u);
-    active_set.requires_contact = false;
+    const auto result = active_set.solve(system, state.u, state.ghosted_u);
     require_finite_state("the static solution", {&state.u}, {}, load);
     // The one "step" of a static analysis is done: a stop request ends the
     // run here, like a dynamic run after a step, with no result written.
@@ -690,7 +692,7 @@ namespace liftoff
     // A very soft foundation under a plate with free edges leaves the
     // rigid-body motion held by Gamma alone: the system is regular, its
     // residual small, and its answer still round-off. Measure, don't trust.
-    const double change = active_set.refinement_change(state.u, load);
+    const double change = active_set.refinement_change(state.u, system);
     AssertThrow(change <= 1e-3,
                 ExcMessage(what
                            + ": the solution is not accurate to "
@@ -729,14 +731,15 @@ namespace liftoff
     // lift-off, and the balance column checks it against the state at
     // rest. A gap makes the response affine; Clapeyron's identity at the
     // equilibrium then gains the gap's term (gap_work()).
-    state.work = 0.5 * discretization.n_symmetry_copies()
-                 * (load * state.u + foundation.gap_work(state.ghosted_u));
+    state.work =
+      0.5 * discretization.n_symmetry_copies()
+      * (load * state.u + foundation.diagnostics().gap_work(state.ghosted_u));
     state.energies = energies();
     require_finite_state("an energy", {}, state.energies.values(), load);
     record(result);
     pcout << "static: " << result.iterations << " active-set iterations, "
-          << "contact fraction " << foundation.contact_area_fraction()
-          << std::endl;
+          << "contact fraction "
+          << foundation.diagnostics().contact_area_fraction() << std::endl;
   }
 
 
@@ -788,11 +791,11 @@ namespace liftoff
   {
     {
       SectionTimer::Scope t(timer, "mesh refinement");
-      if (!mesh_refinement.mark_cells(discretization,
-                                      foundation,
-                                      loads.point_load_positions(
-                                        discretization),
-                                      state.ghosted_u))
+      if (!mesh_refinement.mark_cells(
+            discretization,
+            foundation.diagnostics().contact_fraction_per_cell(),
+            loads.point_load_positions(discretization),
+            state.ghosted_u))
         return false;
       mesh_refinement.execute(discretization, {&state.u, &state.v, &state.a});
     }
@@ -869,13 +872,12 @@ namespace liftoff
       SectionTimer::Scope t(timer, "mesh refinement");
       equilibrate(state.step, state.tau, "the acceleration after a new mesh");
     }
-    // The foundation's setup on the new mesh left its matrix with the
-    // springs alone; the time steps' matrix holds the dashpots too (Gamma
-    // + c kappa). Without this, a damped adaptive run solved with
-    // Gamma alone after its first new mesh: balance error 0.38 of the
-    // energy scale (issue 31).
-    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
-    active_set.set_base_matrix(effective_base_matrix());
+    // The time steps' matrix holds the dashpots too (Gamma + c kappa):
+    // kappa is the argument, no longer a setting that the foundation's
+    // setup on the new mesh reset to 0 (a damped adaptive run then solved
+    // with Gamma alone: balance error 0.38 of the energy scale, issue 31).
+    active_set.set_base_matrix(effective_base_matrix(),
+                               newmark.velocity_factor());
     check_time_step();
     state.energies      = energies();
     const double after  = stored();
@@ -894,7 +896,8 @@ namespace liftoff
     unsigned int r = 0;
     for (; r < mesh_refinement.n_initial_refinements(); ++r)
       {
-        foundation.update_contact_status(state.ghosted_u);
+        foundation.update_contact_status(state.ghosted_u,
+                                         foundation.law().pressure());
         if (!adapt_mesh())
           break;
         // The fields themselves, not their interpolant on the old mesh.
@@ -922,11 +925,10 @@ namespace liftoff
                          const double       tau,
                          const std::string &what)
   {
-    if (foundation.has_damping())
-      set_dashpots_to_velocity();
-    foundation.update_contact_status(state.ghosted_u);
+    const SpringPressure pressure = pressure_at_state_velocity();
+    foundation.update_contact_status(state.ghosted_u, pressure);
     assemble_loads(step, tau, state.load);
-    force_balance(state.load, state.balance);
+    force_balance(state.load, pressure, state.balance);
     if (foundation.has_damping())
       compute_dashpot_force();
     matrices.solve_with_mass(state.a, state.balance);
@@ -954,8 +956,8 @@ namespace liftoff
     require_finite_state("an energy", {}, state.energies.values(), state.load);
     // The first iterate is the bilateral problem.
     foundation.activate_all();
-    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
-    active_set.set_base_matrix(effective_base_matrix());
+    active_set.set_base_matrix(effective_base_matrix(),
+                               newmark.velocity_factor());
     record({});
   }
 
@@ -972,7 +974,6 @@ namespace liftoff
         state.reinit(discretization);
         rebuild_on_new_mesh();
       }
-    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
     checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
       serialize(archive, Checkpoint::format);
     });
@@ -1006,13 +1007,15 @@ namespace liftoff
   }
 
 
-  void
-  Simulator::set_dashpots_to_velocity()
+  SpringPressure
+  Simulator::pressure_at_state_velocity()
   {
+    if (!foundation.has_damping())
+      return foundation.law().pressure();
     // At a given state v is given: kappa = 0, o = -v.
     scratch.equ(-1.0, state.v);
     ghosted_scratch = scratch;
-    foundation.set_dashpot_velocity(0.0, ghosted_scratch);
+    return foundation.law().pressure(0.0, ghosted_scratch);
   }
 
 
@@ -1028,20 +1031,21 @@ namespace liftoff
   ActiveSetIteration::Result
   Simulator::solve_contact_problem(const unsigned int step)
   {
+    SpringPressure pressure = foundation.law().pressure();
     if (foundation.has_damping())
       {
         // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
         // is affine in the new displacement, like a spring on a gap.
         newmark.velocity_offset(state.u, state.v, state.a, scratch);
         ghosted_scratch = scratch;
-        foundation.set_dashpot_velocity(newmark.velocity_factor(),
-                                        ghosted_scratch);
+        pressure =
+          foundation.law().pressure(newmark.velocity_factor(), ghosted_scratch);
       }
     newmark.predict(state.u, state.v, state.a, u_next);
     // The first step starts from the bilateral set: the predictor has no
     // motion yet to extrapolate.
     const auto result =
-      active_set.solve(rhs, u_next, state.ghosted_u, step > 1);
+      active_set.solve({rhs, pressure}, u_next, state.ghosted_u, step > 1);
     // Before the convergence test: a nan makes the contact set wander.
     const double tau = step * newmark.time_step;
     require_finite(step, tau, "the solution", {&u_next}, {}, [&]() {
@@ -1091,9 +1095,7 @@ namespace liftoff
     if (newmark.needs_force_balance())
       {
         SectionTimer::Scope t(timer, "right hand side");
-        if (foundation.has_damping())
-          set_dashpots_to_velocity();
-        force_balance(state.load, state.balance);
+        force_balance(state.load, pressure_at_state_velocity(), state.balance);
       }
     state.energies = energies();
     require_finite_state("the velocity, acceleration or an energy",
@@ -1164,7 +1166,9 @@ namespace liftoff
     archive &adaptation_pending;
     transfer(archive, foundation);
     if constexpr (Archive::is_loading::value)
-      active_set.load(archive, effective_base_matrix());
+      active_set.load(archive,
+                      effective_base_matrix(),
+                      newmark.velocity_factor());
     else
       active_set.save(archive);
     for (Output *output : outputs)
@@ -1187,13 +1191,14 @@ namespace liftoff
 
   void
   Simulator::force_balance(const LA::MPI::Vector &load,
+                           const SpringPressure  &pressure,
                            LA::MPI::Vector       &balance) const
   {
     matrices.stiffness.vmult(balance, state.u);
     foundation.add_reaction(state.ghosted_u, balance);
     balance.sadd(-1.0, 1.0, load);
     if (foundation.has_gap())
-      foundation.add_gap_load(balance);
+      foundation.add_gap_load(pressure, balance);
   }
 
 
@@ -1316,13 +1321,13 @@ namespace liftoff
   }
 
 
-  TensionlessWinklerFoundation::PressureRange
+  FoundationDiagnostics::PressureRange
   Simulator::contact_pressure_range() const
   {
     LA::MPI::Vector v;
     discretization.reinit_ghosted_vector(v);
     v = state.v;
-    return foundation.pressure_range(state.ghosted_u, v);
+    return foundation.diagnostics().pressure_range(state.ghosted_u, v);
   }
 
 

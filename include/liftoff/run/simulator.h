@@ -97,8 +97,8 @@ namespace liftoff
     solution() const;
     /// The foundation pressure Gamma (w - g) + c v at the Gauss points of
     /// the state (collective; see
-    /// TensionlessWinklerFoundation::pressure_range()).
-    TensionlessWinklerFoundation::PressureRange
+    /// FoundationDiagnostics::pressure_range()).
+    FoundationDiagnostics::PressureRange
     contact_pressure_range() const;
     /// The signal (SIGINT, SIGTERM) that stopped the run, or 0.
     int
@@ -279,10 +279,10 @@ namespace liftoff
     /// which a time integration starts.
     void
     settle_under_permanent_loads();
-    /// The foundation's dashpots at the state's velocity (for the contact
-    /// rule and the force balance at a given state).
-    void
-    set_dashpots_to_velocity();
+    /// The bed's pressure at the state's velocity (for the contact rule
+    /// and the force balance at a given state).
+    SpringPressure
+    pressure_at_state_velocity();
     /// dashpot_force = c int_S v phi of the state.
     void
     compute_dashpot_force();
@@ -349,9 +349,11 @@ namespace liftoff
     EnergyBalance
     energies();
     /// F - K u - K_f(S) u + f_g(S) for the current state u and contact set
-    /// S (f_g: the springs' push on a gap).
+    /// S (f_g: the springs' push on a gap, for `pressure`).
     void
-    force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
+    force_balance(const LA::MPI::Vector &load,
+                  const SpringPressure  &pressure,
+                  LA::MPI::Vector       &balance) const;
     void
     write_summary(const std::string &status) const;
     bool
