@@ -270,6 +270,30 @@ namespace liftoff
   }
 
 
+  std::optional<unsigned long>
+  ActiveSetIteration::iterate(const System    &system,
+                              LA::MPI::Vector &solution,
+                              LA::MPI::Vector &ghosted_solution)
+  {
+    // While the set may still change, a solution only decides the next
+    // one; the solve to the full tolerance waits until a set holds, and
+    // the set is asked again for its solution.
+    const auto                         accuracy = solver.has_looser_trials()
+                                                    ? LinearSolver::Accuracy::trial
+                                                    : LinearSolver::Accuracy::final;
+    const std::optional<unsigned long> n_changed =
+      solve_and_update_set(system, solution, ghosted_solution, accuracy);
+    if (n_changed && *n_changed == 0
+        && accuracy == LinearSolver::Accuracy::trial
+        && !solver.last_solve_met_tolerance())
+      return solve_and_update_set(system,
+                                  solution,
+                                  ghosted_solution,
+                                  LinearSolver::Accuracy::final);
+    return n_changed;
+  }
+
+
   unsigned int
   ActiveSetIteration::find_in(
     const std::vector<std::vector<unsigned char>> &visited) const
@@ -354,21 +378,8 @@ namespace liftoff
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
-        // While the set may still change, a solution only decides the next
-        // one; the solve to the full tolerance waits until a set holds,
-        // and the set is asked again for its solution.
-        const auto                   accuracy = solver.has_looser_trials()
-                                                  ? LinearSolver::Accuracy::trial
-                                                  : LinearSolver::Accuracy::final;
-        std::optional<unsigned long> n_changed =
-          solve_and_update_set(system, solution, ghosted_solution, accuracy);
-        if (n_changed && *n_changed == 0
-            && accuracy == LinearSolver::Accuracy::trial
-            && !solver.last_solve_met_tolerance())
-          n_changed = solve_and_update_set(system,
-                                           solution,
-                                           ghosted_solution,
-                                           LinearSolver::Accuracy::final);
+        const std::optional<unsigned long> n_changed =
+          iterate(system, solution, ghosted_solution);
         if (!n_changed)
           {
             result.lost_contact = true;

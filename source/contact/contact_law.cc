@@ -15,6 +15,83 @@ namespace liftoff
     const Selection<Model> model_names = {{"tensionless", Model::tensionless},
                                           {"bilateral", Model::bilateral},
                                           {"none", Model::none}};
+
+    /// The springs' entries of `Foundation`.
+    void
+    declare_spring_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Model",
+                        "tensionless",
+                        model_names.pattern(),
+                        "tensionless: springs act only where w > 0; bilateral: "
+                        "linear springs of both signs (for checks); none: no "
+                        "foundation.");
+      prm.declare_entry("Stiffness",
+                        "1",
+                        Patterns::Double(0.0, 1e12),
+                        "Gamma = K_f L^4 / D, the dimensionless Winkler "
+                        "modulus (at most 1e12: beyond it the plate's "
+                        "stiffness is lost in the bed's in double precision; "
+                        "at 1e16 a static run gave w 3e4 times too large "
+                        "with a balanced energy, doc/reliability.md).");
+      prm.declare_entry(
+        "Contact tolerance",
+        "1e-9",
+        Patterns::Double(0.0, 1e-3),
+        "Round-off band of the contact rule, relative to max |w_h| over all "
+        "Gauss points of the plate: a point comes into contact when w_h rises "
+        "above tolerance * max |w_h| and leaves it when w_h falls below "
+        "-tolerance * max |w_h|; inside the band it keeps its status. There "
+        "the sign of w_h would depend on the linear solver and the number of "
+        "ranks. 0 gives the bare rule w_h > 0. At most 1e-3: a point in the "
+        "band may keep or lack a spring force of up to tolerance * Gamma * "
+        "max |w_h|, so the band perturbs the foundation pressure by up to "
+        "tolerance times its peak; 1e-3 still covers the worst round-off the "
+        "Plate bounds admit (6e-4 at Delta = 1e-5), while a tolerance of 1 "
+        "freezes every status and makes the foundation bilateral.");
+    }
+
+
+    /// The gap, dashpots and shear layer beside the springs.
+    void
+    declare_parameters_beside_springs(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Initial gap",
+        "0",
+        Patterns::Anything(),
+        "g(x, y), muParser in x, y of the full plate: the distance between the "
+        "unloaded plate and the bed, in the unit of w, F0 L^2 / D (w is "
+        "positive into the bed). The springs act where w > g with the pressure "
+        "Gamma (w - g): "
+        "g > 0 is a gap (a curled slab, a void), g < 0 a pre-compression (a "
+        "settled support). Must be finite on the plate, and symmetric on a "
+        "half or quarter model. The contact tolerance applies to w - g.");
+      prm.declare_entry(
+        "Damping",
+        "0",
+        Patterns::Double(0.0, 1e8),
+        "c = C_f L^2 / sqrt(rho H D), dashpots per unit area beside the "
+        "springs (a viscous subgrade; 0: none; at most 1e8, where the "
+        "contact set of a point load no longer settles). They act only in "
+        "contact, "
+        "and the pressure Gamma (w - g) + c w_dot is never tensile: where "
+        "spring and dashpot together would pull, the point is out of contact "
+        "(doc/model.md). The dissipated energy becomes a history column.");
+      prm.declare_entry(
+        "Shear modulus",
+        "0",
+        Patterns::Double(0.0, 1e12),
+        "G_p = G_f L^2 / D, the dimensionless shear modulus of a Pasternak "
+        "shear layer on the springs (0: none, a Winkler bed; at most 1e12: at "
+        "1e14 the energy balance is off by 1.4e-3, at 1e20 by its whole "
+        "size). The layer "
+        "stores 1/2 G_p |grad w|^2 per unit area over the contact region "
+        "(the whole plate when bilateral) and adds -G_p Lap w to the "
+        "foundation pressure there. Tensionless: the layer acts only where "
+        "the plate is in contact, the layer outside is not modelled "
+        "(doc/model.md); the contact rule w > g is unchanged.");
+    }
   } // namespace
 
 
@@ -22,70 +99,8 @@ namespace liftoff
   ContactLaw::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Foundation");
-    prm.declare_entry("Model",
-                      "tensionless",
-                      model_names.pattern(),
-                      "tensionless: springs act only where w > 0; bilateral: "
-                      "linear springs of both signs (for checks); none: no "
-                      "foundation.");
-    prm.declare_entry("Stiffness",
-                      "1",
-                      Patterns::Double(0.0, 1e12),
-                      "Gamma = K_f L^4 / D, the dimensionless Winkler "
-                      "modulus (at most 1e12: beyond it the plate's "
-                      "stiffness is lost in the bed's in double precision; "
-                      "at 1e16 a static run gave w 3e4 times too large "
-                      "with a balanced energy, doc/reliability.md).");
-    prm.declare_entry(
-      "Contact tolerance",
-      "1e-9",
-      Patterns::Double(0.0, 1e-3),
-      "Round-off band of the contact rule, relative to max |w_h| over all "
-      "Gauss points of the plate: a point comes into contact when w_h rises "
-      "above tolerance * max |w_h| and leaves it when w_h falls below "
-      "-tolerance * max |w_h|; inside the band it keeps its status. There "
-      "the sign of w_h would depend on the linear solver and the number of "
-      "ranks. 0 gives the bare rule w_h > 0. At most 1e-3: a point in the "
-      "band may keep or lack a spring force of up to tolerance * Gamma * "
-      "max |w_h|, so the band perturbs the foundation pressure by up to "
-      "tolerance times its peak; 1e-3 still covers the worst round-off the "
-      "Plate bounds admit (6e-4 at Delta = 1e-5), while a tolerance of 1 "
-      "freezes every status and makes the foundation bilateral.");
-    prm.declare_entry(
-      "Initial gap",
-      "0",
-      Patterns::Anything(),
-      "g(x, y), muParser in x, y of the full plate: the distance between the "
-      "unloaded plate and the bed, in the unit of w, F0 L^2 / D (w is "
-      "positive into the bed). The springs act where w > g with the pressure "
-      "Gamma (w - g): "
-      "g > 0 is a gap (a curled slab, a void), g < 0 a pre-compression (a "
-      "settled support). Must be finite on the plate, and symmetric on a "
-      "half or quarter model. The contact tolerance applies to w - g.");
-    prm.declare_entry(
-      "Damping",
-      "0",
-      Patterns::Double(0.0, 1e8),
-      "c = C_f L^2 / sqrt(rho H D), dashpots per unit area beside the "
-      "springs (a viscous subgrade; 0: none; at most 1e8, where the "
-      "contact set of a point load no longer settles). They act only in "
-      "contact, "
-      "and the pressure Gamma (w - g) + c w_dot is never tensile: where "
-      "spring and dashpot together would pull, the point is out of contact "
-      "(doc/model.md). The dissipated energy becomes a history column.");
-    prm.declare_entry(
-      "Shear modulus",
-      "0",
-      Patterns::Double(0.0, 1e12),
-      "G_p = G_f L^2 / D, the dimensionless shear modulus of a Pasternak "
-      "shear layer on the springs (0: none, a Winkler bed; at most 1e12: at "
-      "1e14 the energy balance is off by 1.4e-3, at 1e20 by its whole "
-      "size). The layer "
-      "stores 1/2 G_p |grad w|^2 per unit area over the contact region "
-      "(the whole plate when bilateral) and adds -G_p Lap w to the "
-      "foundation pressure there. Tensionless: the layer acts only where "
-      "the plate is in contact, the layer outside is not modelled "
-      "(doc/model.md); the contact rule w > g is unchanged.");
+    declare_spring_parameters(prm);
+    declare_parameters_beside_springs(prm);
     prm.leave_subsection();
   }
 

@@ -46,20 +46,7 @@ namespace liftoff
       {
         fe_values.reinit(cell);
         cell->get_dof_indices(dofs);
-        bool is_hanging = false;
-        for (const unsigned int i : w_dofs)
-          {
-            cell_w_dof_indices.push_back(dofs[i]);
-            // Constraints w_i = 0 (edges) drop a row and column of the
-            // cell term; a hanging node (w_i a combination of other
-            // nodes) sends them to those nodes (add_cell_matrix()).
-            const auto *entries =
-              disc.constraints.get_constraint_entries(dofs[i]);
-            is_hanging = is_hanging || (entries && !entries->empty());
-            cell_w_dof_is_constrained.push_back(
-              disc.constraints.is_constrained(dofs[i]));
-          }
-        cell_has_hanging_node.push_back(is_hanging);
+        add_cell_dofs(dofs);
         for (unsigned int q = 0; q < q_points_per_cell; ++q)
           {
             jxw.push_back(fe_values.JxW(q));
@@ -70,6 +57,26 @@ namespace liftoff
           }
         cell_index.push_back(cell->active_cell_index());
       }
+  }
+
+
+  void
+  FoundationPoints::add_cell_dofs(
+    const std::vector<types::global_dof_index> &dofs)
+  {
+    bool is_hanging = false;
+    for (const unsigned int i : w_dofs)
+      {
+        cell_w_dof_indices.push_back(dofs[i]);
+        // Constraints w_i = 0 (edges) drop a row and column of the cell
+        // term; a hanging node (w_i a combination of other nodes) sends
+        // them to those nodes (add_cell_matrix()).
+        const auto *entries = mesh->constraints.get_constraint_entries(dofs[i]);
+        is_hanging          = is_hanging || (entries && !entries->empty());
+        cell_w_dof_is_constrained.push_back(
+          mesh->constraints.is_constrained(dofs[i]));
+      }
+    cell_has_hanging_node.push_back(is_hanging);
   }
 
 

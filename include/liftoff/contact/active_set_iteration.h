@@ -195,6 +195,13 @@ namespace liftoff
                          LA::MPI::Vector       &ghosted_solution,
                          LinearSolver::Accuracy accuracy);
 
+    /// One iterate: solve_and_update_set(), with a trial solve whose set
+    /// held repeated to the full tolerance.
+    std::optional<unsigned long>
+    iterate(const System    &system,
+            LA::MPI::Vector &solution,
+            LA::MPI::Vector &ghosted_solution);
+
     /// No status changed in the last update, and none within the round-off
     /// band differs from `start_set`, the set the step began with (those
     /// are restored). Collective.

@@ -141,6 +141,11 @@ namespace liftoff
     const int *
     positions_in(const LA::MPI::Vector &u, const bool owned_only = false) const;
 
+    /// Append the w dofs of a cell (of global dofs `dofs`) and whether
+    /// they are constrained.
+    void
+    add_cell_dofs(const std::vector<types::global_dof_index> &dofs);
+
     /// add_cell_matrix() for a cell with hanging nodes: the cell matrix
     /// condensed with the constraints.
     void
