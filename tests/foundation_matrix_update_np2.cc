@@ -5,7 +5,9 @@
 // matrix; and K_f u from the matrix must equal the springs' reaction that
 // the foundation computes point by point. Runs on two ranks so that cells
 // on the partition boundary add to rows another rank owns. Edges are
-// clamped and simply supported so that constrained rows are present.
+// clamped and simply supported so that constrained rows are present. With
+// dashpots, the stiffness Gamma + c kappa of the matrices against a bed of
+// springs alone of that stiffness (check_velocity_factor()).
 
 #include <deal.II/base/function_lib.h>
 #include <deal.II/base/mpi.h>
@@ -102,7 +104,7 @@ namespace
     liftoff::LA::MPI::SparseMatrix updated, fresh;
     discretization.reinit_matrix(updated);
     discretization.reinit_matrix(fresh);
-    foundation.add_to_matrix(updated); // all points in contact
+    foundation.add_to_matrix(0.0, updated); // all points in contact
 
     liftoff::LA::MPI::Vector u, ghosted_u;
     discretization.reinit_vector(u);
@@ -120,20 +122,22 @@ namespace
                                  u);
         discretization.constraints.distribute(u);
         ghosted_u = u;
-        n_flipped += foundation.update_contact_status(ghosted_u);
+        n_flipped +=
+          foundation.update_contact_status(ghosted_u,
+                                           foundation.law().pressure());
         // Update only every other round, so some points flip twice between
         // two updates.
         if (round % 2 == 1)
-          foundation.update_matrix(updated);
+          foundation.update_matrix(0.0, updated);
       }
-    foundation.update_matrix(updated);
+    foundation.update_matrix(0.0, updated);
     checks.within(label + "status changes seen", double(n_flipped), 100, 1e9);
     checks.within(label + "contact fraction is partial",
-                  foundation.contact_area_fraction(),
+                  foundation.diagnostics().contact_area_fraction(),
                   0.1,
                   0.9);
 
-    foundation.add_to_matrix(fresh);
+    foundation.add_to_matrix(0.0, fresh);
     checks.less(
       label + "updated vs freshly assembled K_f (relative Frobenius norm)",
       matrix_difference(updated, fresh),
@@ -145,7 +149,7 @@ namespace
     {
       liftoff::LA::MPI::SparseMatrix earlier;
       discretization.reinit_matrix(earlier);
-      foundation.add_to_matrix(reference, earlier);
+      foundation.add_to_matrix(reference, 0.0, earlier);
       liftoff::LA::MPI::Vector x(u), from_matrices(u), change(u);
       liftoff::LA::MPI::Vector ghosted_x(ghosted_u);
       VectorTools::interpolate(discretization.mapping,
@@ -159,7 +163,7 @@ namespace
       earlier.vmult(earlier_x, x);
       from_matrices -= earlier_x;
       change = 0;
-      foundation.add_change_product(reference, ghosted_x, change);
+      foundation.add_change_product(reference, 0.0, ghosted_x, change);
       checks.within(
         label + "points whose status differs from the reference",
         double(Utilities::MPI::sum(
@@ -191,6 +195,88 @@ namespace
                 from_matrix.l2_norm() / reaction.l2_norm(),
                 1e-13);
   }
+
+
+  // With dashpots c, a system matrix holds the springs' stiffness
+  // Gamma + c kappa, kappa the velocity factor that every matrix call
+  // takes as its argument: the matrix assembled, kept up to date through
+  // status changes, and its change product. The foundation is set up
+  // again in between, as after a new mesh: when kappa was a setting of
+  // the foundation, that setup reset it to 0, and a damped adaptive run
+  // solved with Gamma alone (issue 31). Against a second method: the
+  // same statuses on a bed without dashpots whose Stiffness is
+  // Gamma + c kappa.
+  void
+  check_velocity_factor(liftoff_tests::Checks &checks)
+  {
+    const double     gamma = 37, c = 3, kappa = 5;
+    ParameterHandler prm;
+    liftoff::MindlinPlate::declare_parameters(prm);
+    liftoff::Discretization::declare_parameters(prm);
+    liftoff::TensionlessWinklerFoundation::declare_parameters(prm);
+    using liftoff_tests::set;
+    std::istringstream scene(set("Discretization/Symmetry", "full")
+                             + set("Discretization/Cells along x", 12)
+                             + set("Discretization/Cells along y", 10)
+                             + set("Discretization/Polynomial degree", 2)
+                             + set("Boundary conditions/Left", "clamped")
+                             + set("Foundation/Stiffness", gamma)
+                             + set("Foundation/Damping", c));
+    prm.parse_input(scene, "test scene");
+    liftoff::MindlinPlate plate;
+    plate.parse_parameters(prm);
+    liftoff::Discretization discretization(MPI_COMM_WORLD);
+    discretization.parse_parameters(prm, plate);
+    discretization.setup();
+    liftoff::TensionlessWinklerFoundation damped, reference;
+    damped.parse_parameters(prm);
+    std::istringstream springs_only(
+      set("Foundation/Stiffness", gamma + c * kappa)
+      + set("Foundation/Damping", 0));
+    prm.parse_input(springs_only, "springs only");
+    reference.parse_parameters(prm);
+    reference.setup(discretization);
+
+    liftoff::LA::MPI::SparseMatrix held, fresh;
+    discretization.reinit_matrix(held);
+    discretization.reinit_matrix(fresh);
+    damped.setup(discretization);
+    damped.add_to_matrix(kappa, held); // all points in contact
+    damped.setup(discretization);      // the same mesh again
+    const std::vector<unsigned char> all_in = damped.contact_status();
+
+    liftoff::LA::MPI::Vector u, ghosted_u;
+    discretization.reinit_vector(u);
+    discretization.reinit_ghosted_vector(ghosted_u);
+    VectorTools::interpolate(discretization.mapping,
+                             discretization.dof_handler,
+                             WavyDeflection(0.9),
+                             u);
+    discretization.constraints.distribute(u);
+    ghosted_u = u;
+    damped.update_contact_status(ghosted_u, damped.law().pressure());
+    checks.within("dashpots: points updated",
+                  double(damped.update_matrix(kappa, held)),
+                  100,
+                  1e9);
+    reference.set_contact_status(damped.contact_status());
+    reference.add_to_matrix(0.0, fresh);
+    checks.less("dashpots: matrix held with kappa vs springs Gamma + c kappa "
+                "(relative Frobenius norm)",
+                matrix_difference(held, fresh),
+                1e-14);
+
+    liftoff::LA::MPI::Vector product(u), expected(u);
+    product  = 0;
+    expected = 0;
+    damped.add_change_product(all_in, kappa, ghosted_u, product);
+    reference.add_change_product(all_in, 0.0, ghosted_u, expected);
+    product -= expected;
+    checks.less("dashpots: change product with kappa vs springs Gamma + c "
+                "kappa (relative)",
+                product.l2_norm() / expected.l2_norm(),
+                1e-14);
+  }
 } // namespace
 
 
@@ -201,5 +287,6 @@ main(int argc, char **argv)
   // Without a layer, and with one: its gradient terms go the same way.
   for (const double shear_modulus : {0.0, 3.0})
     check_updates(shear_modulus, checks);
+  check_velocity_factor(checks);
   return checks.exit_code();
 }

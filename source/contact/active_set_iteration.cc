@@ -110,6 +110,7 @@ namespace liftoff
     foundation.add_change_product(since == Since::factorisation
                                     ? factorised_status
                                     : solved_status,
+                                  velocity_factor,
                                   change_source,
                                   dst);
   }
@@ -124,31 +125,36 @@ namespace liftoff
 
 
   void
-  ActiveSetIteration::load(InputArchive &archive, const BaseMatrix &write)
+  ActiveSetIteration::load(InputArchive     &archive,
+                           const BaseMatrix &write,
+                           const double      kappa)
   {
     // The factor is rebuilt from the matrix it was built from, and then
     // the matrix is given the values it had.
     std::vector<double> current;
     archive >> current >> factorised_status;
-    write_base = write;
+    write_base      = write;
+    velocity_factor = kappa;
     discretization.reinit_matrix(matrix);
     write_base(matrix);
-    foundation.add_to_matrix(factorised_status, matrix);
+    foundation.add_to_matrix(factorised_status, velocity_factor, matrix);
     solver.load(archive, matrix, discretization, this);
     set_matrix_values(current, matrix);
   }
 
 
   void
-  ActiveSetIteration::set_base_matrix(const BaseMatrix &write)
+  ActiveSetIteration::set_base_matrix(const BaseMatrix &write,
+                                      const double      kappa)
   {
     {
       SectionTimer::Scope t(timer, "foundation update");
       solver.release();
-      write_base = write;
+      write_base      = write;
+      velocity_factor = kappa;
       discretization.reinit_matrix(matrix);
       write_base(matrix);
-      foundation.add_to_matrix(matrix);
+      foundation.add_to_matrix(velocity_factor, matrix);
       factorised_status = foundation.status_in_matrix();
     }
     solver.prepare(matrix, discretization, this);
@@ -161,7 +167,7 @@ namespace liftoff
     SectionTimer::Scope t(timer, "foundation update");
     write_base(matrix);
     factorised_status = foundation.status_in_matrix();
-    foundation.add_to_matrix(factorised_status, matrix);
+    foundation.add_to_matrix(factorised_status, velocity_factor, matrix);
   }
 
 
@@ -176,7 +182,7 @@ namespace liftoff
     // on a line): decide that from S. A residual test against ||b|| cannot:
     // a soft foundation (Gamma = 1e-8) gives a regular system so
     // ill-conditioned that no solver meets it.
-    if (foundation.rigid_body_restraint() < 1e-10)
+    if (foundation.diagnostics().rigid_body_restraint() < 1e-10)
       return false;
     if (accuracy == LinearSolver::Accuracy::trial)
       return true;
@@ -196,12 +202,12 @@ namespace liftoff
 
   double
   ActiveSetIteration::refinement_change(const LA::MPI::Vector &x,
-                                        const LA::MPI::Vector &b)
+                                        const System          &system)
   {
     // The residual, computed in double, carries round-off of the order of
     // eps ||A|| ||x||; the correction it gives is then of the order of the
     // error that the conditioning makes of that round-off.
-    const LA::MPI::Vector &system_rhs = with_gap_load(b);
+    const LA::MPI::Vector &system_rhs = with_gap_load(system);
     LA::MPI::Vector        residual(system_rhs), correction(system_rhs);
     matrix.vmult(residual, x);
     residual.sadd(-1.0, 1.0, system_rhs);
@@ -214,29 +220,29 @@ namespace liftoff
 
 
   const LA::MPI::Vector &
-  ActiveSetIteration::with_gap_load(const LA::MPI::Vector &rhs)
+  ActiveSetIteration::with_gap_load(const System &system)
   {
     if (!foundation.has_gap())
-      return rhs;
-    rhs_with_gap = rhs;
-    foundation.add_gap_load(rhs_with_gap);
+      return system.rhs;
+    rhs_with_gap = system.rhs;
+    foundation.add_gap_load(system.pressure, rhs_with_gap);
     return rhs_with_gap;
   }
 
 
   void
   ActiveSetIteration::solve_with_current_set(
-    const LA::MPI::Vector       &rhs,
+    const System                &system,
     LA::MPI::Vector             &solution,
     LA::MPI::Vector             &ghosted_solution,
     const LinearSolver::Accuracy accuracy)
   {
     {
       SectionTimer::Scope t(timer, "foundation update");
-      if (foundation.update_matrix(matrix) > 0)
+      if (foundation.update_matrix(velocity_factor, matrix) > 0)
         solver.matrix_changed();
     }
-    solver.solve(solution, with_gap_load(rhs), accuracy, continues_solve);
+    solver.solve(solution, with_gap_load(system), accuracy, continues_solve);
     // The next solve of this step continues this one if nothing but the
     // springs' status changes in between: a gap load changes with the
     // status, and hanging nodes take their masters' values in the solution
@@ -250,26 +256,24 @@ namespace liftoff
 
   std::optional<unsigned long>
   ActiveSetIteration::solve_and_update_set(
-    const LA::MPI::Vector       &rhs,
+    const System                &system,
     LA::MPI::Vector             &solution,
     LA::MPI::Vector             &ghosted_solution,
-    const LinearSolver::Accuracy accuracy,
-    const Support                support)
+    const LinearSolver::Accuracy accuracy)
   {
-    solve_with_current_set(rhs, solution, ghosted_solution, accuracy);
-    if (support == Support::contact_only
-        && !is_solution_of_system(solution, with_gap_load(rhs), accuracy))
+    solve_with_current_set(system, solution, ghosted_solution, accuracy);
+    if (system.requires_contact
+        && !is_solution_of_system(solution, with_gap_load(system), accuracy))
       return {};
     SectionTimer::Scope t(timer, "contact update");
-    return foundation.update_contact_status(ghosted_solution);
+    return foundation.update_contact_status(ghosted_solution, system.pressure);
   }
 
 
   std::optional<unsigned long>
-  ActiveSetIteration::solve_for_next_set(const LA::MPI::Vector &rhs,
-                                         LA::MPI::Vector       &solution,
-                                         LA::MPI::Vector &ghosted_solution,
-                                         const Support    support)
+  ActiveSetIteration::iterate(const System    &system,
+                              LA::MPI::Vector &solution,
+                              LA::MPI::Vector &ghosted_solution)
   {
     // While the set may still change, a solution only decides the next
     // one; the solve to the full tolerance waits until a set holds, and
@@ -278,15 +282,14 @@ namespace liftoff
                                                     ? LinearSolver::Accuracy::trial
                                                     : LinearSolver::Accuracy::final;
     const std::optional<unsigned long> n_changed =
-      solve_and_update_set(rhs, solution, ghosted_solution, accuracy, support);
+      solve_and_update_set(system, solution, ghosted_solution, accuracy);
     if (n_changed && *n_changed == 0
         && accuracy == LinearSolver::Accuracy::trial
         && !solver.last_solve_met_tolerance())
-      return solve_and_update_set(rhs,
+      return solve_and_update_set(system,
                                   solution,
                                   ghosted_solution,
-                                  LinearSolver::Accuracy::final,
-                                  support);
+                                  LinearSolver::Accuracy::final);
     return n_changed;
   }
 
@@ -323,13 +326,14 @@ namespace liftoff
 
   void
   ActiveSetIteration::start_from_prediction(const LA::MPI::Vector &prediction,
+                                            const SpringPressure  &pressure,
                                             LA::MPI::Vector &ghosted_solution)
   {
     // The contact rule applied to the prediction: where the plate is
     // heading.
     SectionTimer::Scope t(timer, "contact update");
     ghosts.copy(prediction, ghosted_solution);
-    foundation.update_contact_status(ghosted_solution);
+    foundation.update_contact_status(ghosted_solution, pressure);
   }
 
 
@@ -337,7 +341,7 @@ namespace liftoff
   ActiveSetIteration::solve_with_union(
     const std::vector<std::vector<unsigned char>> &visited,
     const unsigned int                             first,
-    const LA::MPI::Vector                         &rhs,
+    const System                                  &system,
     LA::MPI::Vector                               &solution,
     LA::MPI::Vector                               &ghosted_solution)
   {
@@ -349,16 +353,15 @@ namespace liftoff
       for (unsigned int i = 0; i < all.size(); ++i)
         all[i] |= visited[k][i];
     foundation.set_contact_status(all);
-    solve_with_current_set(rhs, solution, ghosted_solution);
+    solve_with_current_set(system, solution, ghosted_solution);
   }
 
 
   ActiveSetIteration::Result
-  ActiveSetIteration::solve(const LA::MPI::Vector &rhs,
-                            LA::MPI::Vector       &solution,
-                            LA::MPI::Vector       &ghosted_solution,
-                            const Support          support,
-                            const bool             guess_is_prediction)
+  ActiveSetIteration::solve(const System    &system,
+                            LA::MPI::Vector &solution,
+                            LA::MPI::Vector &ghosted_solution,
+                            const bool       guess_is_prediction)
   {
     Assert(matrix.m() > 0, ExcMessage("set_base_matrix() first."));
     Result result;
@@ -367,7 +370,7 @@ namespace liftoff
     // in the round-off band.
     const std::vector<unsigned char> start_set = foundation.contact_status();
     if (guess_is_prediction && starts_from_prediction)
-      start_from_prediction(solution, ghosted_solution);
+      start_from_prediction(solution, system.pressure, ghosted_solution);
     // The sets of this step so far. The solution depends on the set only,
     // so meeting one again means the iteration would go round for ever.
     std::vector<std::vector<unsigned char>> visited{
@@ -376,7 +379,7 @@ namespace liftoff
       {
         ++result.iterations;
         const std::optional<unsigned long> n_changed =
-          solve_for_next_set(rhs, solution, ghosted_solution, support);
+          iterate(system, solution, ghosted_solution);
         if (!n_changed)
           {
             result.lost_contact = true;
@@ -388,8 +391,8 @@ namespace liftoff
             result.converged = true;
             return result;
           }
-        if (support == Support::contact_only
-            && foundation.contact_area_fraction() == 0.0)
+        if (system.requires_contact
+            && foundation.diagnostics().contact_area_fraction() == 0.0)
           {
             result.lost_contact = true;
             return result;
@@ -405,7 +408,7 @@ namespace liftoff
             t.stop();
             ++result.iterations;
             solve_with_union(
-              visited, repeated, rhs, solution, ghosted_solution);
+              visited, repeated, system, solution, ghosted_solution);
             result.converged = true;
             return result;
           }

@@ -5,7 +5,6 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <liftoff/base/selection.h>
-#include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/mesh_refinement.h>
 
 #include <algorithm>
@@ -297,12 +296,10 @@ namespace liftoff
 
 
   std::vector<bool>
-  MeshRefinement::front_cells(
-    const Discretization               &discretization,
-    const TensionlessWinklerFoundation &foundation) const
+  MeshRefinement::front_cells(const Discretization &discretization,
+                              const Vector<float>  &fraction) const
   {
-    const auto       &tria     = discretization.triangulation;
-    const auto        fraction = foundation.contact_fraction_per_cell();
+    const auto       &tria = discretization.triangulation;
     std::vector<bool> in_band(tria.n_active_cells(), false);
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -386,9 +383,9 @@ namespace liftoff
 
 
   bool
-  MeshRefinement::mark_cells(Discretization                     &discretization,
-                             const TensionlessWinklerFoundation &foundation,
-                             const std::vector<Point<2>>        &points,
+  MeshRefinement::mark_cells(Discretization              &discretization,
+                             const Vector<float>         &contact_fraction,
+                             const std::vector<Point<2>> &points,
                              const LA::MPI::Vector &ghosted_solution) const
   {
     auto &tria = discretization.triangulation;
@@ -414,7 +411,7 @@ namespace liftoff
           cell->set_coarsen_flag();
     if (uses_front)
       {
-        const auto in_band = front_cells(discretization, foundation);
+        const auto in_band = front_cells(discretization, contact_fraction);
         force_refinement(
           discretization,
           [&](const auto &cell) { return in_band[cell->active_cell_index()]; },

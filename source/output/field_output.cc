@@ -25,8 +25,8 @@ namespace liftoff
     class FoundationPressure : public DataPostprocessor<2>
     {
     public:
-      explicit FoundationPressure(const TensionlessWinklerFoundation &f)
-          : foundation(f)
+      explicit FoundationPressure(const ContactLaw &law)
+          : law(law)
       {}
 
       std::vector<std::string>
@@ -39,8 +39,8 @@ namespace liftoff
       get_needed_update_flags() const override
       {
         // The points only where g needs them.
-        return foundation.has_gap() ? update_values | update_quadrature_points
-                                    : update_values;
+        return law.has_gap() ? update_values | update_quadrature_points
+                             : update_values;
       }
 
       void
@@ -48,25 +48,18 @@ namespace liftoff
         const DataPostprocessorInputs::Vector<2> &input,
         std::vector<Vector<double>>              &computed) const override
       {
-        using Model = TensionlessWinklerFoundation::Model;
         for (unsigned int q = 0; q < input.solution_values.size(); ++q)
           {
-            const double g = (foundation.has_gap()
-                                ? foundation.gap_at(input.evaluation_points[q])
-                                : 0.0);
+            const double g =
+              (law.has_gap() ? law.gap_at(input.evaluation_points[q]) : 0.0);
             const double w = input.solution_values[q][0] - g;
-            computed[q][0] = (foundation.model == Model::none
-                                ? 0.0
-                                : foundation.stiffness
-                                    * (foundation.model == Model::bilateral
-                                         ? w
-                                         : std::max(w, 0.0)));
+            computed[q][0] = law.spring_pressure(w);
             computed[q][1] = std::max(-w, 0.0);
           }
       }
 
     private:
-      const TensionlessWinklerFoundation &foundation;
+      const ContactLaw &law;
     };
 
 
@@ -482,9 +475,10 @@ namespace liftoff
                                                    "psi_y_dot"},
                           DataOut<2>::type_dof_data,
                           scalar);
-    const FoundationPressure pressure(foundation);
+    const FoundationPressure pressure(foundation.law());
     plane.add_data_vector(solution, pressure);
-    const Vector<float> contact = foundation.contact_fraction_per_cell();
+    const Vector<float> contact =
+      foundation.diagnostics().contact_fraction_per_cell();
     plane.add_data_vector(contact, "contact_status");
     Vector<float> subdomain(disc.triangulation.n_active_cells());
     subdomain = disc.triangulation.locally_owned_subdomain();

@@ -204,7 +204,7 @@ namespace liftoff
   void
   TimeHistory::find_gap_at_w_dofs(const StepData &step)
   {
-    if (!step.foundation.has_initial_gap() || !gap_at_w_dofs.empty())
+    if (!step.foundation.law().has_initial_gap() || !gap_at_w_dofs.empty())
       return;
     const Discretization                       &disc = step.discretization;
     std::map<types::global_dof_index, Point<2>> points;
@@ -214,7 +214,7 @@ namespace liftoff
                                          disc.fe->component_mask(
                                            FEValuesExtractors::Scalar(0)));
     for (const auto i : w_dofs)
-      gap_at_w_dofs.push_back(step.foundation.gap_at(points.at(i)));
+      gap_at_w_dofs.push_back(step.foundation.law().gap_at(points.at(i)));
   }
 
 
@@ -259,7 +259,8 @@ namespace liftoff
     row.balance_error = row.energies.error(step.state.initial_energies);
     if (write_resultant)
       {
-        const auto r     = step.foundation.resultant(u, ghosted_velocity);
+        const auto r =
+          step.foundation.diagnostics().resultant(u, ghosted_velocity);
         row.resultant    = r.force;
         row.resultant_x  = r.centre[0];
         row.resultant_y  = r.centre[1];

@@ -66,8 +66,7 @@ namespace liftoff
   {
     if (analysis == Analysis::static_analysis)
       AssertThrow(discretization.has_kinematic_support()
-                    || foundation.model
-                         != TensionlessWinklerFoundation::Model::none,
+                    || foundation.law().model() != ContactLaw::Model::none,
                   ExcMessage("Analysis/Type = static: a plate with all edges "
                              "free and Foundation/Model = none has no static "
                              "equilibrium."));
@@ -99,7 +98,7 @@ namespace liftoff
   {
     // Nothing to compute: most likely a load whose Magnitude was left at its
     // default 0.
-    if (loads.is_empty() && !foundation.is_pressing_plate())
+    if (loads.is_empty() && !foundation.law().is_pressing_plate())
       AssertThrow(analysis == Analysis::dynamic_analysis
                     && !initial_conditions.is_at_rest(discretization),
                   ExcMessage(

@@ -294,7 +294,7 @@ namespace liftoff
                         parts.discretization,
                         parts.foundation,
                         iteration,
-                        parts.foundation.contact_area_fraction(),
+                        parts.foundation.diagnostics().contact_area_fraction(),
                         is_static ? 0.0 : parts.newmark.time_step,
                         is_static ? 0 : parts.newmark.n_steps(),
                         is_static || state.step == parts.newmark.n_steps()};
@@ -334,7 +334,8 @@ namespace liftoff
       }
     record(result);
     pcout << "static: " << result.iterations << " active-set iterations, "
-          << "contact fraction " << parts.foundation.contact_area_fraction()
+          << "contact fraction "
+          << parts.foundation.diagnostics().contact_area_fraction()
           << std::endl;
   }
 
@@ -412,7 +413,8 @@ namespace liftoff
     unsigned int r = 0;
     for (; r < parts.mesh_refinement.n_initial_refinements(); ++r)
       {
-        parts.foundation.update_contact_status(stepper->state().ghosted_u);
+        parts.foundation.update_contact_status(
+          stepper->state().ghosted_u, parts.foundation.law().pressure());
         if (!adapt_mesh())
           break;
         // The fields themselves, not their interpolant on the old mesh.

@@ -17,7 +17,7 @@ namespace liftoff
       0.5 * copies * matrices.quadratic_form(matrices.mass, v, product);
     e.strain =
       0.5 * copies * matrices.quadratic_form(matrices.stiffness, u, product);
-    e.foundation = copies * foundation.energy(ghosted_u);
+    e.foundation = copies * foundation.diagnostics().energy(ghosted_u);
     e.work       = work;
     return e;
   }

@@ -249,7 +249,7 @@ namespace liftoff
     std::vector<std::string> causes;
     // The plate on its springs swings at sqrt(Gamma) (unit mass): a step
     // longer than a radian of that swing lets contact switch within it.
-    const double omega = foundation.rigid_body_frequency();
+    const double omega = foundation.law().rigid_body_frequency();
     if (newmark.time_step * omega > 1)
       causes.push_back(
         "Time integration/Time step = " + format_number(newmark.time_step)
@@ -306,28 +306,30 @@ namespace liftoff
                             const std::string     &remedy,
                             const StopCheck       &stop_if_requested)
   {
-    const auto support = discretization.has_kinematic_support()
-                           ? ActiveSetIteration::Support::held
-                           : ActiveSetIteration::Support::contact_only;
+    // The plate at rest: the springs' Gamma (w - g), no dashpot force.
+    const SpringPressure             pressure = foundation.law().pressure();
+    const ActiveSetIteration::System system{
+      load, pressure, !discretization.has_kinematic_support()};
     foundation.activate_all();
-    active_set.set_base_matrix([this](LA::MPI::SparseMatrix &base) {
-      base.copy_from(matrices.stiffness);
-    });
+    active_set.set_base_matrix(
+      [this](LA::MPI::SparseMatrix &base) {
+        base.copy_from(matrices.stiffness);
+      },
+      0.0);
 
-    const auto result =
-      active_set.solve(load, state_.u, state_.ghosted_u, support);
+    const auto result = active_set.solve(system, state_.u, state_.ghosted_u);
     require_finite_state("the static solution", {&state_.u}, {}, load);
     // The one "step" of a static analysis is done: a stop request ends the
     // run here, like a dynamic run after a step, with no result written.
     stop_if_requested("during " + during + "; no result was written.");
-    check_static_solution(result, load, what, remedy);
+    check_static_solution(result, system, what, remedy);
     return result;
   }
 
 
   void
   TimeStepper::check_static_solution(const ActiveSetIteration::Result &result,
-                                     const LA::MPI::Vector            &load,
+                                     const ActiveSetIteration::System &system,
                                      const std::string                &what,
                                      const std::string                &remedy)
   {
@@ -347,7 +349,7 @@ namespace liftoff
     // A very soft foundation under a plate with free edges leaves the
     // rigid-body motion held by Gamma alone: the system is regular, its
     // residual small, and its answer still round-off. Measure, don't trust.
-    const double change = active_set.refinement_change(state_.u, load);
+    const double change = active_set.refinement_change(state_.u, system);
     AssertThrow(change <= 1e-3,
                 ExcMessage(what
                            + ": the solution is not accurate to "
@@ -376,8 +378,9 @@ namespace liftoff
     // lift-off, and the balance column checks it against the state at
     // rest. A gap makes the response affine; Clapeyron's identity at the
     // equilibrium then gains the gap's term (gap_work()).
-    state_.work = 0.5 * discretization.n_symmetry_copies()
-                  * (load * state_.u + foundation.gap_work(state_.ghosted_u));
+    state_.work =
+      0.5 * discretization.n_symmetry_copies()
+      * (load * state_.u + foundation.diagnostics().gap_work(state_.ghosted_u));
     state_.energies = energies();
     require_finite_state("an energy", {}, state_.energies.values(), load);
     return result;
@@ -409,11 +412,11 @@ namespace liftoff
   {
     {
       SectionTimer::Scope t(timer, "mesh refinement");
-      if (!mesh_refinement.mark_cells(discretization,
-                                      foundation,
-                                      loads.point_load_positions(
-                                        discretization),
-                                      state_.ghosted_u))
+      if (!mesh_refinement.mark_cells(
+            discretization,
+            foundation.diagnostics().contact_fraction_per_cell(),
+            loads.point_load_positions(discretization),
+            state_.ghosted_u))
         return false;
       mesh_refinement.execute(discretization,
                               {&state_.u, &state_.v, &state_.a});
@@ -437,13 +440,12 @@ namespace liftoff
       SectionTimer::Scope t(timer, "mesh refinement");
       equilibrate(state_.step, state_.tau, "the acceleration after a new mesh");
     }
-    // The foundation's setup on the new mesh left its matrix with the
-    // springs alone; the time steps' matrix holds the dashpots too (Gamma
-    // + c kappa). Without this, a damped adaptive run solved with
-    // Gamma alone after its first new mesh: balance error 0.38 of the
-    // energy scale (issue 31).
-    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
-    active_set.set_base_matrix(effective_base_matrix());
+    // The time steps' matrix holds the dashpots too (Gamma + c kappa):
+    // kappa is the argument, no longer a setting that the foundation's
+    // setup on the new mesh reset to 0 (a damped adaptive run then solved
+    // with Gamma alone: balance error 0.38 of the energy scale, issue 31).
+    active_set.set_base_matrix(effective_base_matrix(),
+                               newmark.velocity_factor());
     check_time_step();
     state_.energies    = energies();
     const double after = stored_energy();
@@ -499,11 +501,10 @@ namespace liftoff
                            const double       tau,
                            const std::string &what)
   {
-    if (foundation.has_damping())
-      set_dashpots_to_velocity();
-    foundation.update_contact_status(state_.ghosted_u);
+    const SpringPressure pressure = pressure_at_state_velocity();
+    foundation.update_contact_status(state_.ghosted_u, pressure);
     assemble_loads(step, tau, state_.load);
-    force_balance(state_.load, state_.balance);
+    force_balance(state_.load, pressure, state_.balance);
     if (foundation.has_damping())
       compute_dashpot_force();
     matrices.solve_with_mass(state_.a, state_.balance);
@@ -533,8 +534,8 @@ namespace liftoff
                          state_.load);
     // The first iterate is the bilateral problem.
     foundation.activate_all();
-    foundation.set_matrix_velocity_factor(newmark.velocity_factor());
-    active_set.set_base_matrix(effective_base_matrix());
+    active_set.set_base_matrix(effective_base_matrix(),
+                               newmark.velocity_factor());
   }
 
 
@@ -564,13 +565,15 @@ namespace liftoff
   }
 
 
-  void
-  TimeStepper::set_dashpots_to_velocity()
+  SpringPressure
+  TimeStepper::pressure_at_state_velocity()
   {
+    if (!foundation.has_damping())
+      return foundation.law().pressure();
     // At a given state v is given: kappa = 0, o = -v.
     scratch.equ(-1.0, state_.v);
     ghosted_scratch = scratch;
-    foundation.set_dashpot_velocity(0.0, ghosted_scratch);
+    return foundation.law().pressure(0.0, ghosted_scratch);
   }
 
 
@@ -586,23 +589,21 @@ namespace liftoff
   ActiveSetIteration::Result
   TimeStepper::solve_contact_problem(const unsigned int step)
   {
+    SpringPressure pressure = foundation.law().pressure();
     if (foundation.has_damping())
       {
         // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
         // is affine in the new displacement, like a spring on a gap.
         newmark.velocity_offset(state_.u, state_.v, state_.a, scratch);
         ghosted_scratch = scratch;
-        foundation.set_dashpot_velocity(newmark.velocity_factor(),
-                                        ghosted_scratch);
+        pressure =
+          foundation.law().pressure(newmark.velocity_factor(), ghosted_scratch);
       }
     newmark.predict(state_.u, state_.v, state_.a, u_next);
     // The first step starts from the bilateral set: the predictor has no
     // motion yet to extrapolate.
-    const auto result = active_set.solve(rhs,
-                                         u_next,
-                                         state_.ghosted_u,
-                                         ActiveSetIteration::Support::held,
-                                         step > 1);
+    const auto result =
+      active_set.solve({rhs, pressure}, u_next, state_.ghosted_u, step > 1);
     // Before the convergence test: a nan makes the contact set wander.
     const double tau = step * newmark.time_step;
     require_finite(step, tau, "the solution", {&u_next}, {}, [&]() {
@@ -642,9 +643,9 @@ namespace liftoff
     if (newmark.needs_force_balance())
       {
         SectionTimer::Scope t(timer, "right hand side");
-        if (foundation.has_damping())
-          set_dashpots_to_velocity();
-        force_balance(state_.load, state_.balance);
+        force_balance(state_.load,
+                      pressure_at_state_velocity(),
+                      state_.balance);
       }
     state_.energies = energies();
     require_finite_state("the velocity, acceleration or an energy",
@@ -684,13 +685,14 @@ namespace liftoff
 
   void
   TimeStepper::force_balance(const LA::MPI::Vector &load,
+                             const SpringPressure  &pressure,
                              LA::MPI::Vector       &balance) const
   {
     matrices.stiffness.vmult(balance, state_.u);
     foundation.add_reaction(state_.ghosted_u, balance);
     balance.sadd(-1.0, 1.0, load);
     if (foundation.has_gap())
-      foundation.add_gap_load(balance);
+      foundation.add_gap_load(pressure, balance);
   }
 
 
@@ -711,13 +713,13 @@ namespace liftoff
   }
 
 
-  TensionlessWinklerFoundation::PressureRange
+  FoundationDiagnostics::PressureRange
   TimeStepper::contact_pressure_range() const
   {
     LA::MPI::Vector v;
     discretization.reinit_ghosted_vector(v);
     v = state_.v;
-    return foundation.pressure_range(state_.ghosted_u, v);
+    return foundation.diagnostics().pressure_range(state_.ghosted_u, v);
   }
 
 
@@ -752,9 +754,10 @@ namespace liftoff
       {
         // The matrix of the time steps, which the saved one is, holds the
         // dashpots (Gamma + c kappa).
-        foundation.set_matrix_velocity_factor(newmark.velocity_factor());
         transfer(archive, foundation);
-        active_set.load(archive, effective_base_matrix());
+        active_set.load(archive,
+                        effective_base_matrix(),
+                        newmark.velocity_factor());
         // The dashpots' force of the saved state, for the next step's
         // dissipation.
         if (foundation.has_damping())

@@ -34,7 +34,7 @@ namespace liftoff
     {
       unsigned int iterations = 0;
       bool         converged  = false;
-      /// Only with Support::contact_only: the set emptied or the system was
+      /// Only with requires_contact: the set emptied or the system was
       /// singular, i.e. nothing holds the plate.
       bool lost_contact = false;
       /// Length of the cycle the set fell into (0: none): the number of
@@ -69,20 +69,26 @@ namespace liftoff
     using BaseMatrix = std::function<void(LA::MPI::SparseMatrix &)>;
 
     /// Use B from now on (a new mesh or time step): builds B + K_f(S) for
-    /// the current set and factorises it. B is written into the system
-    /// matrix itself, so no second matrix of the plate's size is alive
-    /// while the factor is built (L: 330 MB of the peak).
+    /// the current set and factorises it, K_f with the springs' stiffness
+    /// Gamma + c kappa, kappa = `velocity_factor` (0 for a static solve,
+    /// gamma / (beta dt) for a time step: the velocity of the unknown is
+    /// kappa u + ...). B is written into the system matrix itself, so no
+    /// second matrix of the plate's size is alive while the factor is
+    /// built (L: 330 MB of the peak).
     void
-    set_base_matrix(const BaseMatrix &write_base);
+    set_base_matrix(const BaseMatrix &write_base, const double velocity_factor);
 
-    /// What holds the plate in a solve.
-    enum class Support
+    /// What one solve needs besides the matrix: the right-hand side b, the
+    /// bed's pressure k (w - e) for the velocity of the unknown (the
+    /// contact rule's e, and the gap load k int_S e phi_i that joins b),
+    /// and whether nothing but the foundation holds the plate (a static
+    /// free plate): then stop when the contact set empties or the solve is
+    /// singular.
+    struct System
     {
-      /// Supported edges or the inertia of a time step.
-      held,
-      /// Nothing but the foundation (a static free plate): the iteration
-      /// stops when the contact set empties or the solve is singular.
-      contact_only
+      const LA::MPI::Vector &rhs;
+      const SpringPressure  &pressure;
+      bool                   requires_contact = false;
     };
 
     /// Solve; `solution` holds the initial guess on entry and the result
@@ -91,11 +97,10 @@ namespace liftoff
     /// predictor) and `Initial set = predicted`, the iteration starts from
     /// the guess's contact set rather than the foundation's current one.
     Result
-    solve(const LA::MPI::Vector &rhs,
-          LA::MPI::Vector       &solution,
-          LA::MPI::Vector       &ghosted_solution,
-          const Support          support,
-          const bool             guess_is_prediction = false);
+    solve(const System    &system,
+          LA::MPI::Vector &solution,
+          LA::MPI::Vector &ghosted_solution,
+          const bool       guess_is_prediction = false);
 
     /// The linear solver, for its counters and its parameters.
     const LinearSolver &
@@ -108,21 +113,23 @@ namespace liftoff
     void
     save(OutputArchive &archive) const;
     /// Instead of set_base_matrix(): the matrix and factor of save(), with
-    /// the B that was given to set_base_matrix() then. The foundation's
-    /// own status must be loaded first.
+    /// the B and kappa that were given to set_base_matrix() then. The
+    /// foundation's own status must be loaded first.
     void
-    load(InputArchive &archive, const BaseMatrix &write_base);
+    load(InputArchive     &archive,
+         const BaseMatrix &write_base,
+         const double      velocity_factor);
 
     unsigned int max_iterations = 50;
     CycleRule    cycle_rule     = CycleRule::union_of_cycle;
     /// `Initial set = predicted`.
     bool starts_from_prediction = true;
     /// The change one step of iterative refinement makes to x, the solution
-    /// of the last solve with right-hand side b, relative to x: an estimate
-    /// of the forward error that the residual tests cannot see in a system
-    /// near the limit of double precision (collective).
+    /// of the last solve, of `system`, relative to x: an estimate of the
+    /// forward error that the residual tests cannot see in a system near
+    /// the limit of double precision (collective).
     double
-    refinement_change(const LA::MPI::Vector &x, const LA::MPI::Vector &b);
+    refinement_change(const LA::MPI::Vector &x, const System &system);
 
   private:
     const Discretization         &discretization;
@@ -131,6 +138,8 @@ namespace liftoff
     /// B + K_f(S), kept in step with S.
     LA::MPI::SparseMatrix matrix;
     BaseMatrix            write_base;
+    /// kappa of the matrix's K_f (set_base_matrix()).
+    double velocity_factor = 0;
     /// The S of the matrix the solver's factor was built from, which
     /// B + K_f(S) gives again bit for bit (by rebuild_matrix()).
     std::vector<unsigned char> factorised_status;
@@ -159,11 +168,11 @@ namespace liftoff
                        LA::MPI::Vector       &dst,
                        const Since            since) override;
 
-    /// The right-hand side of the system for the current set: `rhs`, plus
-    /// the springs' push on the gap f_g(S) if the foundation has one (the
-    /// reaction is affine then).
+    /// The right-hand side of the system for the current set: its rhs,
+    /// plus the springs' push on the gap f_g(S) if the foundation has one
+    /// (the reaction is affine then).
     const LA::MPI::Vector &
-    with_gap_load(const LA::MPI::Vector &rhs);
+    with_gap_load(const System &system);
     /// The solution's copies to its ghosted form, with one import kept.
     GhostUpdate ghosts;
 
@@ -177,7 +186,7 @@ namespace liftoff
     /// Bring the matrix in step with the foundation's set and solve.
     void
     solve_with_current_set(
-      const LA::MPI::Vector &rhs,
+      const System          &system,
       LA::MPI::Vector       &solution,
       LA::MPI::Vector       &ghosted_solution,
       LinearSolver::Accuracy accuracy = LinearSolver::Accuracy::final);
@@ -187,19 +196,17 @@ namespace liftoff
     /// solution is not one of the system (a plate that needs contact has
     /// lost it). Collective.
     std::optional<unsigned long>
-    solve_and_update_set(const LA::MPI::Vector &rhs,
+    solve_and_update_set(const System          &system,
                          LA::MPI::Vector       &solution,
                          LA::MPI::Vector       &ghosted_solution,
-                         LinearSolver::Accuracy accuracy,
-                         const Support          support);
-    /// One iteration's solve: solve_and_update_set() at the trial accuracy
-    /// where the solver has one, and once more to the full tolerance if
-    /// the set held on a trial solution that missed it.
+                         LinearSolver::Accuracy accuracy);
+
+    /// One iterate: solve_and_update_set(), with a trial solve whose set
+    /// held repeated to the full tolerance.
     std::optional<unsigned long>
-    solve_for_next_set(const LA::MPI::Vector &rhs,
-                       LA::MPI::Vector       &solution,
-                       LA::MPI::Vector       &ghosted_solution,
-                       const Support          support);
+    iterate(const System    &system,
+            LA::MPI::Vector &solution,
+            LA::MPI::Vector &ghosted_solution);
 
     /// No status changed in the last update, and none within the round-off
     /// band differs from `start_set`, the set the step began with (those
@@ -211,12 +218,13 @@ namespace liftoff
     /// (ghosted_solution is set to it).
     void
     start_from_prediction(const LA::MPI::Vector &prediction,
+                          const SpringPressure  &pressure,
                           LA::MPI::Vector       &ghosted_solution);
     /// Solve with the union of the sets visited[first], ... (a cycle).
     void
     solve_with_union(const std::vector<std::vector<unsigned char>> &visited,
                      const unsigned int                             first,
-                     const LA::MPI::Vector                         &rhs,
+                     const System                                  &system,
                      LA::MPI::Vector                               &solution,
                      LA::MPI::Vector &ghosted_solution);
     /// Index of the set in `visited` equal to the foundation's current set

@@ -14,10 +14,6 @@ namespace liftoff
 {
   using namespace dealii;
 
-  // Declared only: the mesh is refined along the contact front, but fem/
-  // lies below contact/ (doc/architecture.md, layout).
-  class TensionlessWinklerFoundation;
-
   /**
    * Adaptive meshes (`Mesh refinement`): which cells to refine and coarsen,
    * and the move of the state to the new mesh. The difficulty of the
@@ -72,13 +68,15 @@ namespace liftoff
                          const std::vector<Point<2>> &points) const;
 
     /// Flag cells for refinement and coarsening from the deflection and
-    /// the contact status; returns whether the mesh would change on any
-    /// rank (collective).
+    /// the contact status, given as the fraction of each owned cell in
+    /// contact (indexed by active cell index: the front runs through the
+    /// cells strictly between 0 and 1); returns whether the mesh would
+    /// change on any rank (collective).
     bool
-    mark_cells(Discretization                     &discretization,
-               const TensionlessWinklerFoundation &foundation,
-               const std::vector<Point<2>>        &points,
-               const LA::MPI::Vector              &ghosted_solution) const;
+    mark_cells(Discretization              &discretization,
+               const Vector<float>         &contact_fraction,
+               const std::vector<Point<2>> &points,
+               const LA::MPI::Vector       &ghosted_solution) const;
 
     /// Refine and coarsen as flagged, rebuild the dofs and carry `vectors`
     /// (owned entries, constraints distributed) to the new mesh by
@@ -121,8 +119,8 @@ namespace liftoff
     /// 1 on the owned cells cut by the contact front or within the band,
     /// indexed by active cell index.
     std::vector<bool>
-    front_cells(const Discretization               &discretization,
-                const TensionlessWinklerFoundation &foundation) const;
+    front_cells(const Discretization &discretization,
+                const Vector<float>  &contact_fraction) const;
     /// Unflag for coarsening, and with `refine` flag for refinement, every
     /// owned cell where `is_wanted` holds.
     template <class Predicate>

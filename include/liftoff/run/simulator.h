@@ -89,7 +89,7 @@ namespace liftoff
     /// The foundation pressure Gamma (w - g) + c v at the Gauss points of
     /// the state (collective; see
     /// TensionlessWinklerFoundation::pressure_range()).
-    TensionlessWinklerFoundation::PressureRange
+    FoundationDiagnostics::PressureRange
     contact_pressure_range() const;
     /// The signal (SIGINT, SIGTERM) that stopped the run, or 0.
     int
@@ -254,7 +254,7 @@ namespace liftoff
   }
 
 
-  inline TensionlessWinklerFoundation::PressureRange
+  inline FoundationDiagnostics::PressureRange
   Simulator::contact_pressure_range() const
   {
     return stepper->contact_pressure_range();

@@ -123,7 +123,7 @@ namespace liftoff
     deflection_at(const Point<2> &p) const;
     /// The foundation pressure Gamma (w - g) + c v of the state at the
     /// Gauss points (collective).
-    TensionlessWinklerFoundation::PressureRange
+    FoundationDiagnostics::PressureRange
     contact_pressure_range() const;
     /// Whether the energy balance is checked: a dynamic run, the check
     /// on, and a scheme for which the balance is a law.
@@ -237,7 +237,7 @@ namespace liftoff
     /// Refuse a static solution that does not exist or is not accurate.
     void
     check_static_solution(const ActiveSetIteration::Result &result,
-                          const LA::MPI::Vector            &load,
+                          const ActiveSetIteration::System &system,
                           const std::string                &what,
                           const std::string                &remedy);
     /// state.u += the static equilibrium under the permanent loads, from
@@ -253,10 +253,10 @@ namespace liftoff
     equilibrate(const unsigned int step,
                 const double       tau,
                 const std::string &what);
-    /// The foundation's dashpots at the state's velocity (for the contact
-    /// rule and the force balance at a given state).
-    void
-    set_dashpots_to_velocity();
+    /// The bed's pressure at the state's velocity (for the contact rule
+    /// and the force balance at a given state).
+    SpringPressure
+    pressure_at_state_velocity();
     /// dashpot_force = c int_S v phi of the state.
     void
     compute_dashpot_force();
@@ -292,8 +292,10 @@ namespace liftoff
     EnergyBalance
     energies();
     /// F - K u - K_f(S) u + f_g(S) for the current state u and contact set
-    /// S (f_g: the springs' push on a gap).
+    /// S (f_g: the springs' push on a gap, for `pressure`).
     void
-    force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance) const;
+    force_balance(const LA::MPI::Vector &load,
+                  const SpringPressure  &pressure,
+                  LA::MPI::Vector       &balance) const;
   };
 } // namespace liftoff
