@@ -454,6 +454,23 @@ namespace liftoff
   }
 
 
+  namespace
+  {
+    // Each cell's level above the uniform mesh of the scene (Mesh
+    // refinement).
+    Vector<float>
+    refinement_levels(const Discretization &disc)
+    {
+      Vector<float> level(disc.triangulation.n_active_cells());
+      for (const auto &cell : disc.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          level[cell->active_cell_index()] =
+            static_cast<float>(cell->level()) - disc.initial_level();
+      return level;
+    }
+  } // namespace
+
+
   void
   FieldOutput::write(const std::string                  &directory,
                      const Discretization               &disc,
@@ -483,12 +500,7 @@ namespace liftoff
     Vector<float> subdomain(disc.triangulation.n_active_cells());
     subdomain = disc.triangulation.locally_owned_subdomain();
     plane.add_data_vector(subdomain, "subdomain");
-    // Levels above the uniform mesh of the scene (Mesh refinement).
-    Vector<float> level(disc.triangulation.n_active_cells());
-    for (const auto &cell : disc.triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        level[cell->active_cell_index()] =
-          static_cast<float>(cell->level()) - disc.initial_level();
+    const Vector<float> level = refinement_levels(disc);
     plane.add_data_vector(level, "refinement_level");
     plane.build_patches(disc.mapping,
                         subdivisions > 0 ? subdivisions : disc.degree());
