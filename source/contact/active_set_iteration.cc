@@ -1,3 +1,4 @@
+#include <liftoff/base/archives.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/contact/active_set_iteration.h>
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/contact/spring_term.h>
 
 #include <algorithm>

@@ -3,8 +3,10 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/output/field_output.h>
+#include <liftoff/time/plate_state.h>
 
 #include <liftoff/version.h>
 

@@ -1,7 +1,9 @@
 #include <deal.II/base/mpi.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/output/profile_output.h>
+#include <liftoff/time/plate_state.h>
 
 #include <algorithm>
 #include <iomanip>

@@ -1,4 +1,6 @@
+#include <liftoff/base/archives.h>
 #include <liftoff/output/progress_line.h>
+#include <liftoff/time/plate_state.h>
 
 #include <unistd.h>
 

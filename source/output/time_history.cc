@@ -2,7 +2,9 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/time/plate_state.h>
 
 #include <liftoff/output/time_history.h>
 

@@ -5,6 +5,7 @@
 #include <boost/property_tree/ptree.hpp>
 #include <boost/serialization/array_wrapper.hpp>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/run/checkpoint.h>
 
 #include <Epetra_CrsMatrix.h>

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/base/scene_input.h>

@@ -1,6 +1,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/solver/cholesky_factor.h>
 #include <liftoff/solver/linear_solver.h>

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <liftoff/base/archives.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>

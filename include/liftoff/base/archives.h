@@ -6,6 +6,7 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
 
 #include <vector>
@@ -21,9 +22,6 @@ namespace liftoff
 {
   using namespace dealii;
 
-  /// What each part of the state writes itself to and reads itself from.
-  using OutputArchive = boost::archive::binary_oarchive;
-  using InputArchive  = boost::archive::binary_iarchive;
 
   /// This rank's entries of a distributed vector, bit for bit.
   void

@@ -4,6 +4,7 @@
 #include <liftoff/base/section_timer.h>
 
 #include <liftoff/base/linear_algebra.h>
+#include <liftoff/contact/active_set_result.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/solver/ghost_update.h>
@@ -30,17 +31,7 @@ namespace liftoff
   class ActiveSetIteration : private ChangingMatrix
   {
   public:
-    struct Result
-    {
-      unsigned int iterations = 0;
-      bool         converged  = false;
-      /// Only with requires_contact: the set emptied or the system was
-      /// singular, i.e. nothing holds the plate.
-      bool lost_contact = false;
-      /// Length of the cycle the set fell into (0: none): the number of
-      /// distinct sets it went round.
-      unsigned int cycle_length = 0;
-    };
+    using Result = ActiveSetResult;
 
     /// What to do when the set returns to one it had earlier in the step.
     enum class CycleRule

@@ -3,7 +3,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <liftoff/base/archives.h>
+#include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/contact/foundation_points.h>
 

@@ -1,16 +1,17 @@
 #pragma once
 
-#include <liftoff/base/archives.h>
-#include <liftoff/contact/active_set_iteration.h>
-#include <liftoff/contact/tensionless_winkler_foundation.h>
-#include <liftoff/fem/discretization.h>
-#include <liftoff/time/plate_state.h>
+#include <liftoff/base/archive_types.h>
+#include <liftoff/contact/active_set_result.h>
 
 #include <string>
 
 namespace liftoff
 {
-  using namespace dealii;
+
+  // StepData holds references only: the outputs include what they use.
+  class Discretization;
+  class TensionlessWinklerFoundation;
+  struct PlateState;
 
   /// What an Output sees after a step (or the one solve of a static
   /// analysis): the state and the parts that give it meaning.
@@ -19,7 +20,7 @@ namespace liftoff
     const PlateState                   &state;
     const Discretization               &discretization;
     const TensionlessWinklerFoundation &foundation;
-    const ActiveSetIteration::Result   &iteration;
+    const ActiveSetResult              &iteration;
     /// Share of the plate in contact (computed once for all outputs: it is
     /// a collective sum).
     double contact_fraction;

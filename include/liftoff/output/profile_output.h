@@ -2,7 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <liftoff/base/archives.h>
+#include <liftoff/base/archive_types.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/point_functional.h>

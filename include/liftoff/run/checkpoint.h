@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 
-#include <liftoff/base/archives.h>
+#include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
 
 #include <chrono>

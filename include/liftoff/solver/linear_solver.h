@@ -5,7 +5,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <liftoff/base/section_timer.h>
 
-#include <liftoff/base/archives.h>
+#include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/discretization.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <liftoff/base/archives.h>
+#include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/base/section_timer.h>
 #include <liftoff/contact/active_set_iteration.h>
