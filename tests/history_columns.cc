@@ -31,7 +31,7 @@ namespace
   std::string
   load_message(const std::string &saved, liftoff::TimeHistory &history)
   {
-    std::istringstream   in(saved);
+    std::istringstream    in(saved);
     liftoff::InputArchive archive(in);
     try
       {
