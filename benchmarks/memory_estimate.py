@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Measured peak memory of liftoff against the estimate that refuses scenes
-too large for the machine (Discretization::estimate_size, doc/reliability.md).
+too large for the machine (MemoryEstimate, doc/reliability.md).
 
     /usr/bin/python3 benchmarks/memory_estimate.py build/liftoff [--quick] [--fit]
 

@@ -355,7 +355,7 @@ namespace liftoff_tests::manufactured
            const VectorTools::NormType       norm = VectorTools::L2_norm)
   {
     const auto    &disc   = simulator.get_discretization();
-    const unsigned degree = disc.fe->degree;
+    const unsigned degree = disc.dof_handler.get_fe().degree;
     Vector<float>  cellwise(disc.triangulation.n_active_cells());
     // solution() is the ghosted vector, as integrate_difference needs.
     VectorTools::integrate_difference(disc.mapping,

@@ -110,7 +110,7 @@ namespace
     disc.reinit_vector(v);
     VectorTools::interpolate(disc.mapping, disc.dof_handler, displacement, u);
     VectorTools::interpolate(disc.mapping, disc.dof_handler, velocity, v);
-    const double area = disc.modelled_box().volume();
+    const double area = disc.geometry().modelled_box().volume();
 
     for (unsigned int round = 1; round <= 4; ++round)
       {

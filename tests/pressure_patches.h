@@ -247,8 +247,9 @@ namespace pressure_patches
         m.assembled[k] = load * g;
         m.exact[k]     = 0;
         for (const auto &patch : c.patches)
-          m.exact[k] +=
-            patch.moment(disc.modelled_box(), powers[k][0], powers[k][1]);
+          m.exact[k] += patch.moment(disc.geometry().modelled_box(),
+                                     powers[k][0],
+                                     powers[k][1]);
       }
     for (const auto &patch : c.patches)
       m.scale += patch.scale();

@@ -140,7 +140,7 @@ namespace liftoff
     // A half or quarter model is right only if the bed is symmetric too:
     // compare g at each point with its images in the symmetry planes.
     const Discretization           &disc = points->discretization();
-    const std::vector<unsigned int> axes = disc.symmetry_axes();
+    const std::vector<unsigned int> axes = disc.geometry().symmetry_axes();
     std::vector<double>             values(points->n_points());
     bool is_finite = true, is_symmetric = true, is_zero = true;
     bool is_pressed = false;

@@ -148,14 +148,14 @@ namespace liftoff
     Utilities::MPI::sum(sums, disc.mpi_communicator, sums);
     // The mirror images of a symmetric part carry the same force; their
     // moments about a symmetry plane cancel that part's.
-    const double copies = disc.n_symmetry_copies();
+    const double copies = disc.geometry().n_symmetry_copies();
     Resultant    r;
     r.force        = copies * sums[0];
     r.contact_area = copies * sums[3];
     if (sums[0] != 0.0)
       for (unsigned int d = 0; d < 2; ++d)
         r.centre[d] = sums[1 + d] / sums[0];
-    for (const unsigned int axis : disc.symmetry_axes())
+    for (const unsigned int axis : disc.geometry().symmetry_axes())
       r.centre[axis] = 0;
     return r;
   }
@@ -182,7 +182,8 @@ namespace liftoff
     // Modes r = (1, x, y); a symmetry plane x = 0 (y = 0) fixes the
     // rotation that w = x (w = y) needs, so that mode is held already.
     std::array<bool, 3> is_free = {{true, true, true}};
-    for (const unsigned int axis : points.discretization().symmetry_axes())
+    for (const unsigned int axis :
+         points.discretization().geometry().symmetry_axes())
       is_free[1 + axis] = false;
     // Moments of the contact set and of the whole part, entry by entry.
     std::vector<double> moments(18, 0.0);

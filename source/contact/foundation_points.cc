@@ -11,7 +11,7 @@ namespace liftoff
   FoundationPoints::setup(const Discretization &disc, const bool with_gradients)
   {
     mesh               = &disc;
-    const auto     &fe = *disc.fe;
+    const auto     &fe = disc.dof_handler.get_fe();
     const QGauss<2> rule(fe.degree + 1);
     q_points_per_cell = rule.size();
 

@@ -42,10 +42,10 @@ namespace liftoff
 
     // Edges of the full plate, by their boundary ids.
     const Selection<unsigned int> plate_edges = {
-      {"Left", Discretization::left_edge},
-      {"Right", Discretization::right_edge},
-      {"Bottom", Discretization::bottom_edge},
-      {"Top", Discretization::top_edge}};
+      {"Left", PlateGeometry::left_edge},
+      {"Right", PlateGeometry::right_edge},
+      {"Bottom", PlateGeometry::bottom_edge},
+      {"Top", PlateGeometry::top_edge}};
 
     bool
     nearly_equal(const double a, const double b)
@@ -300,7 +300,7 @@ namespace liftoff
     std::vector<Point<2>> positions;
     for (const auto &load : loads)
       if (load.kind == Kind::point
-          && disc.modelled_box().point_inside(load.position, 1e-12))
+          && disc.geometry().modelled_box().point_inside(load.position, 1e-12))
         positions.push_back(load.position);
     return positions;
   }
@@ -344,7 +344,7 @@ namespace liftoff
                          const double          time_step,
                          const unsigned int    n_steps) const
   {
-    const BoundingBox<2> plate = disc.plate_box();
+    const BoundingBox<2> plate = disc.geometry().plate_box();
     for (const auto &load : loads)
       {
         if (load.kind == Kind::point)
@@ -357,7 +357,7 @@ namespace liftoff
         if (load.kind == Kind::pressure)
           region_of(load, plate);
       }
-    if (disc.symmetry() == Symmetry::full)
+    if (disc.geometry().symmetry() == Symmetry::full)
       return;
 
     // A reduced model is right only if what it integrates is symmetric: the
@@ -374,8 +374,8 @@ namespace liftoff
     for (const auto &load : loads)
       require_finite_values(load, times, points, plate, disc);
     const std::string symmetry =
-      (disc.symmetry() == Symmetry::half ? "half" : "quarter");
-    for (const unsigned int axis : disc.symmetry_axes())
+      (disc.geometry().symmetry() == Symmetry::half ? "half" : "quarter");
+    for (const unsigned int axis : disc.geometry().symmetry_axes())
       for (const auto &load : loads)
         {
           bool has_image = false;
@@ -402,7 +402,7 @@ namespace liftoff
     // The points integrate_along_edge() uses on this rank's cells, and
     // their images in every combination of symmetry planes: together the
     // quadrature points of the edges of the full plate's mesh.
-    const auto     &fe = *disc.fe;
+    const auto     &fe = disc.dof_handler.get_fe();
     FEFaceValues<2> fe_face_values(disc.mapping,
                                    fe,
                                    QGauss<1>(fe.degree + 2),
@@ -411,14 +411,14 @@ namespace liftoff
     for (const auto &cell : disc.locally_owned_cells())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary()
-            && cell->face(f)->boundary_id() < Discretization::x_symmetry_plane)
+            && cell->face(f)->boundary_id() < PlateGeometry::x_symmetry_plane)
           {
             fe_face_values.reinit(cell, f);
             for (const auto &p : fe_face_values.get_quadrature_points())
               meshed.edge.push_back(p);
           }
     FullPlatePoints full = meshed;
-    for (const unsigned int axis : disc.symmetry_axes())
+    for (const unsigned int axis : disc.geometry().symmetry_axes())
       {
         const unsigned int n = full.edge.size();
         for (unsigned int i = 0; i < n; ++i)
@@ -436,7 +436,7 @@ namespace liftoff
     // the points of a region on a mirrored cell are the images of those of
     // the mirrored region on the meshed cell.
     const PatchIntegrator           integrator(disc);
-    const std::vector<unsigned int> axes = disc.symmetry_axes();
+    const std::vector<unsigned int> axes = disc.geometry().symmetry_axes();
     std::vector<Point<2>>           points;
     for (unsigned int planes = 0; planes < (1u << axes.size()); ++planes)
       {
@@ -647,13 +647,13 @@ namespace liftoff
           }
         // Point loads outside the meshed part are represented by their
         // images inside it.
-        if (!disc.modelled_box().point_inside(load.position, 1e-12))
+        if (!disc.geometry().modelled_box().point_inside(load.position, 1e-12))
           continue;
         const PointFunctional functional(disc, load.position);
-        functional.add_to(load.spatial_part,
-                          load.magnitude
-                            * disc.share_of_point_load(load.position),
-                          disc.constraints);
+        functional.add_to(
+          load.spatial_part,
+          load.magnitude * disc.geometry().share_of_point_load(load.position),
+          disc.constraints);
         load.spatial_part.compress(VectorOperation::add);
       }
   }
@@ -671,7 +671,9 @@ namespace liftoff
     vector = 0;
     if (load.kind == Kind::pressure)
       PatchIntegrator(*discretization)
-        .add(density, region_of(load, discretization->plate_box()), vector);
+        .add(density,
+             region_of(load, discretization->geometry().plate_box()),
+             vector);
     else
       integrate_along_edge(density, load.edge, vector);
   }
@@ -684,7 +686,7 @@ namespace liftoff
     LA::MPI::Vector                                              &vector) const
   {
     const Discretization &disc   = *discretization;
-    const auto           &fe     = *disc.fe;
+    const auto           &fe     = disc.dof_handler.get_fe();
     const unsigned int    n_dofs = fe.n_dofs_per_cell();
     const UpdateFlags     flags =
       update_values | update_quadrature_points | update_JxW_values;
@@ -781,7 +783,7 @@ namespace liftoff
           body_force->vector_value(x, values);
           return std::array<double, 3>{{values[0], values[1], values[2]}};
         },
-        discretization->plate_box(),
+        discretization->geometry().plate_box(),
         load_vector);
   }
 

@@ -196,7 +196,7 @@ namespace liftoff
   {
     if (!enabled)
       return;
-    AssertThrow(discretization.supports_local_refinement(),
+    AssertThrow(discretization.element().supports_local_refinement(),
                 ExcMessage("Mesh refinement/Adaptive = true needs "
                            "Discretization/Element = lagrange: the "
                            "serendipity element has no transfer between "
@@ -282,7 +282,8 @@ namespace liftoff
     Vector<float> estimate(discretization.triangulation.n_active_cells());
     KellyErrorEstimator<2>::estimate(discretization.mapping,
                                      discretization.dof_handler,
-                                     QGauss<1>(discretization.degree() + 1),
+                                     QGauss<1>(discretization.element().degree()
+                                               + 1),
                                      {},
                                      ghosted_solution,
                                      estimate);
@@ -311,7 +312,8 @@ namespace liftoff
     // Each layer: the cells sharing a node with the band so far. The
     // marks go through a ghosted vector of nodes, so a band crosses the
     // boundaries between ranks as it would on one rank.
-    const unsigned int n_dofs = discretization.fe->n_dofs_per_cell();
+    const unsigned int n_dofs =
+      discretization.dof_handler.get_fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n_dofs);
     LA::MPI::Vector                      marks;
     marks.reinit(discretization.locally_owned_dofs,

@@ -62,8 +62,8 @@ namespace liftoff
 
   PatchIntegrator::PatchIntegrator(const Discretization &discretization)
       : discretization(discretization)
-      , cell_rule(discretization.fe->degree + 2)
-      , line_rule(discretization.fe->degree + 2)
+      , cell_rule(discretization.dof_handler.get_fe().degree + 2)
+      , line_rule(discretization.dof_handler.get_fe().degree + 2)
   {}
 
 
@@ -98,7 +98,10 @@ namespace liftoff
                              const FEValues<2> &)> &work) const
   {
     const Discretization &disc = discretization;
-    FEValues<2>           whole_cell(disc.mapping, *disc.fe, cell_rule, flags);
+    FEValues<2>           whole_cell(disc.mapping,
+                           disc.dof_handler.get_fe(),
+                           cell_rule,
+                           flags);
     for (const auto &cell : disc.locally_owned_cells())
       {
         // Cells inside the patch or away from it are decided on their
@@ -130,7 +133,10 @@ namespace liftoff
         const Quadrature<2>  rule(
           on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
           on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
-        FEValues<2> cut_cell(disc.mapping, *disc.fe, rule, flags);
+        FEValues<2> cut_cell(disc.mapping,
+                             disc.dof_handler.get_fe(),
+                             rule,
+                             flags);
         cut_cell.reinit(cell);
         work(cell, cut_cell);
       }
@@ -142,9 +148,9 @@ namespace liftoff
                        const BoundingBox<2> &patch,
                        LA::MPI::Vector      &vector) const
   {
-    const auto                          &fe     = *discretization.fe;
-    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
-    Vector<double>                       cell_rhs(n_dofs);
+    const auto        &fe     = discretization.dof_handler.get_fe();
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    Vector<double>     cell_rhs(n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
     for_each_covered_cell(
       patch,

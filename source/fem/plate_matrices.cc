@@ -88,14 +88,14 @@ namespace liftoff
     // pattern holds a third of the plate's entries. The entries between
     // other components are exact zeros, which distribute_local_to_global
     // skips.
-    Table<2, DoFTools::Coupling> same_component(Discretization::n_components,
-                                                Discretization::n_components);
+    Table<2, DoFTools::Coupling> same_component(PlateElement::n_components,
+                                                PlateElement::n_components);
     same_component.fill(DoFTools::none);
-    for (unsigned int c = 0; c < Discretization::n_components; ++c)
+    for (unsigned int c = 0; c < PlateElement::n_components; ++c)
       same_component(c, c) = DoFTools::always;
     disc.reinit_matrix(mass, same_component);
 
-    const auto           &fe     = *disc.fe;
+    const auto           &fe     = disc.dof_handler.get_fe();
     const unsigned int    p      = fe.degree;
     const unsigned int    n_dofs = fe.n_dofs_per_cell();
     const QGauss<2>       full_rule(p + 1);
@@ -105,7 +105,7 @@ namespace liftoff
                           update_values | update_gradients | update_JxW_values);
     TransverseShearStrain shear_strain(disc.mapping,
                                        fe,
-                                       disc.shear_integration());
+                                       disc.element().shear_integration());
 
     const double shear = plate.shear_stiffness();
 

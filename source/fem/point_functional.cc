@@ -54,7 +54,7 @@ namespace liftoff
                                    const unsigned int    component)
   {
     const auto    &dof_handler = discretization.dof_handler;
-    const auto    &fe          = *discretization.fe;
+    const auto    &fe          = discretization.dof_handler.get_fe();
     const MPI_Comm comm        = discretization.mpi_communicator;
 
     const auto [found, is_found] =

@@ -505,7 +505,8 @@ namespace liftoff
     const Vector<float> level = refinement_levels(disc);
     plane.add_data_vector(level, "refinement_level");
     plane.build_patches(disc.mapping,
-                        subdivisions > 0 ? subdivisions : disc.degree());
+                        subdivisions > 0 ? subdivisions
+                                         : disc.element().degree());
     PlateFields data_out(plane);
 
     DataOutBase::VtkFlags flags;

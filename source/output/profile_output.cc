@@ -76,10 +76,10 @@ namespace liftoff
     if (n_points == 0)
       return;
     for (const auto &p : {start, end})
-      AssertThrow(disc.is_on_plate(p),
+      AssertThrow(disc.geometry().is_on_plate(p),
                   ExcMessage("Output/Profile start and Profile end must lie "
                              "on "
-                             + disc.plate_description() + "; "
+                             + disc.geometry().plate_description() + "; "
                              + std::to_string(p[0]) + ", "
                              + std::to_string(p[1]) + " does not."));
   }
@@ -136,7 +136,7 @@ namespace liftoff
     discretization = &disc;
     points.clear();
     for (unsigned int i = 0; i < n_points; ++i)
-      points.emplace_back(disc, disc.to_modelled_part(point(i)));
+      points.emplace_back(disc, disc.geometry().to_modelled_part(point(i)));
   }
 
 

@@ -138,8 +138,8 @@ namespace liftoff
         double(
           Utilities::MPI::n_mpi_processes(discretization.mpi_communicator)));
     add("cells", double(discretization.triangulation.n_global_active_cells()));
-    add("degree", double(discretization.degree()));
-    add("element", discretization.element_name());
+    add("degree", double(discretization.element().degree()));
+    add("element", discretization.element().name());
     add("dofs", double(discretization.dof_handler.n_dofs()));
   }
 

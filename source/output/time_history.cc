@@ -87,11 +87,11 @@ namespace liftoff
   TimeHistory::check_against(const Discretization &disc) const
   {
     for (const auto &p : probe_points)
-      AssertThrow(disc.is_on_plate(p),
+      AssertThrow(disc.geometry().is_on_plate(p),
                   ExcMessage("Output/Probe points: the point "
                              + std::to_string(p[0]) + ", "
                              + std::to_string(p[1]) + " lies outside "
-                             + disc.plate_description() + "."));
+                             + disc.geometry().plate_description() + "."));
   }
 
 
@@ -194,9 +194,10 @@ namespace liftoff
     discretization = &disc;
     probes.clear();
     for (const auto &p : probe_points)
-      probes.emplace_back(disc, disc.to_modelled_part(p));
-    w_dofs = DoFTools::extract_dofs(
-      disc.dof_handler, disc.fe->component_mask(FEValuesExtractors::Scalar(0)));
+      probes.emplace_back(disc, disc.geometry().to_modelled_part(p));
+    w_dofs = DoFTools::extract_dofs(disc.dof_handler,
+                                    disc.dof_handler.get_fe().component_mask(
+                                      FEValuesExtractors::Scalar(0)));
     gap_at_w_dofs.clear();
     if (write_resultant)
       disc.reinit_ghosted_vector(ghosted_velocity);
@@ -210,11 +211,11 @@ namespace liftoff
       return;
     const Discretization                       &disc = step.discretization;
     std::map<types::global_dof_index, Point<2>> points;
-    DoFTools::map_dofs_to_support_points(disc.mapping,
-                                         disc.dof_handler,
-                                         points,
-                                         disc.fe->component_mask(
-                                           FEValuesExtractors::Scalar(0)));
+    DoFTools::map_dofs_to_support_points(
+      disc.mapping,
+      disc.dof_handler,
+      points,
+      disc.dof_handler.get_fe().component_mask(FEValuesExtractors::Scalar(0)));
     for (const auto i : w_dofs)
       gap_at_w_dofs.push_back(step.foundation.law().gap_at(points.at(i)));
   }

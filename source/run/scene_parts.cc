@@ -65,7 +65,7 @@ namespace liftoff
   SceneParts::check() const
   {
     if (analysis == Analysis::static_analysis)
-      AssertThrow(discretization.has_kinematic_support()
+      AssertThrow(discretization.geometry().has_kinematic_support()
                     || foundation.law().model() != ContactLaw::Model::none,
                   ExcMessage("Analysis/Type = static: a plate with all edges "
                              "free and Foundation/Model = none has no static "
@@ -82,7 +82,9 @@ namespace liftoff
   {
     // The direct solver's factor dominates a large scene: what it and the
     // mesh would allocate is estimated before anything is built.
-    discretization.check_memory(active_set.linear_solver().factor_placement());
+    MemoryEstimate::check(discretization,
+                          active_set.linear_solver().factor_placement(),
+                          discretization.mpi_communicator);
     discretization.setup();
     mesh_refinement.refine_around_points(
       discretization, loads.point_load_positions(discretization));

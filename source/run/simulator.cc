@@ -147,7 +147,7 @@ namespace liftoff
     const Discretization &discretization = parts.discretization;
     pcout << "liftoff: " << discretization.triangulation.n_global_active_cells()
           << " cells, " << discretization.dof_handler.n_dofs() << " dofs ("
-          << discretization.element_name() << "), "
+          << discretization.element().name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
           << std::endl;
   }

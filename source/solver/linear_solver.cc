@@ -124,15 +124,15 @@ namespace liftoff
   }
 
 
-  Discretization::Factor
+  MemoryEstimate::Factor
   LinearSolver::factor_placement() const
   {
     if (type == Type::cg)
-      return Discretization::Factor::none;
+      return MemoryEstimate::Factor::none;
     if (package == Package::klu)
-      return Discretization::Factor::lu_on_rank_0;
-    return package == Package::mumps_lu ? Discretization::Factor::lu
-                                        : Discretization::Factor::cholesky;
+      return MemoryEstimate::Factor::lu_on_rank_0;
+    return package == Package::mumps_lu ? MemoryEstimate::Factor::lu
+                                        : MemoryEstimate::Factor::cholesky;
   }
 
 
@@ -210,7 +210,7 @@ namespace liftoff
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
-    data.higher_order_elements = (disc.degree() > 1);
+    data.higher_order_elements = (disc.element().degree() > 1);
     data.smoother_sweeps       = 2;
     data.aggregation_threshold = 0.02;
     DoFTools::extract_constant_modes(disc.dof_handler,

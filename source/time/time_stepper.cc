@@ -277,7 +277,7 @@ namespace liftoff
   TimeStepper::likely_cause_of_ill_conditioning() const
   {
     std::vector<std::string> causes;
-    const std::string        edge = discretization.only_supported_edge();
+    const std::string edge = discretization.geometry().only_supported_edge();
     if (!edge.empty())
       causes.push_back("the plate is held on one edge only (Boundary "
                        "conditions/"
@@ -285,7 +285,8 @@ namespace liftoff
                        + "), about which it can turn: a mechanism that "
                          "only the foundation's contact holds; clamp that "
                          "edge or support another");
-    const double elongation = discretization.largest_cell_aspect_ratio();
+    const double elongation =
+      discretization.geometry().largest_cell_aspect_ratio();
     if (elongation > 100)
       causes.push_back("the cells are " + format_number(elongation)
                        + " times longer than wide (Plate/Aspect ratio against "
@@ -310,7 +311,7 @@ namespace liftoff
     // The plate at rest: the springs' Gamma (w - g), no dashpot force.
     const SpringPressure             pressure = foundation.law().pressure();
     const ActiveSetIteration::System system{
-      load, pressure, !discretization.has_kinematic_support()};
+      load, pressure, !discretization.geometry().has_kinematic_support()};
     foundation.activate_all();
     active_set.set_base_matrix(
       [this](LA::MPI::SparseMatrix &base) {
@@ -380,7 +381,7 @@ namespace liftoff
     // rest. A gap makes the response affine; Clapeyron's identity at the
     // equilibrium then gains the gap's term (gap_work()).
     state_.work =
-      0.5 * discretization.n_symmetry_copies()
+      0.5 * discretization.geometry().n_symmetry_copies()
       * (load * state_.u + foundation.diagnostics().gap_work(state_.ghosted_u));
     state_.energies = energies();
     require_finite_state("an energy", {}, state_.energies.values(), load);
@@ -470,7 +471,7 @@ namespace liftoff
                                   state_.u,
                                   state_.ghosted_u,
                                   state_.v,
-                                  discretization.n_symmetry_copies(),
+                                  discretization.geometry().n_symmetry_copies(),
                                   state_.work,
                                   scratch);
     e.dissipated    = state_.dissipated;
@@ -632,7 +633,7 @@ namespace liftoff
                                 u_next,
                                 state_.load,
                                 next_load,
-                                discretization.n_symmetry_copies(),
+                                discretization.geometry().n_symmetry_copies(),
                                 scratch,
                                 scratch_2);
     copy_values(next_load, state_.load);
@@ -667,8 +668,8 @@ namespace liftoff
     previous_force                  = dashpot_force;
     compute_dashpot_force();
     previous_force += dashpot_force;
-    state_.dissipated +=
-      0.5 * discretization.n_symmetry_copies() * (scratch * previous_force);
+    state_.dissipated += 0.5 * discretization.geometry().n_symmetry_copies()
+                         * (scratch * previous_force);
   }
 
 
@@ -708,7 +709,7 @@ namespace liftoff
   TimeStepper::deflection_at(const Point<2> &p) const
   {
     const PointFunctional probe(discretization,
-                                discretization.to_modelled_part(p));
+                                discretization.geometry().to_modelled_part(p));
     return Utilities::MPI::sum(probe.local_value(state_.ghosted_u),
                                discretization.mpi_communicator);
   }

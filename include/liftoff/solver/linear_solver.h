@@ -8,6 +8,7 @@
 #include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/memory_estimate.h>
 
 #include <chrono>
 #include <memory>
@@ -173,7 +174,7 @@ namespace liftoff
 
     /// Where the factor the parameters ask for will be kept, for the
     /// memory estimate made before anything is built.
-    Discretization::Factor
+    MemoryEstimate::Factor
     factor_placement() const;
 
     /// Factorisations or preconditioner set-ups so far.

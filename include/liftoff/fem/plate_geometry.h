@@ -1,0 +1,134 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/grid/tria.h>
+
+#include <liftoff/fem/mindlin_plate.h>
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /// How an edge of the plate is held.
+  enum class EdgeCondition
+  {
+    free,
+    hard_simply_supported, // w = 0 and the tangential rotation is zero
+    soft_simply_supported, // w = 0 only
+    clamped                // w = psi_x = psi_y = 0
+  };
+
+  /// Which part of the plate is meshed. The scene always describes the full
+  /// plate; symmetry planes are x = 0 (half and quarter) and y = 0 (quarter).
+  enum class Symmetry
+  {
+    full,
+    half,
+    quarter
+  };
+
+  /**
+   * The shape of the plate and how it is held: the rectangle
+   * [-1/2, 1/2] x [-mu/2, mu/2], the part of it that is meshed (full, half,
+   * quarter), its coarse mesh with the boundary ids of edges and symmetry
+   * planes, and the condition on each edge. Every question of the form "is
+   * this point on the plate" or "which part carries this load" is answered
+   * here, so that another shape is a change of this class alone.
+   */
+  class PlateGeometry
+  {
+  public:
+    /// Boundary ids: the four plate edges, then the symmetry planes.
+    enum BoundaryId : types::boundary_id
+    {
+      left_edge        = 0,
+      right_edge       = 1,
+      bottom_edge      = 2,
+      top_edge         = 3,
+      x_symmetry_plane = 4, // x = 0
+      y_symmetry_plane = 5  // y = 0
+    };
+
+    static const std::array<std::string, 4> edge_names;
+
+    PlateGeometry();
+
+    /// Entries in "Discretization" (Symmetry, Cells along x and y) and
+    /// "Boundary conditions".
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// The plate's aspect ratio is taken here, so that every check of a
+    /// point against the plate made while parsing sees the real plate.
+    void
+    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
+
+    /// The `Cells along x` x `Cells along y` cells of the meshed part with
+    /// the boundary ids of edges and symmetry planes, in an empty
+    /// triangulation.
+    void
+    create_coarse_mesh(Triangulation<2> &triangulation) const;
+    /// Cells of the coarse mesh along x (axis 0) or y (axis 1).
+    unsigned int
+    coarse_cells_along(const unsigned int axis) const;
+    /// The larger of width / height and height / width of the cells.
+    double
+    largest_cell_aspect_ratio() const;
+
+    /// The components of (w, psi_x, psi_y) held at zero on each boundary
+    /// that holds any: the supported edges, then the symmetry planes.
+    std::vector<std::pair<types::boundary_id, ComponentMask>>
+    held_components() const;
+    /// True when some edge restrains w, so the stiffness alone is regular
+    /// enough for a static solve without foundation contact.
+    bool
+    has_kinematic_support() const;
+    /// The name of the edge ("Left", ...) if it is the only one that holds
+    /// the plate and it is not clamped: the plate can turn about it, so
+    /// only a foundation makes a static problem regular. Else "".
+    std::string
+    only_supported_edge() const;
+
+    Symmetry
+    symmetry() const;
+    /// How many copies of the modelled part make the plate (1, 2 or 4).
+    unsigned int
+    n_symmetry_copies() const;
+    /// Axes normal to the symmetry planes (0: plane x = 0, 1: plane y = 0).
+    std::vector<unsigned int>
+    symmetry_axes() const;
+
+    /// The full plate and the part of it that is meshed.
+    BoundingBox<2>
+    plate_box() const;
+    BoundingBox<2>
+    modelled_box() const;
+    /// True for a point of the plate, its edges included.
+    bool
+    is_on_plate(const Point<2> &p) const;
+    /// "the plate [-0.5, 0.5] x [-1, 1]": messages about points off it name
+    /// the plate in numbers, since mu is a parameter of another class.
+    std::string
+    plate_description() const;
+    /// Mirror a point of the full plate into the modelled part.
+    Point<2>
+    to_modelled_part(const Point<2> &p) const;
+    /// Share of a concentrated load at p (in the modelled part) that the
+    /// modelled part carries: 1/2 for each symmetry plane p lies on.
+    double
+    share_of_point_load(const Point<2> &p) const;
+
+  private:
+    double                       aspect_ratio  = 1.0;
+    Symmetry                     modelled_part = Symmetry::full;
+    unsigned int                 n_cells_x     = 10;
+    unsigned int                 n_cells_y     = 10;
+    std::array<EdgeCondition, 4> edges;
+  };
+} // namespace liftoff

@@ -1,0 +1,291 @@
+#include <deal.II/grid/grid_generator.h>
+
+#include <liftoff/base/selection.h>
+#include <liftoff/fem/plate_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace liftoff
+{
+  const std::array<std::string, 4> PlateGeometry::edge_names = {
+    {"Left", "Right", "Bottom", "Top"}};
+
+  namespace
+  {
+    const Selection<EdgeCondition> edge_conditions = {
+      {"free", EdgeCondition::free},
+      {"hard simply supported", EdgeCondition::hard_simply_supported},
+      {"soft simply supported", EdgeCondition::soft_simply_supported},
+      {"clamped", EdgeCondition::clamped}};
+
+    const Selection<Symmetry> symmetries = {{"full", Symmetry::full},
+                                            {"half", Symmetry::half},
+                                            {"quarter", Symmetry::quarter}};
+  } // namespace
+
+
+  PlateGeometry::PlateGeometry()
+  {
+    edges.fill(EdgeCondition::free);
+  }
+
+
+  void
+  PlateGeometry::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("Symmetry",
+                      "full",
+                      symmetries.pattern(),
+                      "Which part of the plate is meshed: full; half "
+                      "(x >= 0, symmetry plane x = 0); quarter (x >= 0, "
+                      "y >= 0). The scene always describes the full plate "
+                      "and its full loads.");
+    prm.declare_entry("Cells along x",
+                      "10",
+                      Patterns::Integer(1),
+                      "Number of cells along x on the meshed part.");
+    prm.declare_entry("Cells along y",
+                      "10",
+                      Patterns::Integer(1),
+                      "Number of cells along y on the meshed part.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    for (const auto &name : edge_names)
+      prm.declare_entry(name,
+                        "free",
+                        edge_conditions.pattern(),
+                        "Condition on this edge of the full plate. Left: "
+                        "x = -1/2, Right: x = 1/2, Bottom: y = -mu/2, "
+                        "Top: y = mu/2. Hard simple support fixes w and the "
+                        "rotation along the edge, soft only w.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  PlateGeometry::parse_parameters(ParameterHandler   &prm,
+                                  const MindlinPlate &plate)
+  {
+    aspect_ratio = plate.aspect_ratio;
+    prm.enter_subsection("Discretization");
+    const std::string symmetry_name = prm.get("Symmetry");
+    modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
+    n_cells_x     = prm.get_integer("Cells along x");
+    n_cells_y     = prm.get_integer("Cells along y");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    for (unsigned int e = 0; e < 4; ++e)
+      edges[e] = edge_conditions.parse(prm.get(edge_names[e]),
+                                       "Boundary conditions/" + edge_names[e]);
+    prm.leave_subsection();
+
+    // A symmetric model is only right for a symmetric plate.
+    if (modelled_part != Symmetry::full)
+      AssertThrow(edges[left_edge] == edges[right_edge],
+                  ExcMessage(
+                    "Discretization/Symmetry = " + symmetry_name
+                    + " needs Boundary conditions/Left and Right to be "
+                      "equal (the plate must be symmetric about x = 0)."));
+    if (modelled_part == Symmetry::quarter)
+      AssertThrow(edges[bottom_edge] == edges[top_edge],
+                  ExcMessage("Discretization/Symmetry = quarter needs Boundary "
+                             "conditions/Bottom and Top to be equal (the plate "
+                             "must be symmetric about y = 0)."));
+  }
+
+
+  void
+  PlateGeometry::create_coarse_mesh(Triangulation<2> &triangulation) const
+  {
+    const BoundingBox<2> box = modelled_box();
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {n_cells_x, n_cells_y},
+                                              box.get_boundary_points().first,
+                                              box.get_boundary_points().second,
+                                              /*colorize*/ true);
+    // Faces on x = 0 or y = 0 of a symmetric model are symmetry planes, not
+    // plate edges. Refined faces inherit the ids of the coarse ones.
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const Point<2> c = face->center();
+            if (modelled_part != Symmetry::full
+                && face->boundary_id() == left_edge && std::abs(c[0]) < 1e-12)
+              face->set_boundary_id(x_symmetry_plane);
+            if (modelled_part == Symmetry::quarter
+                && face->boundary_id() == bottom_edge && std::abs(c[1]) < 1e-12)
+              face->set_boundary_id(y_symmetry_plane);
+          }
+  }
+
+
+  unsigned int
+  PlateGeometry::coarse_cells_along(const unsigned int axis) const
+  {
+    return axis == 0 ? n_cells_x : n_cells_y;
+  }
+
+
+  double
+  PlateGeometry::largest_cell_aspect_ratio() const
+  {
+    // Refinement splits cells in both directions: the coarse cells' ratio.
+    const double width  = 1.0 / n_cells_x;
+    const double height = aspect_ratio / n_cells_y;
+    return std::max(width / height, height / width);
+  }
+
+
+  std::vector<std::pair<types::boundary_id, ComponentMask>>
+  PlateGeometry::held_components() const
+  {
+    const auto mask = [](const std::vector<bool> &w_psix_psiy) {
+      return ComponentMask(w_psix_psiy);
+    };
+    std::vector<std::pair<types::boundary_id, ComponentMask>> held;
+    for (unsigned int e = 0; e < 4; ++e)
+      {
+        // Rotation along an edge: psi_y on the edges x = const, psi_x on
+        // the edges y = const.
+        const bool along_y = (e == left_edge || e == right_edge);
+        switch (edges[e])
+          {
+          case EdgeCondition::free:
+            break;
+          case EdgeCondition::soft_simply_supported:
+            held.emplace_back(e, mask({true, false, false}));
+            break;
+          case EdgeCondition::hard_simply_supported:
+            held.emplace_back(e, mask({true, !along_y, along_y}));
+            break;
+          case EdgeCondition::clamped:
+            held.emplace_back(e, mask({true, true, true}));
+            break;
+          }
+      }
+    // On a symmetry plane the rotation normal to it vanishes.
+    held.emplace_back(x_symmetry_plane, mask({false, true, false}));
+    held.emplace_back(y_symmetry_plane, mask({false, false, true}));
+    return held;
+  }
+
+
+  bool
+  PlateGeometry::has_kinematic_support() const
+  {
+    for (const auto e : edges)
+      if (e != EdgeCondition::free)
+        return true;
+    return false;
+  }
+
+
+  std::string
+  PlateGeometry::only_supported_edge() const
+  {
+    unsigned int n_supported = 0, supported = 0;
+    for (unsigned int e = 0; e < edges.size(); ++e)
+      if (edges[e] != EdgeCondition::free)
+        {
+          ++n_supported;
+          supported = e;
+        }
+    return (n_supported == 1 && edges[supported] != EdgeCondition::clamped)
+             ? edge_names[supported]
+             : std::string();
+  }
+
+
+  Symmetry
+  PlateGeometry::symmetry() const
+  {
+    return modelled_part;
+  }
+
+
+  unsigned int
+  PlateGeometry::n_symmetry_copies() const
+  {
+    return 1u << symmetry_axes().size();
+  }
+
+
+  std::vector<unsigned int>
+  PlateGeometry::symmetry_axes() const
+  {
+    switch (modelled_part)
+      {
+      case Symmetry::full:
+        return {};
+      case Symmetry::half:
+        return {0};
+      default:
+        return {0, 1};
+      }
+  }
+
+
+  BoundingBox<2>
+  PlateGeometry::plate_box() const
+  {
+    return BoundingBox<2>(std::make_pair(Point<2>(-0.5, -0.5 * aspect_ratio),
+                                         Point<2>(0.5, 0.5 * aspect_ratio)));
+  }
+
+
+  BoundingBox<2>
+  PlateGeometry::modelled_box() const
+  {
+    auto corners = plate_box().get_boundary_points();
+    for (const unsigned int axis : symmetry_axes())
+      corners.first[axis] = 0.0;
+    return BoundingBox<2>(corners);
+  }
+
+
+  bool
+  PlateGeometry::is_on_plate(const Point<2> &p) const
+  {
+    // Relative to the plate's size, so that a point written on an edge is
+    // on the plate whatever the round-off of its decimal digits.
+    return plate_box().point_inside(p, 1e-12 * std::max(1.0, aspect_ratio));
+  }
+
+
+  std::string
+  PlateGeometry::plate_description() const
+  {
+    std::ostringstream text;
+    text.precision(6);
+    text << "the plate [-0.5, 0.5] x [" << -0.5 * aspect_ratio << ", "
+         << 0.5 * aspect_ratio << "]";
+    return text.str();
+  }
+
+
+  Point<2>
+  PlateGeometry::to_modelled_part(const Point<2> &p) const
+  {
+    Point<2> q = p;
+    for (const unsigned int axis : symmetry_axes())
+      q[axis] = std::abs(q[axis]);
+    return q;
+  }
+
+
+  double
+  PlateGeometry::share_of_point_load(const Point<2> &p) const
+  {
+    double share = 1.0;
+    for (const unsigned int axis : symmetry_axes())
+      if (std::abs(p[axis]) < 1e-12)
+        share *= 0.5;
+    return share;
+  }
+} // namespace liftoff
