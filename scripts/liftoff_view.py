@@ -11,7 +11,7 @@ and colours it by the contact status (the fraction of each cell's Gauss
 points in contact: 1 in contact, 0 lifted off). Writes
 FOLDER/view_NNNNN.png (default OUTPUT_DIRECTORY/pictures), one per output
 time, and view.csv there: per picture tau, the largest w and the bounds of
-the warped plate, which tests/liftoff_view.sh checks.
+the warped plate, which tests/command_line/liftoff_view.sh checks.
 """
 
 import argparse

@@ -12,7 +12,7 @@ stack trace or a hang.
 import csv, os, re, subprocess, sys, tempfile
 
 # The entries as every_parameter_refused.py reads them from --parameters.
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bad_input"))
 from every_parameter_refused import declared_entries, is_first_of_numbered  # noqa: E402
 
 liftoff = os.path.abspath(sys.argv[1])
