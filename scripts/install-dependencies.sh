@@ -5,7 +5,8 @@
 # PETSc), OpenBLAS (the dense blocks of the sparse factorisations: a
 # factorisation of the benchmark M takes half the time of the reference
 # BLAS's; the serial build, so MPI ranks do not compete with BLAS threads
-# for the cores), OpenMPI's launcher, CMake, a compiler, and for the scripts
+# for the cores), OpenMPI's launcher, CMake, a compiler, nlohmann/json (the
+# writer of summary.json), and for the scripts
 # numpy, pandas and matplotlib (the study tool, the plots), h5py and meshio
 # (the tests of the HDF5 output and of solution.xdmf).
 #   scripts/install-dependencies.sh           what the build and tests need
@@ -15,7 +16,7 @@
 #                                             xdmf_paraview_np2 are
 #                                             skipped without them)
 set -euo pipefail
-packages=(libdeal.ii-dev libmumps-dev libopenblas0-serial openmpi-bin cmake g++ make python3-numpy
+packages=(libdeal.ii-dev libmumps-dev libopenblas0-serial openmpi-bin cmake g++ make nlohmann-json3-dev python3-numpy
           python3-pandas python3-matplotlib python3-h5py python3-meshio)
 if [ "${1:-}" = "--viewer" ]; then
   packages+=(python3-paraview xvfb)

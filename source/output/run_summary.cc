@@ -6,53 +6,44 @@
 #include <liftoff/output/run_summary.h>
 #include <liftoff/solver/linear_solver.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
-#include <iomanip>
 #include <sstream>
 
 namespace liftoff
 {
   namespace
   {
-    std::string
-    quoted(const std::string &text)
+    // Counts read as counts, in both files (a million dofs is not 1e+06).
+    bool
+    is_count(const double x)
     {
-      std::ostringstream out;
-      out << '"';
-      for (const char c : text)
-        if (c == '"' || c == '\\')
-          out << '\\' << c;
-        else if (static_cast<unsigned char>(c) < 0x20)
-          out << "\\u" << std::hex << std::setw(4) << std::setfill('0')
-              << int(c) << std::dec;
-        else
-          out << c;
-      out << '"';
-      return out.str();
+      return x == std::round(x) && std::abs(x) < 1e15;
     }
 
-    // Counts read as counts (a million dofs is not 1e+06).
+
     std::string
     text_number(const double x)
     {
       std::ostringstream out;
-      if (x == std::round(x) && std::abs(x) < 1e15)
+      if (is_count(x))
         out << static_cast<long long>(x);
       else
         out << x;
       return out.str();
     }
 
-    // JSON has no inf or nan; a value that is not finite is written as
-    // null rather than making the file unreadable.
-    std::string
+    // A value that is not finite becomes null (JSON has no inf or nan),
+    // rather than making the file unreadable.
+    nlohmann::ordered_json
     json_number(const double x)
     {
       if (!std::isfinite(x))
-        return "null";
-      std::ostringstream out;
-      out << std::setprecision(12) << x;
-      return out.str();
+        return nullptr;
+      if (is_count(x))
+        return static_cast<long long>(x);
+      return x;
     }
   } // namespace
 
@@ -89,31 +80,27 @@ namespace liftoff
   std::string
   RunSummary::json() const
   {
-    std::ostringstream out;
-    out << "{";
-    const char *separator = "\n  ";
+    // ordered_json keeps the order of summary.txt; doubles are written in
+    // their shortest form that reads back exactly.
+    nlohmann::ordered_json document = nlohmann::ordered_json::object();
     for (const auto &[key, value] : entries)
-      {
-        out << separator << quoted(key) << ": ";
-        separator = ",\n  ";
-        if (const auto *section = std::get_if<Section>(&value))
-          {
-            out << "{";
-            const char *inner = "";
-            for (const auto &[name, number] : *section)
-              {
-                out << inner << quoted(name) << ": " << json_number(number);
-                inner = ", ";
-              }
-            out << "}";
-          }
-        else if (const auto *number = std::get_if<double>(&value))
-          out << json_number(*number);
-        else
-          out << quoted(std::get<std::string>(value));
-      }
-    out << "\n}\n";
-    return out.str();
+      if (const auto *section = std::get_if<Section>(&value))
+        {
+          auto &object = document[key] = nlohmann::ordered_json::object();
+          for (const auto &[name, number] : *section)
+            object[name] = json_number(number);
+        }
+      else if (const auto *number = std::get_if<double>(&value))
+        document[key] = json_number(*number);
+      else
+        document[key] = std::get<std::string>(value);
+    // A scene's bytes that are not UTF-8 (a file name, say) are replaced,
+    // not thrown on: the summary of a finished run is always written.
+    return document.dump(2,
+                         ' ',
+                         false,
+                         nlohmann::ordered_json::error_handler_t::replace)
+           + "\n";
   }
 
 
