@@ -61,8 +61,10 @@ namespace liftoff
       "(w - g) + c w_dot) over the contact region S (the shear layer adds "
       "no force), its centre `resultant_x`, `resultant_y` (the point about "
       "which it has no moment; 0, 0 without a force) and `contact_area`, "
-      "in full plate units also on a half or quarter model (costs a pass "
-      "over the Gauss points per step).");
+      "in full plate units also on a half or quarter model; and the largest "
+      "bearing pressure at a Gauss point in contact, `max_pressure` (0 "
+      "without contact), at `max_pressure_x`, `max_pressure_y` (a point of "
+      "the meshed part) (costs a pass over the Gauss points per step).");
   }
 
 
@@ -169,6 +171,9 @@ namespace liftoff
         add("resultant_x", [](const Row &r) { return r.resultant_x; });
         add("resultant_y", [](const Row &r) { return r.resultant_y; });
         add("contact_area", [](const Row &r) { return r.contact_area; });
+        add("max_pressure", [](const Row &r) { return r.max_pressure; });
+        add("max_pressure_x", [](const Row &r) { return r.max_pressure_x; });
+        add("max_pressure_y", [](const Row &r) { return r.max_pressure_y; });
       }
   }
 
@@ -264,10 +269,13 @@ namespace liftoff
       {
         const auto r =
           step.foundation.diagnostics().resultant(u, ghosted_velocity);
-        row.resultant    = r.force;
-        row.resultant_x  = r.centre[0];
-        row.resultant_y  = r.centre[1];
-        row.contact_area = r.contact_area;
+        row.resultant      = r.force;
+        row.resultant_x    = r.centre[0];
+        row.resultant_y    = r.centre[1];
+        row.contact_area   = r.contact_area;
+        row.max_pressure   = r.largest_pressure;
+        row.max_pressure_x = r.largest_pressure_at[0];
+        row.max_pressure_y = r.largest_pressure_at[1];
       }
     return row;
   }
@@ -331,7 +339,7 @@ namespace liftoff
   void
   TimeHistory::save(OutputArchive &archive) const
   {
-    archive << column_names() << history;
+    archive << column_names() << Row::layout() << history;
   }
 
 
@@ -341,20 +349,23 @@ namespace liftoff
     // history.csv is a function of the rows: they are written again as
     // they were, and those of steps after the checkpoint are gone once the
     // file is rewritten.
-    // The rows' layout follows the columns: a checkpoint of other columns
-    // (another version of liftoff) is refused before its rows are read.
-    std::vector<std::string> saved;
-    archive >> saved;
+    // A checkpoint of other columns, or of rows of another layout (another
+    // version of liftoff: an optional column adds a member to every row),
+    // is refused before its rows are read.
+    std::vector<std::string> saved, saved_layout;
+    archive >> saved >> saved_layout;
     const auto joined = [](const std::vector<std::string> &names) {
       std::string text;
       for (const auto &name : names)
         text += (text.empty() ? "" : ",") + name;
       return text;
     };
-    AssertThrow(saved == column_names(),
+    AssertThrow(saved == column_names() && saved_layout == Row::layout(),
                 ExcMessage("The checkpoint's time history has the columns "
-                           + joined(saved) + ", this liftoff writes "
-                           + joined(column_names())
+                           + joined(saved) + " and rows of "
+                           + joined(saved_layout) + ", this liftoff writes "
+                           + joined(column_names()) + " and rows of "
+                           + joined(Row::layout())
                            + ": it was written by another version of liftoff; "
                              "resume with that version, or start the scene "
                              "anew."));

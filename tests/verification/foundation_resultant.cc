@@ -16,7 +16,13 @@
 //    area * (Gamma w_n + c v_n) with w_n, v_n of Newmark's scalar recursion
 //    (the dashpots are part of it);
 //  - a free plate thrown upwards off a bed with a constant gap g0: the
-//    uplift is g0 + V tau (free flight).
+//    uplift is g0 + V tau (free flight);
+//  - `max_pressure` at (`max_pressure_x`, `max_pressure_y`): q under the
+//    self-weight alone (uniform contact); under the eccentric force
+//    Gamma (w - g) there, with w from the solution at that point (the
+//    point evaluation of the probes, not the foundation's Gauss point
+//    values), and above the mean bearing pressure resultant / contact area;
+//    the quarter model's the full plate's.
 
 #include "test_tools.h"
 
@@ -25,7 +31,7 @@
 namespace
 {
   using liftoff_tests::set;
-  constexpr double aspect_ratio = 0.8, area = aspect_ratio;
+  constexpr double aspect_ratio = 0.8, area = aspect_ratio, stiffness = 10;
 
   std::string
   free_plate(const std::string &symmetry = "full")
@@ -34,7 +40,7 @@ namespace
                        copies_y = (symmetry == "quarter" ? 2 : 1);
     return set("Analysis/Type", "static")
            + set("Plate/Aspect ratio", aspect_ratio)
-           + set("Foundation/Stiffness", 10)
+           + set("Foundation/Stiffness", stiffness)
            + set("Discretization/Symmetry", symmetry)
            + set("Discretization/Cells along x", 8 / copies_x)
            + set("Discretization/Cells along y", 6 / copies_y)
@@ -80,6 +86,13 @@ main(int argc, char **argv)
     checks.less("self-weight: quarter model vs full plate, resultant columns",
                 column_difference(quarter->history().back(), row),
                 1e-10);
+    checks.less("self-weight: |max_pressure - q| / q",
+                std::abs(row.max_pressure - q) / q,
+                1e-10);
+    checks.less("self-weight: quarter model vs full plate, max_pressure",
+                std::abs(quarter->history().back().max_pressure
+                         - row.max_pressure),
+                1e-10);
   }
 
   // An eccentric force: the resultant balances it, at its point.
@@ -107,6 +120,15 @@ main(int argc, char **argv)
         checks.less(label + "|contact area - contact fraction * area|",
                     std::abs(row.contact_area - row.contact_fraction * area),
                     1e-12);
+        const dealii::Point<2> at(row.max_pressure_x, row.max_pressure_y);
+        const double g = gap == "0" ? 0.0 : 0.01 - 0.03 * at[0] + 0.02 * at[1];
+        checks.less(label + "|max_pressure - Gamma (w - g)| at its point",
+                    std::abs(row.max_pressure
+                             - stiffness * (run->deflection_at(at) - g)),
+                    1e-9 * row.max_pressure);
+        checks.less(label + "mean bearing pressure / max_pressure",
+                    row.resultant / row.contact_area / row.max_pressure,
+                    1.0);
       }
     // On the symmetry plane x = 0: a half model carries half the force.
     const std::string on_plane =

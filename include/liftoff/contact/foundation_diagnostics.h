@@ -66,6 +66,11 @@ namespace liftoff
       double   force = 0;
       Point<2> centre;
       double   contact_area = 0;
+      /// The largest bearing pressure at a Gauss point in contact (0 with
+      /// none) and that point, in the meshed part (the same on every rank;
+      /// of equal pressures, the point of smallest x, then y).
+      double   largest_pressure = 0;
+      Point<2> largest_pressure_at;
     };
     Resultant
     resultant(const LA::MPI::Vector &ghosted_solution,

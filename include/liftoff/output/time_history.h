@@ -58,6 +58,36 @@ namespace liftoff
       double resultant_x  = 0;
       double resultant_y  = 0;
       double contact_area = 0;
+      /// The largest bearing pressure and its point (in the meshed part),
+      /// with the resultant.
+      double max_pressure   = 0;
+      double max_pressure_x = 0;
+      double max_pressure_y = 0;
+
+      /// The members serialize() archives, in its order: a checkpoint
+      /// keeps them, and one of another layout is refused by name before
+      /// its rows are read. A new member goes into both.
+      static std::vector<std::string>
+      layout()
+      {
+        return {"tau",
+                "iterations",
+                "cycle_length",
+                "contact_fraction",
+                "max_uplift",
+                "n_cells",
+                "n_dofs",
+                "probe_w",
+                "energies",
+                "balance_error",
+                "resultant",
+                "resultant_x",
+                "resultant_y",
+                "contact_area",
+                "max_pressure",
+                "max_pressure_x",
+                "max_pressure_y"};
+      }
 
       template <class Archive>
       void
@@ -65,7 +95,8 @@ namespace liftoff
       {
         archive &tau &iterations &cycle_length &contact_fraction &max_uplift
           &n_cells &n_dofs &probe_w &energies &balance_error &resultant
-            &resultant_x &resultant_y &contact_area;
+            &resultant_x &resultant_y &contact_area &max_pressure
+              &max_pressure_x &max_pressure_y;
       }
     };
 

@@ -46,9 +46,10 @@ namespace liftoff
     /// 7 since the active set keeps the contact status its factor was built
     /// from instead of a copy of the matrix's values then; 8 since the
     /// linear solver keeps the measured error of its factor's substitution;
-    /// 10 since the time history keeps its column names (a new column needs
-    /// no new format: TimeHistory refuses a checkpoint of other columns).
-    static constexpr unsigned int format = 10;
+    /// 10 since the time history keeps its column names; 11 since it keeps
+    /// its rows' layout too (a new column needs no new format: TimeHistory
+    /// refuses a checkpoint of other columns or rows by name).
+    static constexpr unsigned int format = 11;
 
     static void
     declare_parameters(ParameterHandler &prm);
