@@ -97,8 +97,9 @@ namespace navier
   // Q = S (grad w - psi)). Since psi = grad w_K the moments are those of
   // the Kirchhoff plate whatever S. With w_K = sum_m 4q/(m pi) sin(m pi X)
   // h_m(Y) and h'' = a^2 h - g (the equation of h above):
-  //   M_xx(centre) = sum_m 4q/(m pi) sin(m pi/2) [(1 - nu) a^2 h_m + nu g_m],
-  // alternating with terms like 1/m^3. At a corner
+  //   M_xx(x, 0) = sum_m 4q/(m pi) sin(m pi X) [(1 - nu) a^2 h_m + nu g_m],
+  //   M_yy(x, 0) = sum_m 4q/(m pi) sin(m pi X) [g_m - (1 - nu) a^2 h_m],
+  // with terms like 1/m^3 (alternating at the centre). At a corner
   //   M_xy = -(1 - nu) w_K,xy = -(1 - nu) 16 q / pi^4 sum_{m,n odd}
   //          1 / (m^2 + n^2)^2,
   // the sum over n in closed form, the derivative in m^2 of
@@ -115,6 +116,8 @@ namespace navier
   struct MomentReference
   {
     double centre_moment;   // M_xx = M_yy at (0, 0)
+    double axis_m_xx;       // M_xx at (1/4, 0)
+    double axis_m_yy;       // M_yy at (1/4, 0)
     double corner_twisting; // M_xy at (1/2, 1/2)
     double edge_shear;      // Q_x at (1/2, 0)
   };
@@ -122,15 +125,18 @@ namespace navier
   inline MomentReference
   navier_moments(const double q = 1.0)
   {
-    MomentReference    r{0, 0, 0};
+    MomentReference    r{0, 0, 0, 0, 0};
     const double       pi = M_PI, nu = poisson_ratio;
     const unsigned int last = 400001;
     for (unsigned int m = 1; m <= last; m += 2)
       {
-        const double a    = m * pi;
-        const double sign = ((m - 1) / 2) % 2 == 0 ? 1.0 : -1.0;
-        r.centre_moment +=
-          4 * q / a * sign * ((1 - nu) * a * a * levy_h(a) + nu * levy_g(a));
+        const double a       = m * pi;
+        const double sign    = ((m - 1) / 2) % 2 == 0 ? 1.0 : -1.0;
+        const double bending = (1 - nu) * a * a * levy_h(a);
+        r.centre_moment += 4 * q / a * sign * (bending + nu * levy_g(a));
+        const double at_axis = 4 * q / a * std::sin(0.75 * a);
+        r.axis_m_xx += at_axis * (bending + nu * levy_g(a));
+        r.axis_m_yy += at_axis * (levy_g(a) - bending);
         const double c = std::cosh(pi * m / 2);
         r.corner_twisting += pi / (8.0 * m * m * m)
                              * (std::tanh(pi * m / 2) - (pi * m / 2) / (c * c));
@@ -142,11 +148,12 @@ namespace navier
   }
 
   // The moments' double series as the modes give them, truncated at N, to
-  // check the closed forms: the centre moment and the corner's sum.
+  // check the closed forms: the moments at the centre and at (1/4, 0), and
+  // the corner's sum.
   inline MomentReference
   double_series_moments(const unsigned int N, const double q = 1.0)
   {
-    MomentReference r{0, 0, 0};
+    MomentReference r{0, 0, 0, 0, 0};
     const double    pi = M_PI, nu = poisson_ratio;
     for (unsigned int m = 1; m <= N; m += 2)
       for (unsigned int n = 1; n <= N; n += 2)
@@ -158,6 +165,12 @@ namespace navier
             (((m - 1) / 2 + (n - 1) / 2) % 2 == 0) ? 1.0 : -1.0;
           r.centre_moment +=
             sign * q_mn / (alpha2 * alpha2) * pi * pi * (mm + nu * nn);
+          // At X = 3/4, Y = 1/2.
+          const double mode = q_mn / (alpha2 * alpha2) * pi * pi
+                              * std::sin(0.75 * m * pi)
+                              * (((n - 1) / 2) % 2 == 0 ? 1.0 : -1.0);
+          r.axis_m_xx += mode * (mm + nu * nn);
+          r.axis_m_yy += mode * (nn + nu * mm);
           r.corner_twisting += 1 / ((mm + nn) * (mm + nn));
         }
     r.corner_twisting *= -(1 - nu) * 16 * q / std::pow(pi, 4);
