@@ -54,12 +54,23 @@ namespace liftoff
   TransverseShearStrain::TransverseShearStrain(const Mapping<2>       &mapping,
                                                const FiniteElement<2> &fe,
                                                const Treatment treatment)
+      : TransverseShearStrain(mapping,
+                              fe,
+                              treatment,
+                              QGauss<2>(treatment == Treatment::reduced
+                                          ? fe.degree
+                                          : fe.degree + 1))
+  {}
+
+
+  TransverseShearStrain::TransverseShearStrain(const Mapping<2>       &mapping,
+                                               const FiniteElement<2> &fe,
+                                               const Treatment      treatment,
+                                               const Quadrature<2> &points)
       : treatment(treatment)
       , integration_values(mapping,
                            fe,
-                           QGauss<2>(treatment == Treatment::reduced
-                                       ? fe.degree
-                                       : fe.degree + 1),
+                           points,
                            strain_flags | update_inverse_jacobians
                              | update_JxW_values)
       , strains(fe.n_dofs_per_cell(), integration_values.n_quadrature_points)
@@ -138,63 +149,6 @@ namespace liftoff
                 strains(i, q)[k] += K[c][k] * natural(i, q);
           }
       }
-  }
-
-
-  std::vector<Tensor<1, 2>>
-  TransverseShearStrain::solution_strain(
-    const Mapping<2>                          &mapping,
-    const Treatment                            treatment,
-    const DoFHandler<2>::active_cell_iterator &cell,
-    const Vector<double>                      &dof_values,
-    const std::vector<Point<2>>               &unit_points)
-  {
-    const FiniteElement<2> &fe = cell->get_fe();
-    const Quadrature<2>     targets(unit_points);
-    FEValues<2>             at_points(mapping,
-                          fe,
-                          targets,
-                          strain_flags | update_inverse_jacobians);
-    at_points.reinit(cell);
-    const auto strain_of = [&](const FEValues<2> &values,
-                               const unsigned int q) {
-      Tensor<1, 2> gamma;
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        gamma += dof_values[i] * cartesian_strain(values, i, q);
-      return gamma;
-    };
-
-    std::vector<Tensor<1, 2>> strains(unit_points.size());
-    if (treatment != Treatment::mitc)
-      {
-        for (unsigned int q = 0; q < unit_points.size(); ++q)
-          strains[q] = strain_of(at_points, q);
-        return strains;
-      }
-    // As in reinit(): the covariant components at their tying points,
-    // interpolated to the targets, then back to Cartesian components.
-    for (unsigned int c = 0; c < 2; ++c)
-      {
-        const auto  rule = tying_rule(fe.degree, c, targets);
-        FEValues<2> tying(mapping, fe, rule.first, strain_flags);
-        tying.reinit(cell);
-        std::vector<double> natural(unit_points.size(), 0.0);
-        for (unsigned int t = 0; t < tying.n_quadrature_points; ++t)
-          {
-            const DerivativeForm<1, 2, 2> &J     = tying.jacobian(t);
-            const Tensor<1, 2>             gamma = strain_of(tying, t);
-            const double covariant = gamma[0] * J[0][c] + gamma[1] * J[1][c];
-            for (unsigned int q = 0; q < unit_points.size(); ++q)
-              natural[q] += rule.second(q, t) * covariant;
-          }
-        for (unsigned int q = 0; q < unit_points.size(); ++q)
-          {
-            const DerivativeForm<1, 2, 2> &K = at_points.inverse_jacobian(q);
-            for (unsigned int k = 0; k < 2; ++k)
-              strains[q][k] += K[c][k] * natural[q];
-          }
-      }
-    return strains;
   }
 
 

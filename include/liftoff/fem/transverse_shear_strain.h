@@ -6,7 +6,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
 
 #include <array>
 #include <memory>
@@ -48,6 +47,14 @@ namespace liftoff
     TransverseShearStrain(const Mapping<2>       &mapping,
                           const FiniteElement<2> &fe,
                           const Treatment         treatment);
+    /// The same strains at the points `points` of the reference cell
+    /// instead of the integration points: for mitc the assumed strain
+    /// interpolated from the same tying points, at any point (the field
+    /// output's points).
+    TransverseShearStrain(const Mapping<2>       &mapping,
+                          const FiniteElement<2> &fe,
+                          const Treatment         treatment,
+                          const Quadrature<2>    &points);
 
     void
     reinit(const DoFHandler<2>::active_cell_iterator &cell);
@@ -60,20 +67,6 @@ namespace liftoff
     /// Cartesian shear strain of shape function i at point q.
     const Tensor<1, 2> &
     strain(const unsigned int i, const unsigned int q) const;
-
-    /// Cartesian shear strain of a solution with the values `dof_values`
-    /// on `cell`, at the points `unit_points` of the reference cell, as
-    /// `treatment` defines it: grad w - psi for full and reduced, for mitc
-    /// the assumed strain interpolated from the same tying points the
-    /// stiffness uses, at any point (the output's points, not only the
-    /// integration points). Builds its own FEValues, so it can be called
-    /// from several threads.
-    static std::vector<Tensor<1, 2>>
-    solution_strain(const Mapping<2>                          &mapping,
-                    const Treatment                            treatment,
-                    const DoFHandler<2>::active_cell_iterator &cell,
-                    const Vector<double>                      &dof_values,
-                    const std::vector<Point<2>>               &unit_points);
 
   private:
     const Treatment treatment;
