@@ -248,11 +248,7 @@ namespace liftoff
     }
 
 
-    /// What the data sets of an HDF5 output do not say themselves, as
-    /// attributes of the file `path`, for a reader of the .h5 alone (h5py):
-    /// the time tau and the step on the file, the unit of each data set as
-    /// its `units` (those of the VTU files), and the scales the units are
-    /// made of.
+    /// Whether `filter` holds the data set `name`.
     bool
     filter_has(const DataOutBase::DataOutFilter &filter,
                const std::string                &name)
@@ -264,6 +260,11 @@ namespace liftoff
     }
 
 
+    /// What the data sets of an HDF5 output do not say themselves, as
+    /// attributes of the file `path`, for a reader of the .h5 alone (h5py):
+    /// the time tau and the step on the file, the unit of each data set as
+    /// its `units` (those of the VTU files), the scales the units are made
+    /// of, and the moments' sign convention where they are written.
     void
     add_hdf5_metadata(const std::string                &path,
                       const DataOutBase::DataOutFilter &filter,
