@@ -30,10 +30,10 @@ namespace liftoff
 
 
   const std::string StressResultants::sign_convention =
-    "z points along w (into the bed); M = int sigma z dz, so a positive "
-    "moment puts the bed-side face (z = +H/2) in tension; sigma_xx, "
-    "sigma_yy, sigma_xy are the stresses at that face (the other face has "
-    "their negatives)";
+    "M = int sigma z dz with z along w (into the bed): a positive moment "
+    "puts the bed-side face (z = +H/2) in tension; sigma_xx, sigma_yy and "
+    "sigma_xy are the stresses at that face, the other face has their "
+    "negatives";
 
 
   StressResultants::StressResultants(
