@@ -54,12 +54,23 @@ namespace liftoff
   TransverseShearStrain::TransverseShearStrain(const Mapping<2>       &mapping,
                                                const FiniteElement<2> &fe,
                                                const Treatment treatment)
+      : TransverseShearStrain(mapping,
+                              fe,
+                              treatment,
+                              QGauss<2>(treatment == Treatment::reduced
+                                          ? fe.degree
+                                          : fe.degree + 1))
+  {}
+
+
+  TransverseShearStrain::TransverseShearStrain(const Mapping<2>       &mapping,
+                                               const FiniteElement<2> &fe,
+                                               const Treatment      treatment,
+                                               const Quadrature<2> &points)
       : treatment(treatment)
       , integration_values(mapping,
                            fe,
-                           QGauss<2>(treatment == Treatment::reduced
-                                       ? fe.degree
-                                       : fe.degree + 1),
+                           points,
                            strain_flags | update_inverse_jacobians
                              | update_JxW_values)
       , strains(fe.n_dofs_per_cell(), integration_values.n_quadrature_points)

@@ -6,6 +6,7 @@
 #include <liftoff/base/archives.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/output/field_output.h>
+#include <liftoff/output/stress_resultants.h>
 #include <liftoff/time/plate_state.h>
 
 #include <liftoff/version.h>
@@ -175,8 +176,9 @@ namespace liftoff
 
     /// The units of the fields, in the dimensionless variables of
     /// doc/model.md (F0 the load scale, L the length, D the bending
-    /// stiffness, t0 the time scale).
-    const std::map<std::string, std::string> field_units = {
+    /// stiffness, t0 the time scale); those of the moment fields are
+    /// StressResultants::units().
+    const std::map<std::string, std::string> state_units = {
       {"w", "F0*L^2/D"},
       {"psi_x", "F0*L/D"},
       {"psi_y", "F0*L/D"},
@@ -188,6 +190,18 @@ namespace liftoff
       {"foundation_pressure", "F0/L^2"},
       {"uplift", "F0*L^2/D"},
       {"contact_status", "1"}};
+
+
+    std::map<std::string, std::string>
+    all_field_units()
+    {
+      std::map<std::string, std::string> units = state_units;
+      units.insert(StressResultants::units().begin(),
+                   StressResultants::units().end());
+      return units;
+    }
+
+    const std::map<std::string, std::string> field_units = all_field_units();
 
 
     /// The liftoff that writes the files, as `liftoff --version` names it.
@@ -203,7 +217,9 @@ namespace liftoff
     /// field data. And a comment names the version and git commit of the
     /// liftoff that wrote the file.
     std::string
-    with_liftoff_metadata(const std::string &vtk, const double time)
+    with_liftoff_metadata(const std::string &vtk,
+                          const double       time,
+                          const bool         has_moments)
     {
       std::ostringstream array;
       array.precision(17);
@@ -223,15 +239,32 @@ namespace liftoff
           text.insert(at, "\n" + field_data + array.str() + "\n</FieldData>");
         }
       const std::size_t line_end = text.find('\n');
-      return text.insert(line_end + 1, "<!-- liftoff " + written_by + " -->\n");
+      return text.insert(
+        line_end + 1,
+        "<!-- liftoff " + written_by + " -->\n"
+          + (has_moments
+               ? "<!-- moments: " + StressResultants::sign_convention + " -->\n"
+               : ""));
+    }
+
+
+    /// Whether `filter` holds the data set `name`.
+    bool
+    filter_has(const DataOutBase::DataOutFilter &filter,
+               const std::string                &name)
+    {
+      for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
+        if (filter.get_data_set_name(i) == name)
+          return true;
+      return false;
     }
 
 
     /// What the data sets of an HDF5 output do not say themselves, as
     /// attributes of the file `path`, for a reader of the .h5 alone (h5py):
     /// the time tau and the step on the file, the unit of each data set as
-    /// its `units` (those of the VTU files), and the scales the units are
-    /// made of.
+    /// its `units` (those of the VTU files), the scales the units are made
+    /// of, and the moments' sign convention where they are written.
     void
     add_hdf5_metadata(const std::string                &path,
                       const DataOutBase::DataOutFilter &filter,
@@ -248,6 +281,9 @@ namespace liftoff
                            "load scale, D the bending stiffness, "
                            "t0 = L^2 sqrt(rho H / D) (doc/model.md)"));
       file.set_attribute("liftoff", written_by);
+      if (filter_has(filter, "M_xx"))
+        file.set_attribute("moment_sign_convention",
+                           StressResultants::sign_convention);
       file.open_dataset("nodes").set_attribute("units", std::string("L"));
       for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
         {
@@ -368,7 +404,8 @@ namespace liftoff
                      const PlateFields &data_out,
                      const MPI_Comm     comm,
                      const double       time,
-                     const std::string &stem)
+                     const std::string &stem,
+                     const bool         has_moments)
     {
       const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
       const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -379,12 +416,12 @@ namespace liftoff
       // barrier before the record), not in a later collective call.
       const std::string what = "Writing " + stem + " failed";
       collective_attempt(comm, what, [&]() {
-        write_file_atomically(directory + "/" + piece(rank),
-                              [&](std::ostream &out) {
-                                std::ostringstream vtu;
-                                data_out.write_vtu(vtu);
-                                out << with_liftoff_metadata(vtu.str(), time);
-                              });
+        write_file_atomically(
+          directory + "/" + piece(rank), [&](std::ostream &out) {
+            std::ostringstream vtu;
+            data_out.write_vtu(vtu);
+            out << with_liftoff_metadata(vtu.str(), time, has_moments);
+          });
       });
       const std::string master = stem + ".pvtu";
       collective_attempt(comm, what, [&]() {
@@ -396,7 +433,7 @@ namespace liftoff
         write_file_atomically(directory + "/" + master, [&](std::ostream &out) {
           std::ostringstream pvtu;
           data_out.write_pvtu_record(pvtu, pieces);
-          out << with_liftoff_metadata(pvtu.str(), time);
+          out << with_liftoff_metadata(pvtu.str(), time, has_moments);
         });
       });
       return master;
@@ -436,12 +473,27 @@ namespace liftoff
                       "series solution.xdmf (XDMF 3), which ParaView "
                       "(Xdmf3ReaderT) and meshio (TimeSeriesReader) read: "
                       "doc/viewing.md.");
+    prm.declare_entry(
+      "Moment fields",
+      "true",
+      Patterns::Bool(),
+      "Also write the moments M_xx, M_yy, M_xy (units F0), the shear "
+      "forces Q_x, Q_y (F0/L, from the shear strain the element uses: the "
+      "assumed strain with mitc), the principal moments M_1 >= M_2 and the "
+      "angle of M_1 from x (degrees), and the bending stresses at the "
+      "bed-side face sigma_xx, sigma_yy, sigma_xy = 6 M / Delta^2 and the "
+      "largest tension on either face sigma_max (F0/L^2). A positive moment "
+      "puts the bed-side face in tension (doc/model.md, \"Moments, shear "
+      "forces and stresses\"). false leaves them out of the field files.");
   }
 
 
   void
-  FieldOutput::parse_parameters(ParameterHandler &prm)
+  FieldOutput::parse_parameters(ParameterHandler   &prm,
+                                const MindlinPlate &scene_plate)
   {
+    plate              = scene_plate;
+    writes_moments     = prm.get_bool("Moment fields");
     interval           = prm.get_integer("VTU interval");
     higher_order_cells = prm.get("Field cells") == "higher order";
     subdivisions       = prm.get_integer("Subdivisions");
@@ -458,6 +510,23 @@ namespace liftoff
 
   namespace
   {
+    DataOutBase::VtkFlags
+    vtk_flags(const double       time,
+              const unsigned int step,
+              const bool         higher_order_cells)
+    {
+      DataOutBase::VtkFlags flags;
+      flags.time                     = time;
+      flags.cycle                    = step;
+      flags.write_higher_order_cells = higher_order_cells;
+      flags.physical_units           = field_units;
+      // zlib's fastest level: its best compression took 40 % of the field
+      // output's time (Example 2 pulse, 100 files) for files 6 % smaller.
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      return flags;
+    }
+
+
     // Each cell's level above the uniform mesh of the scene (Mesh
     // refinement).
     Vector<float>
@@ -496,6 +565,12 @@ namespace liftoff
                           scalar);
     const FoundationPressure pressure(foundation.law());
     plane.add_data_vector(solution, pressure);
+    const StressResultants resultants(plate,
+                                      disc.mapping,
+                                      disc.element().shear_integration(),
+                                      solution);
+    if (writes_moments)
+      plane.add_data_vector(solution, resultants);
     const Vector<float> contact =
       foundation.diagnostics().contact_fraction_per_cell();
     plane.add_data_vector(contact, "contact_status");
@@ -509,20 +584,12 @@ namespace liftoff
                                          : disc.element().degree());
     PlateFields data_out(plane);
 
-    DataOutBase::VtkFlags flags;
-    flags.time                     = time;
-    flags.cycle                    = step;
-    flags.write_higher_order_cells = higher_order_cells;
-    flags.physical_units           = field_units;
-    // zlib's fastest level: its best compression took 40 % of the field
-    // output's time (Example 2 pulse, 100 files) for files 6 % smaller.
-    flags.compression_level = DataOutBase::VtkFlags::best_speed;
-    data_out.set_flags(flags);
+    data_out.set_flags(vtk_flags(time, step, higher_order_cells));
 
     const MPI_Comm    comm = disc.mpi_communicator;
     const std::string stem = "solution_" + Utilities::int_to_string(step, 5);
     const std::string master =
-      write_vtu_pieces(directory, data_out, comm, time, stem);
+      write_vtu_pieces(directory, data_out, comm, time, stem, writes_moments);
     if (writes_hdf5)
       write_hdf5(
         directory, data_out, comm, time, step, stem, records, xdmf_entries);

@@ -70,7 +70,7 @@ namespace liftoff
     output_directory = prm.get("Directory");
     time_history.parse_parameters(prm);
     profile_output.parse_parameters(prm);
-    field_output.parse_parameters(prm);
+    field_output.parse_parameters(prm, parts.plate);
     prm.leave_subsection();
     time_history.show_dissipated_energy(parts.foundation.has_damping());
     checkpoint.parse_parameters(prm);

@@ -13,7 +13,8 @@ names (after a resume of an adaptive run too: the mesh, and so the sizes,
 differ between outputs).
 Each .h5 says itself what it holds: its time tau and step as attributes
 of the file, and the unit of each data set (doc/model.md's scales: w in
-F0 L^2 / D, ...) as the data set's attribute `units`.
+F0 L^2 / D, ...) as the data set's attribute `units`, and the moments'
+sign convention as the file's attribute `moment_sign_convention`.
 Exit 77 without h5py (Debian: python3-h5py).
 """
 
@@ -41,7 +42,13 @@ UNITS = {"nodes": "L", "w": "F0*L^2/D", "psi_x": "F0*L/D",
          "psi_x_dot": "F0*L/(D*t0)", "psi_y_dot": "F0*L/(D*t0)",
          "rotation": "F0*L/D", "displacement": "F0*L^2/D",
          "foundation_pressure": "F0/L^2", "uplift": "F0*L^2/D",
-         "contact_status": "1"}
+         "contact_status": "1",
+         # The moment fields (doc/model.md, "Moments, shear forces and
+         # stresses"): moments in F0, shear forces in F0/L, stresses F0/L^2.
+         "M_xx": "F0", "M_yy": "F0", "M_xy": "F0", "Q_x": "F0/L",
+         "Q_y": "F0/L", "M_1": "F0", "M_2": "F0", "M_1_angle": "degree",
+         "sigma_xx": "F0/L^2", "sigma_yy": "F0/L^2", "sigma_xy": "F0/L^2",
+         "sigma_max": "F0/L^2"}
 
 
 def attribute(h5_object, name):
@@ -96,7 +103,9 @@ def main():
             psi = np.stack([h5["psi_x"][:, 0], h5["psi_y"][:, 0]], axis=1)
             time, step = attribute(h5, "time"), attribute(h5, "step")
             time_units = attribute(h5, "time_units")
-            units = {k: attribute(h5[k], "units") for k in UNITS}
+            units = {k: attribute(h5[k], "units") if k in h5 else None
+                     for k in UNITS}
+            convention = attribute(h5, "moment_sign_convention") or ""
         check(time is not None and abs(time - tau) <= 1e-12 * max(tau, 1)
               and time_units == "t0"
               and step == int(re.search(r"([0-9]+)\.h5", name).group(1)),
@@ -104,6 +113,9 @@ def main():
               "tau = %.17g" % (name, time, time_units, step, tau))
         check(units == UNITS, "%s: the units of the data sets %s"
               % (name, units))
+        check(convention.startswith("M = int sigma z dz with z along w"),
+              "%s: the moments' sign convention as an attribute: '%s'"
+              % (name, convention))
         at_origin = np.flatnonzero(np.linalg.norm(nodes[:, :2], axis=1)
                                    < 1e-12)
         probe = history[round(tau, 9)]

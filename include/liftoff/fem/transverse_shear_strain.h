@@ -47,6 +47,14 @@ namespace liftoff
     TransverseShearStrain(const Mapping<2>       &mapping,
                           const FiniteElement<2> &fe,
                           const Treatment         treatment);
+    /// The same strains at the points `points` of the reference cell
+    /// instead of the integration points: for mitc the assumed strain
+    /// interpolated from the same tying points, at any point (the field
+    /// output's points).
+    TransverseShearStrain(const Mapping<2>       &mapping,
+                          const FiniteElement<2> &fe,
+                          const Treatment         treatment,
+                          const Quadrature<2>    &points);
 
     void
     reinit(const DoFHandler<2>::active_cell_iterator &cell);

@@ -7,6 +7,7 @@
 #include <liftoff/base/archive_types.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/output/output.h>
 
 #include <string>
@@ -20,11 +21,12 @@ namespace liftoff
   /**
    * Fields for ParaView: w, psi_x, psi_y, their velocities, the foundation
    * pressure and the contact status (fraction of each cell's Gauss points in
-   * contact), as VTU (plus PVTU under MPI) every k steps and a PVD record
-   * naming them. The record is replaced at most once a second of wall time
-   * and at flush(), as history.csv is: rewriting it after every file made
-   * the output quadratic in the number of files (2 001 outputs of Example
-   * 2: 34 % of the run's `perf` samples in the record) and cost a file
+   * contact), the moments, shear forces and stresses (StressResultants,
+   * unless `Moment fields = false`), as VTU (plus PVTU under MPI) every k steps
+   * and a PVD record naming them. The record is replaced at most once a second
+   * of wall time and at flush(), as history.csv is: rewriting it after every
+   * file made the output quadratic in the number of files (2 001 outputs of
+   * Example 2: 34 % of the run's `perf` samples in the record) and cost a file
    * creation per output.
    */
   class FieldOutput : public Output
@@ -33,8 +35,9 @@ namespace liftoff
     /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
+    /// `plate` is the scene's, whose section the moment fields need.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
 
     /// Whether step `step` is written (the last step always is, unless the
     /// interval is 0).
@@ -81,6 +84,8 @@ namespace liftoff
     bool                                        higher_order_cells = false;
     unsigned int                                subdivisions       = 0;
     bool                                        writes_hdf5        = false;
+    bool                                        writes_moments     = true;
+    MindlinPlate                                plate;
     std::vector<std::pair<double, std::string>> records;
     std::string                                 directory;
     const Discretization                       *discretization = nullptr;

@@ -103,6 +103,9 @@ namespace liftoff
     linear_solver() const;
     const Discretization &
     get_discretization() const;
+    /// The plate's material and section.
+    const MindlinPlate &
+    get_plate() const;
 
   private:
     MPI_Comm           mpi_communicator;
@@ -293,5 +296,12 @@ namespace liftoff
   Simulator::get_discretization() const
   {
     return parts.discretization;
+  }
+
+
+  inline const MindlinPlate &
+  Simulator::get_plate() const
+  {
+    return parts.plate;
   }
 } // namespace liftoff

@@ -1,0 +1,86 @@
+#pragma once
+
+#include <deal.II/base/thread_local_storage.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <liftoff/base/linear_algebra.h>
+#include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/transverse_shear_strain.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  class Discretization;
+
+  /**
+   * The plate's stress resultants from (w, psi_x, psi_y) at any points of a
+   * cell: the moments M_xx, M_yy, M_xy by the plate's constitutive law, the
+   * shear forces Q_x, Q_y from the shear strain the element uses (for mitc
+   * the assumed strain interpolated from its tying points, not the raw
+   * grad w - psi, which oscillates), the principal moments and the angle
+   * of the larger, and the bending stresses at the faces. A
+   * DataPostprocessor, so DataOut evaluates it at the output points;
+   * at_point() evaluates the same code at one point. doc/model.md
+   * ("Moments, shear forces and stresses") has the formulas, the units and
+   * the sign convention.
+   */
+  class StressResultants : public DataPostprocessor<2>
+  {
+  public:
+    /// `solution` is the ghosted (w, psi_x, psi_y) the output writes; the
+    /// shear forces of mitc need its values at the cell's tying points.
+    StressResultants(const MindlinPlate                    &plate,
+                     const Mapping<2>                      &mapping,
+                     const TransverseShearStrain::Treatment treatment,
+                     const LA::MPI::Vector                 &solution);
+
+    /// Field name -> unit, in the dimensionless variables of doc/model.md.
+    static const std::map<std::string, std::string> &
+    units();
+    /// Which face a positive moment puts in tension, for the files.
+    static const std::string sign_convention;
+
+    std::vector<std::string>
+    get_names() const override;
+    UpdateFlags
+    get_needed_update_flags() const override;
+    void
+    evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &inputs,
+                          std::vector<Vector<double>> &computed) const override;
+
+    /// Every field at the point p of the plate (in the meshed part), by
+    /// the same evaluation the output makes; empty on the ranks that do not
+    /// own the cell around p.
+    std::map<std::string, double>
+    at_point(const Discretization &discretization, const Point<2> &p) const;
+
+  private:
+    const MindlinPlate                    &plate;
+    const Mapping<2>                      &mapping;
+    const TransverseShearStrain::Treatment treatment;
+    const LA::MPI::Vector                 &solution;
+
+    /// The shear strains of the shape functions at one set of reference
+    /// points, rebuilt when the points change (DataOut asks for the same
+    /// points in every cell). One per thread: DataOut builds its patches
+    /// in parallel.
+    struct StrainsAtPoints
+    {
+      std::vector<Point<2>>                  unit_points;
+      std::unique_ptr<TransverseShearStrain> strains;
+    };
+    mutable Threads::ThreadLocalStorage<StrainsAtPoints> strains_at_points;
+
+    /// The cell's assumed (or raw) shear strain at `unit_points`.
+    std::vector<Tensor<1, 2>>
+    shear_strains(const DoFHandler<2>::cell_iterator &cell,
+                  const std::vector<Point<2>>        &unit_points) const;
+  };
+} // namespace liftoff

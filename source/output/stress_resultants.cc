@@ -1,0 +1,196 @@
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <liftoff/fem/discretization.h>
+#include <liftoff/output/stress_resultants.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace liftoff
+{
+  namespace
+  {
+    // The order of the fields in evaluate_vector_field()'s output.
+    const std::vector<std::string> names = {"M_xx",
+                                            "M_yy",
+                                            "M_xy",
+                                            "Q_x",
+                                            "Q_y",
+                                            "M_1",
+                                            "M_2",
+                                            "M_1_angle",
+                                            "sigma_xx",
+                                            "sigma_yy",
+                                            "sigma_xy",
+                                            "sigma_max"};
+  } // namespace
+
+
+  const std::string StressResultants::sign_convention =
+    "M = int sigma z dz with z along w (into the bed): a positive moment "
+    "puts the bed-side face (z = +H/2) in tension; sigma_xx, sigma_yy and "
+    "sigma_xy are the stresses at that face, the other face has their "
+    "negatives";
+
+
+  StressResultants::StressResultants(
+    const MindlinPlate                    &plate,
+    const Mapping<2>                      &mapping,
+    const TransverseShearStrain::Treatment treatment,
+    const LA::MPI::Vector                 &solution)
+      : plate(plate)
+      , mapping(mapping)
+      , treatment(treatment)
+      , solution(solution)
+  {}
+
+
+  const std::map<std::string, std::string> &
+  StressResultants::units()
+  {
+    static const std::map<std::string, std::string> table = {
+      {"M_xx", "F0"},
+      {"M_yy", "F0"},
+      {"M_xy", "F0"},
+      {"Q_x", "F0/L"},
+      {"Q_y", "F0/L"},
+      {"M_1", "F0"},
+      {"M_2", "F0"},
+      {"M_1_angle", "degree"},
+      {"sigma_xx", "F0/L^2"},
+      {"sigma_yy", "F0/L^2"},
+      {"sigma_xy", "F0/L^2"},
+      {"sigma_max", "F0/L^2"}};
+    return table;
+  }
+
+
+  std::vector<std::string>
+  StressResultants::get_names() const
+  {
+    return names;
+  }
+
+
+  UpdateFlags
+  StressResultants::get_needed_update_flags() const
+  {
+    return update_gradients | update_quadrature_points;
+  }
+
+
+  std::vector<Tensor<1, 2>>
+  StressResultants::shear_strains(
+    const DoFHandler<2>::cell_iterator &cell,
+    const std::vector<Point<2>>        &unit_points) const
+  {
+    StrainsAtPoints &cached = strains_at_points.get();
+    const auto       same   = [](const Point<2> &a, const Point<2> &b) {
+      return a.distance(b) < 1e-12;
+    };
+    if (!cached.strains || cached.unit_points.size() != unit_points.size()
+        || !std::equal(unit_points.begin(),
+                       unit_points.end(),
+                       cached.unit_points.begin(),
+                       same))
+      {
+        cached.unit_points = unit_points;
+        cached.strains     = std::make_unique<TransverseShearStrain>(
+          mapping, cell->get_fe(), treatment, Quadrature<2>(unit_points));
+      }
+    TransverseShearStrain &strains = *cached.strains;
+    strains.reinit(cell);
+
+    Vector<double> dof_values(cell->get_fe().n_dofs_per_cell());
+    cell->get_dof_values(solution, dof_values);
+    std::vector<Tensor<1, 2>> gamma(unit_points.size());
+    for (unsigned int q = 0; q < unit_points.size(); ++q)
+      for (unsigned int i = 0; i < dof_values.size(); ++i)
+        gamma[q] += dof_values[i] * strains.strain(i, q);
+    return gamma;
+  }
+
+
+  void
+  StressResultants::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<2> &inputs,
+    std::vector<Vector<double>>              &computed) const
+  {
+    const auto            cell     = inputs.template get_cell<2>();
+    const auto           &points   = inputs.evaluation_points;
+    const auto           &gradient = inputs.solution_gradients;
+    std::vector<Point<2>> unit_points(points.size());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      unit_points[q] = GeometryInfo<2>::project_to_unit_cell(
+        mapping.transform_real_to_unit_cell(cell, points[q]));
+    const std::vector<Tensor<1, 2>> gamma = shear_strains(cell, unit_points);
+
+    const double nu = plate.poisson_ratio;
+    // 6 / Delta^2: the face stress 6 M / H^2 in units of F0 / L^2.
+    const double to_stress =
+      6.0 / (plate.thickness_ratio * plate.thickness_ratio);
+    const double shear = plate.shear_stiffness();
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        // Components: 0 w, 1 psi_x, 2 psi_y. z along w gives the minus sign.
+        const double m_xx = -(gradient[q][1][0] + nu * gradient[q][2][1]);
+        const double m_yy = -(gradient[q][2][1] + nu * gradient[q][1][0]);
+        const double m_xy =
+          -0.5 * (1 - nu) * (gradient[q][1][1] + gradient[q][2][0]);
+        const double    centre = 0.5 * (m_xx + m_yy);
+        const double    radius = std::hypot(0.5 * (m_xx - m_yy), m_xy);
+        const double    m_1 = centre + radius, m_2 = centre - radius;
+        Vector<double> &out = computed[q];
+        out[0]              = m_xx;
+        out[1]              = m_yy;
+        out[2]              = m_xy;
+        out[3]              = shear * gamma[q][0];
+        out[4]              = shear * gamma[q][1];
+        out[5]              = m_1;
+        out[6]              = m_2;
+        out[7]  = 0.5 * std::atan2(2 * m_xy, m_xx - m_yy) * 180.0 / M_PI;
+        out[8]  = to_stress * m_xx;
+        out[9]  = to_stress * m_yy;
+        out[10] = to_stress * m_xy;
+        out[11] = to_stress * std::max(m_1, -m_2);
+      }
+  }
+
+
+  std::map<std::string, double>
+  StressResultants::at_point(const Discretization &discretization,
+                             const Point<2>       &p) const
+  {
+    const auto [cell, unit] =
+      GridTools::find_active_cell_around_point(mapping,
+                                               discretization.dof_handler,
+                                               p);
+    if (!cell->is_locally_owned())
+      return {};
+    const Quadrature<2> point(GeometryInfo<2>::project_to_unit_cell(unit));
+    FEValues<2>         values(mapping,
+                       cell->get_fe(),
+                       point,
+                       update_values | update_gradients
+                         | update_quadrature_points);
+    values.reinit(cell);
+
+    DataPostprocessorInputs::Vector<2> inputs;
+    inputs.solution_values.assign(1, Vector<double>(3));
+    inputs.solution_gradients.assign(1, std::vector<Tensor<1, 2>>(3));
+    values.get_function_values(solution, inputs.solution_values);
+    values.get_function_gradients(solution, inputs.solution_gradients);
+    inputs.evaluation_points = values.get_quadrature_points();
+    inputs.template set_cell<2>(cell);
+    std::vector<Vector<double>> computed(1, Vector<double>(names.size()));
+    evaluate_vector_field(inputs, computed);
+
+    std::map<std::string, double> fields;
+    for (unsigned int k = 0; k < names.size(); ++k)
+      fields[names[k]] = computed[0][k];
+    return fields;
+  }
+} // namespace liftoff
