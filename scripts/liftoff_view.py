@@ -10,8 +10,12 @@ warps it by the deflection (w > 0 is into the foundation, drawn downwards)
 and colours it by the contact status (the fraction of each cell's Gauss
 points in contact: 1 in contact, 0 lifted off). Writes
 FOLDER/view_NNNNN.png (default OUTPUT_DIRECTORY/pictures), one per output
-time, and view.csv there: per picture tau, the largest w and the bounds of
-the warped plate, which tests/command_line/liftoff_view.sh checks.
+time, and view.csv there: per picture tau, the largest w, the bounds of
+the warped plate and the range of the field, which
+tests/command_line/liftoff_view.sh checks. `--field` colours by any field
+of the files (M_xx, sigma_max, ...); fields that change sign under a
+reflection (Q_x, Q_y, M_xy, sigma_xy, M_1_angle) get that sign on the
+reflected parts.
 """
 
 import argparse
@@ -32,6 +36,27 @@ def whole_plate(source, symmetry):
         source = pv.Reflect(Input=source, Plane=plane, Center=0.0,
                             CopyInput=1)
     return pv.MergeBlocks(Input=source) if planes else source
+
+
+# Fields that change sign under a reflection: across the plane x = 0 ("X")
+# or y = 0 ("Y"). A reflected copy holds the modelled part's values, so
+# these get the sign of the reflection (doc/model.md, "Probes, extremes and
+# envelopes").
+ODD_FIELDS = {"Q_x": "X", "Q_y": "Y", "M_xy": "XY", "sigma_xy": "XY",
+              "M_1_angle": "XY"}
+
+
+def with_reflection_signs(plate, field, symmetry):
+    """The plate and the name of `field` with the signs of the reflections
+    applied where the field is odd under them."""
+    planes = {"full": "", "half": "X", "quarter": "XY"}[symmetry]
+    axes = [a for a in ODD_FIELDS.get(field, "") if a in planes]
+    if not axes:
+        return plate, field
+    factor = "*".join("sign(coords%s)" % a for a in axes)
+    name = field + " (whole plate)"
+    return pv.Calculator(Input=plate, ResultArrayName=name,
+                         Function="%s*%s" % (field, factor)), name
 
 
 def largest_deflection(source, times):
@@ -70,6 +95,10 @@ def main():
 
     reader = pv.PVDReader(FileName=pvd)
     times = list(reader.TimestepValues) or [0.0]
+    fields = list(reader.PointData.keys())
+    if args.field not in fields:
+        sys.exit("liftoff-view: error: --field %s: the files have no such "
+                 "field; they have %s" % (args.field, ", ".join(fields)))
     plate = whole_plate(reader, symmetry)
     largest = largest_deflection(plate, times)
     scale = args.scale or (0.15 / largest if largest > 0 else 1.0)
@@ -82,6 +111,7 @@ def main():
         plate = pv.Calculator(Input=plate, ResultArrayName="w_vector",
                               Function="w*kHat")
         vector = "w_vector"
+    plate, field = with_reflection_signs(plate, args.field, symmetry)
     warped = pv.WarpByVector(Input=plate, Vectors=["POINTS", vector],
                              ScaleFactor=-scale)
 
@@ -97,8 +127,8 @@ def main():
     warped.UpdatePipeline(times[-1])
     display = pv.Show(warped, view)
     # deal.II writes cell data as point data of each cell's own points.
-    pv.ColorBy(display, ("POINTS", args.field))
-    lut = pv.GetColorTransferFunction(args.field)
+    pv.ColorBy(display, ("POINTS", field))
+    lut = pv.GetColorTransferFunction(field)
     lut.ApplyPreset("Cool to Warm", True)
     if args.field == "contact_status":
         lut.RescaleTransferFunction(0.0, 1.0)
@@ -108,10 +138,11 @@ def main():
         low, high = float("inf"), -float("inf")
         for t in times:
             plate.UpdatePipeline(t)
-            a, b = plate.PointData[args.field].GetRange()
+            a, b = plate.PointData[field].GetRange()
             low, high = min(low, a), max(high, b)
         lut.RescaleTransferFunction(low, high if high > low else low + 1)
-        titles = args.field
+        # ParaView adds the unit the files state, as "(F0)".
+        titles = field
     lut.AutomaticRescaleRangeMode = "Never"
     bar = pv.GetScalarBar(lut, view)
     bar.Title = titles
@@ -126,7 +157,8 @@ def main():
     view.CameraPosition = [1.3, -1.6, 1.0]
     view.CameraFocalPoint = [0, 0, 0]
     view.CameraViewUp = [0, 0, 1]
-    rows = ["picture,tau,max_w,x_min,x_max,y_min,y_max,z_min,z_max"]
+    rows = ["picture,tau,max_w,x_min,x_max,y_min,y_max,z_min,z_max,"
+            "field_min,field_max"]
     for k, t in enumerate(times):
         view.ViewTime = t
         warped.UpdatePipeline(t)
@@ -142,7 +174,7 @@ def main():
         plate.UpdatePipeline(t)
         max_w = plate.PointData["w"].GetRange()[1]
         rows.append("%s,%.17g,%.17g,%s" % (name, t, max_w, ",".join(
-            "%.17g" % b for b in bounds)))
+            "%.17g" % b for b in bounds + plate.PointData[field].GetRange())))
     with open(os.path.join(pictures, "view.csv"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("liftoff-view: %d picture(s) in %s, warped by %s"

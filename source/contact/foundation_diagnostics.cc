@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <liftoff/base/located_maximum.h>
 #include <liftoff/contact/foundation_diagnostics.h>
 
 #include <array>
@@ -16,45 +17,6 @@ namespace liftoff
       , law(law)
       , in_contact(status)
   {}
-
-
-  namespace
-  {
-    // The largest pressure and its point, ties broken by the point so that
-    // the answer does not depend on the order of the cells or the ranks.
-    struct LargestPressure
-    {
-      double   pressure = 0;
-      Point<2> point;
-      bool     found = false;
-
-      void
-      consider(const double p, const Point<2> &at)
-      {
-        const bool earlier =
-          at[0] < point[0] || (at[0] == point[0] && at[1] < point[1]);
-        if (!found || p > pressure || (p == pressure && earlier))
-          {
-            pressure = p;
-            point    = at;
-            found    = true;
-          }
-      }
-
-      LargestPressure
-      over_ranks(const MPI_Comm comm) const
-      {
-        const auto all = Utilities::MPI::all_gather(
-          comm,
-          std::array<double, 4>{{double(found), pressure, point[0], point[1]}});
-        LargestPressure result;
-        for (const auto &[is_found, p, x, y] : all)
-          if (is_found != 0)
-            result.consider(p, Point<2>(x, y));
-        return result;
-      }
-    };
-  } // namespace
 
 
   FoundationDiagnostics::PressureRange
@@ -162,7 +124,7 @@ namespace liftoff
   {
     // Force, its moments about the axes x = 0 and y = 0, area in contact.
     std::vector<double> sums(4, 0.0), w, v_at_points;
-    LargestPressure     largest;
+    LocatedMaximum      largest;
     const unsigned int  n_q = points.n_q_points();
     if (law.model() != ContactLaw::Model::none)
       for (unsigned int c = 0; c < points.n_cells(); ++c)
@@ -199,7 +161,7 @@ namespace liftoff
     for (const unsigned int axis : disc.geometry().symmetry_axes())
       r.centre[axis] = 0;
     largest               = largest.over_ranks(disc.mpi_communicator);
-    r.largest_pressure    = largest.pressure;
+    r.largest_pressure    = largest.value;
     r.largest_pressure_at = largest.point;
     return r;
   }

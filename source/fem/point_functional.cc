@@ -49,14 +49,11 @@ namespace liftoff
   } // namespace
 
 
-  PointFunctional::PointFunctional(const Discretization &discretization,
-                                   const Point<2>       &point,
-                                   const unsigned int    component)
+  std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
+  PointFunctional::holder_cell(const Discretization &discretization,
+                               const Point<2>       &point)
   {
-    const auto    &dof_handler = discretization.dof_handler;
-    const auto    &fe          = discretization.dof_handler.get_fe();
-    const MPI_Comm comm        = discretization.mpi_communicator;
-
+    const MPI_Comm comm = discretization.mpi_communicator;
     const auto [found, is_found] =
       first_owned_cell_around(discretization, point);
 
@@ -69,15 +66,26 @@ namespace liftoff
                            + std::to_string(point[1])
                            + ") lies outside the meshed part of the plate."));
     if (holder != my_rank)
+      return {};
+    return {DoFHandler<2>::active_cell_iterator(&discretization.triangulation,
+                                                found->level(),
+                                                found->index(),
+                                                &discretization.dof_handler),
+            GeometryInfo<2>::project_to_unit_cell(
+              discretization.mapping.transform_real_to_unit_cell(found,
+                                                                 point))};
+  }
+
+
+  PointFunctional::PointFunctional(const Discretization &discretization,
+                                   const Point<2>       &point,
+                                   const unsigned int    component)
+  {
+    const auto &fe                = discretization.dof_handler.get_fe();
+    const auto [cell, unit_point] = holder_cell(discretization, point);
+    if (cell.state() != IteratorState::valid)
       return;
 
-    const Point<2> unit_point = GeometryInfo<2>::project_to_unit_cell(
-      discretization.mapping.transform_real_to_unit_cell(found, point));
-    const typename DoFHandler<2>::active_cell_iterator cell(
-      &discretization.triangulation,
-      found->level(),
-      found->index(),
-      &dof_handler);
     FEValues<2> fe_values(discretization.mapping,
                           fe,
                           Quadrature<2>(unit_point),

@@ -68,6 +68,13 @@ namespace liftoff
   }
 
 
+  const std::vector<std::string> &
+  StressResultants::field_names()
+  {
+    return names;
+  }
+
+
   std::vector<std::string>
   StressResultants::get_names() const
   {
@@ -160,6 +167,33 @@ namespace liftoff
   }
 
 
+  unsigned int
+  StressResultants::field_index(const std::string &name)
+  {
+    const auto at = std::find(names.begin(), names.end(), name);
+    Assert(at != names.end(), ExcInternalError());
+    return at - names.begin();
+  }
+
+
+  void
+  StressResultants::evaluate(const DoFHandler<2>::cell_iterator &cell,
+                             const FEValues<2>                  &values,
+                             std::vector<Vector<double>>        &computed) const
+  {
+    const unsigned int                 n = values.n_quadrature_points;
+    DataPostprocessorInputs::Vector<2> inputs;
+    inputs.solution_values.assign(n, Vector<double>(3));
+    inputs.solution_gradients.assign(n, std::vector<Tensor<1, 2>>(3));
+    values.get_function_values(solution, inputs.solution_values);
+    values.get_function_gradients(solution, inputs.solution_gradients);
+    inputs.evaluation_points = values.get_quadrature_points();
+    inputs.template set_cell<2>(cell);
+    computed.resize(n, Vector<double>(names.size()));
+    evaluate_vector_field(inputs, computed);
+  }
+
+
   std::map<std::string, double>
   StressResultants::at_point(const Discretization &discretization,
                              const Point<2>       &p) const
@@ -177,16 +211,8 @@ namespace liftoff
                        update_values | update_gradients
                          | update_quadrature_points);
     values.reinit(cell);
-
-    DataPostprocessorInputs::Vector<2> inputs;
-    inputs.solution_values.assign(1, Vector<double>(3));
-    inputs.solution_gradients.assign(1, std::vector<Tensor<1, 2>>(3));
-    values.get_function_values(solution, inputs.solution_values);
-    values.get_function_gradients(solution, inputs.solution_gradients);
-    inputs.evaluation_points = values.get_quadrature_points();
-    inputs.template set_cell<2>(cell);
-    std::vector<Vector<double>> computed(1, Vector<double>(names.size()));
-    evaluate_vector_field(inputs, computed);
+    std::vector<Vector<double>> computed;
+    evaluate(cell, values, computed);
 
     std::map<std::string, double> fields;
     for (unsigned int k = 0; k < names.size(); ++k)

@@ -3,9 +3,12 @@
 #include <deal.II/fe/fe_values_extractors.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/located_maximum.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/time/plate_state.h>
 
+#include <liftoff/output/resultant_sweep.h>
+#include <liftoff/output/stress_resultants.h>
 #include <liftoff/output/time_history.h>
 
 #include <algorithm>
@@ -14,6 +17,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace liftoff
 {
@@ -30,6 +34,67 @@ namespace liftoff
           points.emplace_back(xy[0], xy[1]);
         }
       return points;
+    }
+
+
+    std::string
+    joined(const std::vector<std::string> &names,
+           const std::string              &separator = ",")
+    {
+      std::string text;
+      for (const auto &name : names)
+        text += (text.empty() ? "" : separator) + name;
+      return text;
+    }
+
+
+    /// "M_xx(0.25; 0), Q_x(0.5; 0)" as the quantities and points it names.
+    std::vector<std::pair<std::string, Point<2>>>
+    parse_quantity_list(const std::string &text)
+    {
+      std::vector<std::pair<std::string, Point<2>>> probes;
+      // Commas inside the parentheses (a point written x, y) belong to
+      // their entry, which then says what it should be.
+      std::vector<std::string> entries(1);
+      int                      depth = 0;
+      for (const char c : text)
+        {
+          depth += (c == '(') - (c == ')');
+          if (c == ',' && depth == 0)
+            entries.emplace_back();
+          else
+            entries.back() += c;
+        }
+      for (std::string entry : entries)
+        {
+          entry = Utilities::trim(entry);
+          if (entry.empty() && entries.size() == 1)
+            break;
+          const auto refuse = [&](const std::string &why) {
+            AssertThrow(false,
+                        ExcMessage("Output/Probe quantities: <" + entry + "> "
+                                   + why));
+          };
+          const auto open = entry.find('('), close = entry.rfind(')');
+          if (open == std::string::npos || close != entry.size() - 1)
+            refuse("is not of the form NAME(x; y).");
+          const std::string name = Utilities::trim(entry.substr(0, open));
+          const auto        xy   = Utilities::split_string_list(
+            entry.substr(open + 1, close - open - 1), ';');
+          if (xy.size() != 2 || !Patterns::Double().match(xy[0])
+              || !Patterns::Double().match(xy[1]))
+            refuse("does not name a point x; y.");
+          const auto &fields = StressResultants::field_names();
+          if (std::find(fields.begin(), fields.end(), name) == fields.end())
+            refuse("names no field; allowed are " + joined(fields, ", ") + ".");
+          const Point<2> p(Utilities::string_to_double(xy[0]),
+                           Utilities::string_to_double(xy[1]));
+          for (const auto &[other, q] : probes)
+            if (other == name && q == p)
+              refuse("is given twice.");
+          probes.emplace_back(name, p);
+        }
+      return probes;
     }
   } // namespace
 
@@ -65,12 +130,35 @@ namespace liftoff
       "bearing pressure at a Gauss point in contact, `max_pressure` (0 "
       "without contact), at `max_pressure_x`, `max_pressure_y` (a point of "
       "the meshed part) (costs a pass over the Gauss points per step).");
+    prm.declare_entry(
+      "Probe quantities",
+      "",
+      Patterns::Anything(),
+      "Stress resultants at points of the full plate, written to "
+      "history.csv at every step: a comma-separated list of NAME(x; y) with "
+      "NAME one of M_xx, M_yy, M_xy, Q_x, Q_y, M_1, M_2, M_1_angle, "
+      "sigma_xx, sigma_yy, sigma_xy, sigma_max (the fields of `Moment "
+      "fields`, doc/model.md), e.g. `M_xx(0.25; 0), Q_x(0.5; 0)`. At a "
+      "point on a cell edge the value is that of one cell beside it.");
+    prm.declare_entry(
+      "Write moment extremes",
+      "false",
+      Patterns::Bool(),
+      "Write the extremes over the plate of the principal moments and of "
+      "the shear force's magnitude to history.csv: `max_M_1`, the largest "
+      "M_1, and `min_M_2`, the smallest M_2 (a positive moment puts the "
+      "bed-side face in tension: doc/model.md), and `max_Q`, the largest "
+      "|Q|, each with its point `_x`, `_y` (of the meshed part), over the "
+      "output points of the field files (costs a pass over those points "
+      "per step).");
   }
 
 
   void
-  TimeHistory::parse_parameters(ParameterHandler &prm)
+  TimeHistory::parse_parameters(ParameterHandler   &prm,
+                                const MindlinPlate &plate_)
   {
+    plate        = plate_;
     probe_points = parse_points(prm.get("Probe points"));
     for (unsigned int i = 0; i < probe_points.size(); ++i)
       for (unsigned int j = 0; j < i; ++j)
@@ -79,8 +167,13 @@ namespace liftoff
                                + std::to_string(probe_points[i][0]) + ", "
                                + std::to_string(probe_points[i][1])
                                + " is given twice."));
-    write_energies  = prm.get_bool("Write energies");
-    write_resultant = prm.get_bool("Write foundation resultant");
+    write_energies        = prm.get_bool("Write energies");
+    write_resultant       = prm.get_bool("Write foundation resultant");
+    write_moment_extremes = prm.get_bool("Write moment extremes");
+    quantity_probes.clear();
+    for (const auto &[quantity, point] :
+         parse_quantity_list(prm.get("Probe quantities")))
+      quantity_probes.push_back({quantity, point, {}, {}});
     make_columns();
   }
 
@@ -94,22 +187,30 @@ namespace liftoff
                              + std::to_string(p[0]) + ", "
                              + std::to_string(p[1]) + " lies outside "
                              + disc.geometry().plate_description() + "."));
+    for (const auto &probe : quantity_probes)
+      AssertThrow(disc.geometry().is_on_plate(probe.point),
+                  ExcMessage("Output/Probe quantities: the point "
+                             + std::to_string(probe.point[0]) + ", "
+                             + std::to_string(probe.point[1]) + " of "
+                             + probe.quantity + " lies outside "
+                             + disc.geometry().plate_description() + "."));
   }
 
 
   std::vector<std::string>
-  TimeHistory::probe_column_names() const
+  TimeHistory::probe_column_names(const std::vector<std::string> &quantities,
+                                  const std::vector<Point<2>>    &points)
   {
     // Six digits name most points briefly; points that six digits do not
     // tell apart (0.333333 and 0.3333334) get as many as they need.
     for (int digits = 6;; ++digits)
       {
         std::vector<std::string> names;
-        for (const auto &p : probe_points)
+        for (unsigned int k = 0; k < points.size(); ++k)
           {
             std::ostringstream name;
-            name << std::setprecision(digits) << "w(" << p[0] << ";" << p[1]
-                 << ")";
+            name << std::setprecision(digits) << quantities[k] << "("
+                 << points[k][0] << ";" << points[k][1] << ")";
             names.push_back(name.str());
           }
         std::vector<std::string> sorted = names;
@@ -145,7 +246,9 @@ namespace liftoff
       columns.push_back({name, std::move(value)});
     };
     add("tau", [](const Row &r) { return r.tau; });
-    const std::vector<std::string> probe_names = probe_column_names();
+    const std::vector<std::string> probe_names =
+      probe_column_names(std::vector<std::string>(probe_points.size(), "w"),
+                         probe_points);
     for (unsigned int k = 0; k < probe_names.size(); ++k)
       add(probe_names[k], [k](const Row &r) { return r.probe_w[k]; });
     add("contact_fraction", [](const Row &r) { return r.contact_fraction; });
@@ -175,6 +278,30 @@ namespace liftoff
         add("max_pressure_x", [](const Row &r) { return r.max_pressure_x; });
         add("max_pressure_y", [](const Row &r) { return r.max_pressure_y; });
       }
+    std::vector<std::string> quantities;
+    std::vector<Point<2>>    points;
+    for (const auto &probe : quantity_probes)
+      {
+        quantities.push_back(probe.quantity);
+        points.push_back(probe.point);
+      }
+    const std::vector<std::string> quantity_names =
+      probe_column_names(quantities, points);
+    for (unsigned int k = 0; k < quantity_names.size(); ++k)
+      add(quantity_names[k],
+          [k](const Row &r) { return r.probe_quantities[k]; });
+    if (write_moment_extremes)
+      {
+        add("max_M_1", [](const Row &r) { return r.max_m_1; });
+        add("max_M_1_x", [](const Row &r) { return r.max_m_1_x; });
+        add("max_M_1_y", [](const Row &r) { return r.max_m_1_y; });
+        add("min_M_2", [](const Row &r) { return r.min_m_2; });
+        add("min_M_2_x", [](const Row &r) { return r.min_m_2_x; });
+        add("min_M_2_y", [](const Row &r) { return r.min_m_2_y; });
+        add("max_Q", [](const Row &r) { return r.max_q; });
+        add("max_Q_x", [](const Row &r) { return r.max_q_x; });
+        add("max_Q_y", [](const Row &r) { return r.max_q_y; });
+      }
   }
 
 
@@ -200,6 +327,27 @@ namespace liftoff
     probes.clear();
     for (const auto &p : probe_points)
       probes.emplace_back(disc, disc.geometry().to_modelled_part(p));
+    for (auto &probe : quantity_probes)
+      {
+        const Point<2> image = disc.geometry().to_modelled_part(probe.point);
+        std::tie(probe.cell, probe.unit_point) =
+          PointFunctional::holder_cell(disc, image);
+        // A point of a mirrored part takes the value at its image, with
+        // the sign the reflection gives the field: odd are the shear force
+        // normal to the plane, the twisting moment and the angle.
+        probe.sign = 1;
+        for (unsigned int axis = 0; axis < 2; ++axis)
+          if (image[axis] != probe.point[axis])
+            {
+              const std::string normal_shear = axis == 0 ? "Q_x" : "Q_y";
+              for (const std::string odd : {normal_shear,
+                                            std::string("M_xy"),
+                                            std::string("sigma_xy"),
+                                            std::string("M_1_angle")})
+                if (probe.quantity == odd)
+                  probe.sign = -probe.sign;
+            }
+      }
     w_dofs = DoFTools::extract_dofs(disc.dof_handler,
                                     disc.dof_handler.get_fe().component_mask(
                                       FEValuesExtractors::Scalar(0)));
@@ -277,7 +425,72 @@ namespace liftoff
         row.max_pressure_x = r.largest_pressure_at[0];
         row.max_pressure_y = r.largest_pressure_at[1];
       }
+    row.probe_quantities = probe_quantities(step);
+    if (write_moment_extremes)
+      add_moment_extremes(step, row);
     return row;
+  }
+
+
+  std::vector<double>
+  TimeHistory::probe_quantities(const StepData &step) const
+  {
+    const Discretization       &disc = *discretization;
+    const StressResultants      resultants(plate,
+                                      disc.mapping,
+                                      disc.element().shear_integration(),
+                                      step.state.ghosted_u);
+    std::vector<double>         values(quantity_probes.size(), 0.0);
+    std::vector<Vector<double>> fields;
+    for (unsigned int k = 0; k < quantity_probes.size(); ++k)
+      {
+        const QuantityProbe &probe = quantity_probes[k];
+        if (probe.cell.state() != IteratorState::valid)
+          continue;
+        FEValues<2> fe_values(disc.mapping,
+                              disc.dof_handler.get_fe(),
+                              Quadrature<2>(probe.unit_point),
+                              update_values | update_gradients
+                                | update_quadrature_points);
+        fe_values.reinit(probe.cell);
+        resultants.evaluate(probe.cell, fe_values, fields);
+        values[k] =
+          probe.sign * fields[0][StressResultants::field_index(probe.quantity)];
+      }
+    Utilities::MPI::sum(values, disc.mpi_communicator, values);
+    return values;
+  }
+
+
+  void
+  TimeHistory::add_moment_extremes(const StepData &step, Row &row) const
+  {
+    LocatedMaximum       largest_m_1, smallest_m_2, largest_q;
+    const ResultantSweep sweep(plate, *discretization, step.foundation.law());
+    sweep.visit(step.state.ghosted_u,
+                [&](const auto &,
+                    const std::vector<Point<2>>               &points,
+                    const std::vector<ResultantSweep::Values> &values) {
+                  for (unsigned int k = 0; k < points.size(); ++k)
+                    {
+                      largest_m_1.consider(values[k].m_1, points[k]);
+                      smallest_m_2.consider(-values[k].m_2, points[k]);
+                      largest_q.consider(values[k].shear, points[k]);
+                    }
+                });
+    const MPI_Comm comm = discretization->mpi_communicator;
+    largest_m_1         = largest_m_1.over_ranks(comm);
+    smallest_m_2        = smallest_m_2.over_ranks(comm);
+    largest_q           = largest_q.over_ranks(comm);
+    row.max_m_1         = largest_m_1.value;
+    row.max_m_1_x       = largest_m_1.point[0];
+    row.max_m_1_y       = largest_m_1.point[1];
+    row.min_m_2         = -smallest_m_2.value;
+    row.min_m_2_x       = smallest_m_2.point[0];
+    row.min_m_2_y       = smallest_m_2.point[1];
+    row.max_q           = largest_q.value;
+    row.max_q_x         = largest_q.point[0];
+    row.max_q_y         = largest_q.point[1];
   }
 
 
@@ -354,12 +567,6 @@ namespace liftoff
     // is refused before its rows are read.
     std::vector<std::string> saved, saved_layout;
     archive >> saved >> saved_layout;
-    const auto joined = [](const std::vector<std::string> &names) {
-      std::string text;
-      for (const auto &name : names)
-        text += (text.empty() ? "" : ",") + name;
-      return text;
-    };
     AssertThrow(saved == column_names() && saved_layout == Row::layout(),
                 ExcMessage("The checkpoint's time history has the columns "
                            + joined(saved) + " and rows of "

@@ -32,7 +32,7 @@ namespace liftoff
       , parts(comm, timer)
       , progress_line(comm, std::cout)
   {
-    outputs = {&time_history, &profile_output, &field_output};
+    outputs = {&time_history, &profile_output, &field_output, &envelopes};
     if (verbose && show_progress)
       outputs.push_back(&progress_line);
   }
@@ -57,6 +57,7 @@ namespace liftoff
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
+    Envelopes::declare_parameters(prm);
     prm.leave_subsection();
     Checkpoint::declare_parameters(prm);
   }
@@ -68,9 +69,10 @@ namespace liftoff
     parts.parse_parameters(prm);
     prm.enter_subsection("Output");
     output_directory = prm.get("Directory");
-    time_history.parse_parameters(prm);
+    time_history.parse_parameters(prm, parts.plate);
     profile_output.parse_parameters(prm);
     field_output.parse_parameters(prm, parts.plate);
+    envelopes.parse_parameters(prm, parts.plate);
     prm.leave_subsection();
     time_history.show_dissipated_energy(parts.foundation.has_damping());
     checkpoint.parse_parameters(prm);
@@ -85,6 +87,11 @@ namespace liftoff
     parts.check();
     time_history.check_against(parts.discretization);
     profile_output.check_against(parts.discretization);
+    AssertThrow(!envelopes.is_enabled() || !parts.mesh_refinement.is_enabled(),
+                ExcMessage("Output/Write envelopes = true keeps one value per "
+                           "output point of a mesh that does not change: it "
+                           "cannot be used with Mesh refinement/Adaptive "
+                           "(not yet implemented). Switch one of them off."));
     if (parts.is_dynamic())
       profile_output.warn_of_times_not_reached(parts.newmark.end_time,
                                                parts.newmark.time_step,
@@ -547,6 +554,7 @@ namespace liftoff
     summary.add("active-set iterations per step, mean", iterations.mean);
     summary.add("active-set iterations per step, max", double(iterations.max));
     summary.add("steps whose active set cycled", double(iterations.n_cycled));
+    envelopes.add_to(summary);
     summary.add_linear_solver(parts.active_set.linear_solver());
     summary.add_resources(timer, wall_clock.wall_time(), mpi_communicator);
     return summary;
@@ -562,6 +570,9 @@ namespace liftoff
                   "not checked: Time integration/Beta = "
                     + format_number(parts.newmark.beta)
                     + " with Gamma = 1/2 conserves a modified energy");
+    if (stepper->static_equilibrium_imbalance() >= 0)
+      summary.add("static equilibrium, bed against loads (relative)",
+                  stepper->static_equilibrium_imbalance());
     if (stepper->checks_energy())
       {
         summary.add("energy balance error, largest share of the energy scale",

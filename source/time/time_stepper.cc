@@ -13,6 +13,7 @@
 #include <liftoff/fem/point_functional.h>
 #include <liftoff/time/energy_check.h>
 #include <liftoff/time/newmark_integrator.h>
+#include <liftoff/time/static_equilibrium.h>
 #include <liftoff/time/time_stepper.h>
 
 #include <algorithm>
@@ -244,6 +245,35 @@ namespace liftoff
   }
 
 
+  void
+  TimeStepper::check_static_equilibrium(const LA::MPI::Vector &load)
+  {
+    equilibrium_imbalance = StaticEquilibrium::imbalance(discretization,
+                                                         foundation,
+                                                         state_.ghosted_u,
+                                                         load);
+    if (equilibrium_imbalance <= StaticEquilibrium::tolerance)
+      return;
+    warning = "The static solution is not in equilibrium: the bed's "
+              "resultant or moment differs from the loads' by "
+              + format_number(equilibrium_imbalance)
+              + " of the loads (accepted: "
+              + format_number(StaticEquilibrium::tolerance)
+              + "). Likely cause: an ill-conditioned system (a very soft "
+                "bed under a free plate) or a defect; do not use these "
+                "results.";
+    if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
+      std::cerr << "liftoff: warning: " << warning << std::endl;
+  }
+
+
+  double
+  TimeStepper::static_equilibrium_imbalance() const
+  {
+    return equilibrium_imbalance;
+  }
+
+
   std::string
   TimeStepper::likely_cause_of_energy_error() const
   {
@@ -385,6 +415,7 @@ namespace liftoff
       * (load * state_.u + foundation.diagnostics().gap_work(state_.ghosted_u));
     state_.energies = energies();
     require_finite_state("an energy", {}, state_.energies.values(), load);
+    check_static_equilibrium(load);
     return result;
   }
 

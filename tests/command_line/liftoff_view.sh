@@ -6,7 +6,8 @@
 # centre, w from history.csv's probe w(0;0) (w > 0 is into the foundation,
 # drawn downwards), by the displacement vector of the files. And the .pvtu
 # files opened as a series, without the .pvd, carry the times of the .pvd.
-# Exit 77 (skipped) where pvpython or Xvfb is missing.
+# --field Q_x gets the reflection's sign on the mirrored parts, and an unknown
+# field is refused by name. Exit 77 (skipped) where pvpython or Xvfb is missing.
 #   liftoff_view.sh LIFTOFF SCRIPTS_DIR
 set -u
 liftoff=$1
@@ -45,6 +46,19 @@ bad=$(awk -F, -v history=out/history.csv '
                      if (s <= 0) print "sign " $0 } }
   END { if (n != 4) print "rows " n }' out/pictures/view.csv)
 [ -s out/pictures/view.csv ] && [ -z "$bad" ]; check $? "view.csv: whole plate, max w = w(0;0) of history.csv, lowest point -scale w(0;0) with one scale > 0 ${bad:+($bad)}"
+# --field Q_x: odd in x, so the reflected half carries the negative values;
+# drawn whole, its range is symmetric about 0 (without the reflection's sign
+# both halves would show the modelled part's values).
+"$scripts/liftoff-view" out --size 400,300 --field Q_x --pictures out/q >/dev/null 2>q-stderr.txt
+status=$?
+range=$(tail -1 out/q/view.csv 2>/dev/null | awk -F, '{ print $10, $11 }')
+odd=$(echo "$range" | awk '{ print ($2 > 0 && ($1 + $2) ^ 2 <= (1e-6 * $2) ^ 2) }')
+[ "$status" -eq 0 ] && [ "$odd" = 1 ]
+check $? "liftoff-view --field Q_x: exit $status, range on the whole plate $range symmetric about 0"
+"$scripts/liftoff-view" out --field M_zz --pictures out/none >/dev/null 2>bad-field.txt
+status=$?
+[ "$status" -ne 0 ] && grep -q "field M_zz: the files have no such field" bad-field.txt
+check $? "liftoff-view --field M_zz: exit $status and $(head -c 120 bad-field.txt)"
 series=$(pvpython "$tests/series_time.py" out 2>/dev/null | tail -1)
 same=$(awk -v a="$series" -v b="$pvd_times" 'BEGIN { n = split(a, x, " "); m = split(b, y, " "); ok = (n == m && n == 4); for (i = 1; i <= n; ++i) if ((x[i] - y[i]) ^ 2 > 1e-24) ok = 0; print ok }')
 [ "$same" = 1 ]; check $? "the .pvtu series opened without the .pvd has the times $series"

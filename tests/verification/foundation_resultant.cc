@@ -22,7 +22,9 @@
 //    Gamma (w - g) there, with w from the solution at that point (the
 //    point evaluation of the probes, not the foundation's Gauss point
 //    values), and above the mean bearing pressure resultant / contact area;
-//    the quarter model's the full plate's.
+//    the quarter model's the full plate's;
+//  - the run's own check of the static equilibrium (StaticEquilibrium):
+//    it applies to these free plates and finds them balanced to 1e-10.
 
 #include "test_tools.h"
 
@@ -89,6 +91,11 @@ main(int argc, char **argv)
     checks.less("self-weight: |max_pressure - q| / q",
                 std::abs(row.max_pressure - q) / q,
                 1e-10);
+    checks.within("self-weight, quarter model: the run's static "
+                  "equilibrium imbalance (force only)",
+                  quarter->static_equilibrium_imbalance(),
+                  0,
+                  1e-10);
     checks.less("self-weight: quarter model vs full plate, max_pressure",
                 std::abs(quarter->history().back().max_pressure
                          - row.max_pressure),
@@ -114,6 +121,11 @@ main(int argc, char **argv)
         checks.less(label + "|resultant - P| / P",
                     std::abs(row.resultant - P) / P,
                     1e-9);
+        // The run's own check of the same balance, force and moments.
+        checks.within(label + "the run's static equilibrium imbalance",
+                      run->static_equilibrium_imbalance(),
+                      0,
+                      1e-10);
         checks.less(label + "|centre - point of the force|",
                     std::hypot(row.resultant_x - x, row.resultant_y - y),
                     1e-9);

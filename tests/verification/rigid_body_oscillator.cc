@@ -10,6 +10,10 @@
 //  - with other Newmark parameters (beta = 0.3025, gamma = 0.6, which damp)
 //    the deflection follows the scalar Newmark recursion for the same
 //    oscillator, written out independently here;
+//  - the envelopes: the largest w at every output point and over the plate is
+//    the discrete solution's largest value over the steps, at the step where
+//    it occurs; the smallest is 0 at tau = 0, the largest pressure Gamma
+//    times the largest w, and the moments of the rigid motion vanish;
 //  - the history's max_uplift column: 0 while the bilateral plate is pressed
 //    into its bed, and V tau for a plate thrown off a tensionless bed with
 //    the upward velocity V (free flight, which Newmark integrates exactly).
@@ -18,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -148,6 +153,56 @@ main(int argc, char **argv)
     checks.less("bilateral, pressed down: max uplift / (q/Gamma)",
                 uplift / (q / gamma_f),
                 1e-12);
+  }
+  {
+    const double dt = 0.02, omega_h = 2.0 / dt * std::atan(omega * dt / 2.0);
+    const auto   simulator = liftoff_tests::run_scene(
+      scene(2, dt) + "subsection Output\n set Write envelopes = true\nend\n");
+    double largest = 0, when = 0;
+    for (const auto &row : simulator->history())
+      {
+        const double w = q / gamma_f * (1 - std::cos(omega_h * row.tau));
+        if (w > largest)
+          std::tie(largest, when) = std::make_tuple(w, row.tau);
+      }
+    const auto &envelopes = simulator->get_envelopes();
+    const auto  extremes  = envelopes.extremes();
+    const auto  names     = liftoff::Envelopes::names();
+    const auto  extreme   = [&](const std::string &name) {
+      return extremes[std::find(names.begin(), names.end(), name)
+                      - names.begin()];
+    };
+    const double scale = q / gamma_f;
+    checks.less("envelope: |max w_max - largest discrete w| / (q/Gamma)",
+                std::abs(extreme("w_max").value - largest) / scale,
+                1e-9);
+    checks.within("envelope: time of max w_max - time of the largest w",
+                  extreme("w_max").time - when,
+                  -1e-12,
+                  1e-12);
+    double spread = 0;
+    for (const double w : envelopes.local_field("w_max"))
+      spread = std::max(spread, std::abs(w - largest) / scale);
+    for (const double t : envelopes.local_field("w_max_time"))
+      spread = std::max(spread, std::abs(t - when));
+    checks.less("envelope: max over the output points of |w_max - largest "
+                "w| / (q/Gamma) and |its time - when|",
+                spread,
+                1e-9);
+    checks.less("envelope: |min w_min| / (q/Gamma), at tau = 0",
+                std::abs(extreme("w_min").value) / scale
+                  + extreme("w_min").time,
+                1e-12);
+    checks.less("envelope: |max pressure - Gamma max w| / q",
+                std::abs(extreme("foundation_pressure_max").value
+                         - gamma_f * largest)
+                  / q,
+                1e-9);
+    checks.less("envelope: rigid motion, max |M| / (q/Gamma)",
+                std::max(std::abs(extreme("M_1_max").value),
+                         std::abs(extreme("M_2_min").value))
+                  / scale,
+                1e-9);
   }
   {
     // w > 0 is into the bed: an upward throw is w_dot = -V.

@@ -30,6 +30,13 @@ namespace liftoff
                     const unsigned int    component = 0);
 
     /// This rank's part of the value; sum over ranks for the value.
+    /// On the rank that holds `point` (the lowest rank that owns a cell
+    /// around it), that cell and the point's unit coordinates in it; an
+    /// invalid iterator on the other ranks. Collective; refuses a point
+    /// outside the mesh.
+    static std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
+    holder_cell(const Discretization &discretization, const Point<2> &point);
+
     double
     local_value(const LA::MPI::Vector &ghosted_solution) const;
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/thread_local_storage.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
@@ -58,6 +59,20 @@ namespace liftoff
     /// Every field at the point p of the plate (in the meshed part), by
     /// the same evaluation the output makes; empty on the ranks that do not
     /// own the cell around p.
+    /// The fields, in the order of evaluate_vector_field()'s output.
+    static const std::vector<std::string> &
+    field_names();
+    /// The position of a field in that order.
+    static unsigned int
+    field_index(const std::string &name);
+
+    /// The fields at the points of `values`, reinitialised on `cell` with
+    /// values, gradients and quadrature points.
+    void
+    evaluate(const DoFHandler<2>::cell_iterator &cell,
+             const FEValues<2>                  &values,
+             std::vector<Vector<double>>        &computed) const;
+
     std::map<std::string, double>
     at_point(const Discretization &discretization, const Point<2> &p) const;
 

@@ -4,6 +4,7 @@
 
 #include <liftoff/base/output_files.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/point_functional.h>
 #include <liftoff/output/output.h>
 #include <liftoff/time/energy_balance.h>
@@ -63,6 +64,19 @@ namespace liftoff
       double max_pressure   = 0;
       double max_pressure_x = 0;
       double max_pressure_y = 0;
+      /// The stress resultants of `Probe quantities`, in its order.
+      std::vector<double> probe_quantities;
+      /// With `Write moment extremes`: the largest M_1, the smallest M_2
+      /// and the largest |Q| over the output points, each at its point.
+      double max_m_1   = 0;
+      double max_m_1_x = 0;
+      double max_m_1_y = 0;
+      double min_m_2   = 0;
+      double min_m_2_x = 0;
+      double min_m_2_y = 0;
+      double max_q     = 0;
+      double max_q_x   = 0;
+      double max_q_y   = 0;
 
       /// The members serialize() archives, in its order: a checkpoint
       /// keeps them, and one of another layout is refused by name before
@@ -86,7 +100,17 @@ namespace liftoff
                 "contact_area",
                 "max_pressure",
                 "max_pressure_x",
-                "max_pressure_y"};
+                "max_pressure_y",
+                "probe_quantities",
+                "max_m_1",
+                "max_m_1_x",
+                "max_m_1_y",
+                "min_m_2",
+                "min_m_2_x",
+                "min_m_2_y",
+                "max_q",
+                "max_q_x",
+                "max_q_y"};
       }
 
       template <class Archive>
@@ -94,9 +118,10 @@ namespace liftoff
       serialize(Archive &archive, const unsigned int)
       {
         archive &tau &iterations &cycle_length &contact_fraction &max_uplift
-          &n_cells &n_dofs &probe_w &energies &balance_error &resultant
-            &resultant_x &resultant_y &contact_area &max_pressure
-              &max_pressure_x &max_pressure_y;
+          &n_cells &n_dofs &probe_w &energies &balance_error &resultant &
+            resultant_x &resultant_y &contact_area &max_pressure &max_pressure_x
+              &max_pressure_y &probe_quantities &max_m_1 &max_m_1_x &max_m_1_y
+                &min_m_2 &min_m_2_x &min_m_2_y &max_q &max_q_x &max_q_y;
       }
     };
 
@@ -104,7 +129,7 @@ namespace liftoff
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
 
     /// Probes inside the plate (full plate coordinates); needs no mesh.
     void
@@ -148,8 +173,26 @@ namespace liftoff
   private:
     /// The history's column names of the probes, "w(x;y)", with enough
     /// digits to tell every two points apart.
-    std::vector<std::string>
-    probe_column_names() const;
+    /// Names "quantity(x;y)" with as many digits as tell the points apart.
+    static std::vector<std::string>
+    probe_column_names(const std::vector<std::string> &quantities,
+                       const std::vector<Point<2>>    &points);
+
+    /// A probe of a stress resultant: its field, its point and, on the
+    /// rank that holds the point, its cell and unit point.
+    struct QuantityProbe
+    {
+      std::string                         quantity;
+      Point<2>                            point;
+      DoFHandler<2>::active_cell_iterator cell;
+      Point<2>                            unit_point;
+      double                              sign = 1;
+    };
+    std::vector<QuantityProbe> quantity_probes;
+    std::vector<double>
+    probe_quantities(const StepData &step) const;
+    void
+    add_moment_extremes(const StepData &step, Row &row) const;
 
     /// One column of history.csv: its name in the header and its value in
     /// a row (integers are exact in a double).
@@ -167,9 +210,11 @@ namespace liftoff
     column_names() const;
 
     std::vector<Point<2>>        probe_points;
-    bool                         write_energies   = true;
-    bool                         write_dissipated = false;
-    bool                         write_resultant  = false;
+    bool                         write_energies        = true;
+    bool                         write_dissipated      = false;
+    bool                         write_resultant       = false;
+    bool                         write_moment_extremes = false;
+    MindlinPlate                 plate;
     std::vector<PointFunctional> probes;
     /// This rank's degrees of freedom of w.
     IndexSet w_dofs;

@@ -48,8 +48,9 @@ namespace liftoff
     /// linear solver keeps the measured error of its factor's substitution;
     /// 10 since the time history keeps its column names; 11 since it keeps
     /// its rows' layout too (a new column needs no new format: TimeHistory
-    /// refuses a checkpoint of other columns or rows by name).
-    static constexpr unsigned int format = 11;
+    /// refuses a checkpoint of other columns or rows by name); 12 since
+    /// the envelopes are kept.
+    static constexpr unsigned int format = 12;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -7,6 +7,7 @@
 
 #include <liftoff/base/section_timer.h>
 
+#include <liftoff/output/envelopes.h>
 #include <liftoff/output/field_output.h>
 #include <liftoff/output/output.h>
 #include <liftoff/output/profile_output.h>
@@ -84,6 +85,9 @@ namespace liftoff
     /// The rows of the time history, one per step (and tau = 0).
     const std::vector<TimeHistory::Row> &
     history() const;
+    /// The envelopes (Output/Write envelopes).
+    const Envelopes &
+    get_envelopes() const;
     const LA::MPI::Vector &
     solution() const;
     /// The foundation pressure Gamma (w - g) + c v at the Gauss points of
@@ -91,6 +95,10 @@ namespace liftoff
     /// TensionlessWinklerFoundation::pressure_range()).
     FoundationDiagnostics::PressureRange
     contact_pressure_range() const;
+    /// StaticEquilibrium::imbalance() of a static run's solution (-1
+    /// where it does not apply).
+    double
+    static_equilibrium_imbalance() const;
     /// The signal (SIGINT, SIGTERM) that stopped the run, or 0.
     int
     stopping_signal() const;
@@ -120,6 +128,7 @@ namespace liftoff
     TimeHistory   time_history;
     ProfileOutput profile_output;
     FieldOutput   field_output;
+    Envelopes     envelopes;
     ProgressLine  progress_line;
     /// What is written after each step, in this order.
     std::vector<Output *> outputs;
@@ -247,6 +256,20 @@ namespace liftoff
   Simulator::history() const
   {
     return time_history.rows();
+  }
+
+
+  inline double
+  Simulator::static_equilibrium_imbalance() const
+  {
+    return stepper->static_equilibrium_imbalance();
+  }
+
+
+  inline const Envelopes &
+  Simulator::get_envelopes() const
+  {
+    return envelopes;
   }
 
 

@@ -129,9 +129,14 @@ namespace liftoff
     /// on, and a scheme for which the balance is a law.
     bool
     checks_energy() const;
-    /// The energy check's warning, for the summary ("" if none).
+    /// The energy check's or the static equilibrium's warning, for the
+    /// summary ("" if none).
     const std::string &
     energy_warning() const;
+    /// StaticEquilibrium::imbalance() of the static solution (-1 where it
+    /// does not apply or the run is dynamic).
+    double
+    static_equilibrium_imbalance() const;
     /// New meshes of the time loop or the static cycles.
     unsigned int
     n_adaptations() const;
@@ -171,6 +176,7 @@ namespace liftoff
     double       largest_eigenvalue = 0;
     unsigned int n_new_meshes       = 0;
     std::string  warning;
+    double       equilibrium_imbalance = -1;
 
     /// Matrices, foundation points, loads and the layout of every vector
     /// on the current mesh; u, v and a are kept unless `keep_motion` is
@@ -217,6 +223,8 @@ namespace liftoff
     /// parameters' extremes.
     std::string
     likely_cause_of_energy_error() const;
+    void
+    check_static_equilibrium(const LA::MPI::Vector &load);
     /// What makes a static system too ill-conditioned to solve: a plate
     /// that can turn about its only supported edge, very long cells, or a
     /// very soft bed under free edges.

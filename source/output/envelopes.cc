@@ -1,0 +1,296 @@
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <liftoff/base/archives.h>
+#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/output/envelopes.h>
+#include <liftoff/output/resultant_sweep.h>
+#include <liftoff/output/run_summary.h>
+#include <liftoff/output/vtu_pieces.h>
+#include <liftoff/time/plate_state.h>
+
+#include <array>
+
+namespace liftoff
+{
+  namespace
+  {
+    /// An envelope's quantity: its name in the files, the sign that makes
+    /// its extreme a largest value (-1 for a smallest one), the value at a
+    /// point and its unit (doc/model.md).
+    struct Kind
+    {
+      const char *name;
+      double      sign;
+      double (*value)(const ResultantSweep::Values &);
+      const char *unit;
+    };
+
+    const std::array<Kind, 5> kinds = {
+      {{"w_max",
+        1,
+        [](const ResultantSweep::Values &v) { return v.w; },
+        "F0*L^2/D"},
+       {"w_min",
+        -1,
+        [](const ResultantSweep::Values &v) { return v.w; },
+        "F0*L^2/D"},
+       {"foundation_pressure_max",
+        1,
+        [](const ResultantSweep::Values &v) { return v.pressure; },
+        "F0/L^2"},
+       {"M_1_max",
+        1,
+        [](const ResultantSweep::Values &v) { return v.m_1; },
+        "F0"},
+       {"M_2_min",
+        -1,
+        [](const ResultantSweep::Values &v) { return v.m_2; },
+        "F0"}}};
+  } // namespace
+
+
+  void
+  Envelopes::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Write envelopes",
+      "false",
+      Patterns::Bool(),
+      "Keep, at every output point of the field files, the largest and "
+      "smallest w, the largest bed pressure, the largest M_1 and the "
+      "smallest M_2 over all steps with the time of each, and write them "
+      "to envelope.pvtu at the end (and at each checkpoint) and their "
+      "extremes over the plate to the summary (costs a pass over the "
+      "output points per step). Not with adaptive refinement.");
+  }
+
+
+  void
+  Envelopes::parse_parameters(ParameterHandler &prm, const MindlinPlate &plate_)
+  {
+    enabled = prm.get_bool("Write envelopes");
+    plate   = plate_;
+    envelopes.clear();
+    for (const Kind &kind : kinds)
+      envelopes.push_back({kind.name, {}, {}});
+  }
+
+
+  bool
+  Envelopes::is_enabled() const
+  {
+    return enabled;
+  }
+
+
+  void
+  Envelopes::setup(const Discretization &disc, const std::string &folder)
+  {
+    directory = folder;
+    mesh_changed(disc);
+  }
+
+
+  void
+  Envelopes::mesh_changed(const Discretization &disc)
+  {
+    discretization = &disc;
+  }
+
+
+  void
+  Envelopes::execute(const StepData &step)
+  {
+    if (!enabled)
+      return;
+    const ResultantSweep sweep(plate, *discretization, step.foundation.law());
+    const bool           first = (n_steps_seen == 0);
+    points.clear();
+    sweep.visit(step.state.ghosted_u,
+                [&](const auto &,
+                    const std::vector<Point<2>>               &at,
+                    const std::vector<ResultantSweep::Values> &values) {
+                  for (unsigned int k = 0; k < at.size(); ++k)
+                    {
+                      const unsigned int i = points.size();
+                      points.push_back(at[k]);
+                      for (unsigned int e = 0; e < kinds.size(); ++e)
+                        {
+                          Envelope    &envelope = envelopes[e];
+                          const double v =
+                            kinds[e].sign * kinds[e].value(values[k]);
+                          if (first)
+                            {
+                              envelope.extreme.push_back(v);
+                              envelope.time.push_back(step.state.tau);
+                            }
+                          else if (v > envelope.extreme[i])
+                            {
+                              envelope.extreme[i] = v;
+                              envelope.time[i]    = step.state.tau;
+                            }
+                        }
+                    }
+                });
+    // The envelopes hold one value per output point of this mesh: the run
+    // refuses a changing mesh with them (SceneParts).
+    AssertThrow(points.size() == envelopes[0].extreme.size(),
+                ExcInternalError());
+    ++n_steps_seen;
+    last_time = step.state.tau;
+  }
+
+
+  void
+  Envelopes::write() const
+  {
+    const Discretization &disc = *discretization;
+    const FE_DGQ<2>       element(disc.element().degree());
+    DoFHandler<2>         point_dofs(disc.triangulation);
+    point_dofs.distribute_dofs(element);
+    // The order of ResultantSweep::visit(): this rank's cells, and in each
+    // the support points of FE_DGQ(p), which are the output points.
+    std::vector<LA::MPI::Vector> fields(2 * kinds.size());
+    for (auto &field : fields)
+      field.reinit(point_dofs.locally_owned_dofs(), disc.mpi_communicator);
+    std::vector<types::global_dof_index> indices(element.n_dofs_per_cell());
+    unsigned int                         i = 0;
+    for (const auto &cell : point_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(indices);
+          for (const auto index : indices)
+            {
+              for (unsigned int e = 0; e < kinds.size(); ++e)
+                {
+                  fields[2 * e][index] =
+                    kinds[e].sign * envelopes[e].extreme[i];
+                  fields[2 * e + 1][index] = envelopes[e].time[i];
+                }
+              ++i;
+            }
+        }
+    DataOut<2>                         data_out;
+    std::map<std::string, std::string> units;
+    data_out.attach_dof_handler(point_dofs);
+    for (unsigned int e = 0; e < kinds.size(); ++e)
+      {
+        fields[2 * e].compress(VectorOperation::insert);
+        fields[2 * e + 1].compress(VectorOperation::insert);
+        const std::string name = kinds[e].name;
+        data_out.add_data_vector(fields[2 * e], name);
+        data_out.add_data_vector(fields[2 * e + 1], name + "_time");
+        units[name]           = kinds[e].unit;
+        units[name + "_time"] = "t0";
+      }
+    data_out.build_patches(disc.mapping, element.degree);
+    DataOutBase::VtkFlags flags;
+    flags.time              = last_time;
+    flags.physical_units    = units;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
+    write_vtu_pieces(
+      directory, data_out, disc.mpi_communicator, last_time, "envelope", true);
+  }
+
+
+  void
+  Envelopes::flush()
+  {
+    if (enabled && !directory.empty() && n_steps_seen > 0)
+      write();
+  }
+
+
+  std::vector<std::string>
+  Envelopes::names()
+  {
+    std::vector<std::string> all;
+    for (const Kind &kind : kinds)
+      all.emplace_back(kind.name);
+    return all;
+  }
+
+
+  std::vector<LocatedMaximum>
+  Envelopes::extremes() const
+  {
+    std::vector<LocatedMaximum> all;
+    for (unsigned int e = 0; e < kinds.size(); ++e)
+      {
+        LocatedMaximum extreme;
+        for (unsigned int i = 0; i < points.size(); ++i)
+          extreme.consider(envelopes[e].extreme[i],
+                           points[i],
+                           envelopes[e].time[i]);
+        extreme = extreme.over_ranks(discretization->mpi_communicator);
+        extreme.value *= kinds[e].sign;
+        all.push_back(extreme);
+      }
+    return all;
+  }
+
+
+  std::vector<double>
+  Envelopes::local_field(const std::string &name) const
+  {
+    for (unsigned int e = 0; e < kinds.size(); ++e)
+      if (name == kinds[e].name)
+        {
+          std::vector<double> values = envelopes[e].extreme;
+          for (double &value : values)
+            value *= kinds[e].sign;
+          return values;
+        }
+      else if (name == std::string(kinds[e].name) + "_time")
+        return envelopes[e].time;
+    AssertThrow(false, ExcMessage("No envelope is named " + name + "."));
+    return {};
+  }
+
+
+  void
+  Envelopes::add_to(RunSummary &summary) const
+  {
+    if (!enabled)
+      return;
+    RunSummary::Section               section;
+    const std::vector<LocatedMaximum> all = extremes();
+    for (unsigned int e = 0; e < kinds.size(); ++e)
+      {
+        const std::string name = kinds[e].name;
+        section.emplace_back(name, all[e].value);
+        section.emplace_back(name + " x", all[e].point[0]);
+        section.emplace_back(name + " y", all[e].point[1]);
+        section.emplace_back(name + " time", all[e].time);
+      }
+    summary.add("envelope extremes (points of the meshed part)", section);
+  }
+
+
+  void
+  Envelopes::save(OutputArchive &archive) const
+  {
+    archive << n_steps_seen << last_time;
+    for (const Envelope &envelope : envelopes)
+      archive << envelope.name << envelope.extreme << envelope.time;
+  }
+
+
+  void
+  Envelopes::load(InputArchive &archive)
+  {
+    archive >> n_steps_seen >> last_time;
+    for (Envelope &envelope : envelopes)
+      {
+        std::string name;
+        archive >> name >> envelope.extreme >> envelope.time;
+        AssertThrow(name == envelope.name,
+                    ExcMessage("The checkpoint's envelopes hold " + name
+                               + " where this liftoff keeps " + envelope.name
+                               + ": resume with the liftoff that wrote it."));
+      }
+  }
+} // namespace liftoff
