@@ -1,4 +1,5 @@
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_dgq.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <liftoff/base/archives.h>
@@ -68,10 +69,9 @@ namespace liftoff
 
 
   void
-  Envelopes::parse_parameters(ParameterHandler &prm, const MindlinPlate &plate_)
+  Envelopes::parse_parameters(ParameterHandler &prm)
   {
     enabled = prm.get_bool("Write envelopes");
-    plate   = plate_;
     envelopes.clear();
     for (const Kind &kind : kinds)
       envelopes.push_back({kind.name, {}, {}});
@@ -105,35 +105,27 @@ namespace liftoff
   {
     if (!enabled)
       return;
-    const ResultantSweep sweep(plate, *discretization, step.foundation.law());
-    const bool           first = (n_steps_seen == 0);
-    points.clear();
-    sweep.visit(step.state.ghosted_u,
-                [&](const auto &,
-                    const std::vector<Point<2>>               &at,
-                    const std::vector<ResultantSweep::Values> &values) {
-                  for (unsigned int k = 0; k < at.size(); ++k)
-                    {
-                      const unsigned int i = points.size();
-                      points.push_back(at[k]);
-                      for (unsigned int e = 0; e < kinds.size(); ++e)
-                        {
-                          Envelope    &envelope = envelopes[e];
-                          const double v =
-                            kinds[e].sign * kinds[e].value(values[k]);
-                          if (first)
-                            {
-                              envelope.extreme.push_back(v);
-                              envelope.time.push_back(step.state.tau);
-                            }
-                          else if (v > envelope.extreme[i])
-                            {
-                              envelope.extreme[i] = v;
-                              envelope.time[i]    = step.state.tau;
-                            }
-                        }
-                    }
-                });
+    const auto &values = step.resultants.values();
+    const bool  first  = (n_steps_seen == 0);
+    points             = step.resultants.points();
+    for (unsigned int e = 0; e < kinds.size(); ++e)
+      {
+        Envelope &envelope = envelopes[e];
+        if (first)
+          {
+            envelope.extreme.assign(values.size(), 0.0);
+            envelope.time.assign(values.size(), step.state.tau);
+          }
+        for (unsigned int i = 0; i < values.size(); ++i)
+          {
+            const double v = kinds[e].sign * kinds[e].value(values[i]);
+            if (first || v > envelope.extreme[i])
+              {
+                envelope.extreme[i] = v;
+                envelope.time[i]    = step.state.tau;
+              }
+          }
+      }
     // The envelopes hold one value per output point of this mesh: the run
     // refuses a changing mesh with them (SceneParts).
     AssertThrow(points.size() == envelopes[0].extreme.size(),
@@ -150,7 +142,7 @@ namespace liftoff
     const FE_DGQ<2>       element(disc.element().degree());
     DoFHandler<2>         point_dofs(disc.triangulation);
     point_dofs.distribute_dofs(element);
-    // The order of ResultantSweep::visit(): this rank's cells, and in each
+    // The order of ResultantSweep::points(): this rank's cells, and in each
     // the support points of FE_DGQ(p), which are the output points.
     std::vector<LA::MPI::Vector> fields(2 * kinds.size());
     for (auto &field : fields)

@@ -1,3 +1,6 @@
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_values.h>
+
 #include <liftoff/contact/contact_law.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/output/resultant_sweep.h>
@@ -7,63 +10,79 @@
 
 namespace liftoff
 {
-  ResultantSweep::ResultantSweep(const MindlinPlate   &plate,
-                                 const Discretization &discretization,
-                                 const ContactLaw     &law)
+  ResultantSweep::ResultantSweep(const MindlinPlate    &plate,
+                                 const Discretization  &discretization,
+                                 const ContactLaw      &law,
+                                 const LA::MPI::Vector &ghosted_solution)
       : plate(plate)
       , discretization(discretization)
       , law(law)
-      , points(discretization.element().degree())
+      , solution(ghosted_solution)
   {}
 
 
-  const FE_DGQ<2> &
-  ResultantSweep::point_element() const
+  const std::vector<Point<2>> &
+  ResultantSweep::points() const
   {
-    return points;
+    compute();
+    return point_list;
+  }
+
+
+  const std::vector<ResultantSweep::Values> &
+  ResultantSweep::values() const
+  {
+    compute();
+    return value_list;
   }
 
 
   void
-  ResultantSweep::visit(const LA::MPI::Vector &ghosted_u,
-                        const Work            &work) const
+  ResultantSweep::compute() const
   {
+    if (is_computed)
+      return;
+    is_computed                 = true;
     const Discretization  &disc = discretization;
     const StressResultants resultants(plate,
                                       disc.mapping,
                                       disc.element().shear_integration(),
-                                      ghosted_u);
+                                      solution);
     const unsigned int     m_1 = StressResultants::field_index("M_1"),
                        m_2     = StressResultants::field_index("M_2"),
                        q_x     = StressResultants::field_index("Q_x"),
                        q_y     = StressResultants::field_index("Q_y");
-    FEValues<2>                 fe_values(disc.mapping,
-                          disc.dof_handler.get_fe(),
-                          Quadrature<2>(points.get_unit_support_points()),
-                          update_values | update_gradients
-                            | update_quadrature_points);
+    const FE_DGQ<2> output_points(disc.element().degree());
+    FEValues<2>     fe_values(
+      disc.mapping,
+      disc.dof_handler.get_fe(),
+      Quadrature<2>(output_points.get_unit_support_points()),
+      update_values | update_gradients | update_quadrature_points);
     const unsigned int          n = fe_values.n_quadrature_points;
     std::vector<Vector<double>> fields;
     std::vector<double>         w(n);
-    std::vector<Values>         values(n);
+    point_list.clear();
+    value_list.clear();
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           resultants.evaluate(cell, fe_values, fields);
-          fe_values[FEValuesExtractors::Scalar(0)].get_function_values(
-            ghosted_u, w);
+          fe_values[FEValuesExtractors::Scalar(0)].get_function_values(solution,
+                                                                       w);
           const auto &x = fe_values.get_quadrature_points();
           for (unsigned int k = 0; k < n; ++k)
             {
-              const double g     = (law.has_gap() ? law.gap_at(x[k]) : 0.0);
-              values[k].w        = w[k];
-              values[k].pressure = law.spring_pressure(w[k] - g);
-              values[k].m_1      = fields[k][m_1];
-              values[k].m_2      = fields[k][m_2];
-              values[k].shear    = std::hypot(fields[k][q_x], fields[k][q_y]);
+              const double g = (law.has_gap() ? law.gap_at(x[k]) : 0.0);
+              Values       v;
+              v.w        = w[k];
+              v.pressure = law.spring_pressure(w[k] - g);
+              v.m_1      = fields[k][m_1];
+              v.m_2      = fields[k][m_2];
+              v.shear    = std::hypot(fields[k][q_x], fields[k][q_y]);
+              point_list.push_back(x[k]);
+              value_list.push_back(v);
             }
-          work(cell, x, values);
         }
   }
 } // namespace liftoff

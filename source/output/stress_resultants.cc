@@ -126,13 +126,24 @@ namespace liftoff
     const DataPostprocessorInputs::Vector<2> &inputs,
     std::vector<Vector<double>>              &computed) const
   {
-    const auto            cell     = inputs.template get_cell<2>();
-    const auto           &points   = inputs.evaluation_points;
-    const auto           &gradient = inputs.solution_gradients;
+    // DataOut gives the points in real coordinates only.
+    const auto            cell   = inputs.template get_cell<2>();
+    const auto           &points = inputs.evaluation_points;
     std::vector<Point<2>> unit_points(points.size());
     for (unsigned int q = 0; q < points.size(); ++q)
       unit_points[q] = GeometryInfo<2>::project_to_unit_cell(
         mapping.transform_real_to_unit_cell(cell, points[q]));
+    compute(cell, unit_points, inputs.solution_gradients, computed);
+  }
+
+
+  void
+  StressResultants::compute(
+    const DoFHandler<2>::cell_iterator           &cell,
+    const std::vector<Point<2>>                  &unit_points,
+    const std::vector<std::vector<Tensor<1, 2>>> &gradient,
+    std::vector<Vector<double>>                  &computed) const
+  {
     const std::vector<Tensor<1, 2>> gamma = shear_strains(cell, unit_points);
 
     const double nu = plate.poisson_ratio;
@@ -140,7 +151,7 @@ namespace liftoff
     const double to_stress =
       6.0 / (plate.thickness_ratio * plate.thickness_ratio);
     const double shear = plate.shear_stiffness();
-    for (unsigned int q = 0; q < points.size(); ++q)
+    for (unsigned int q = 0; q < unit_points.size(); ++q)
       {
         // Components: 0 w, 1 psi_x, 2 psi_y. z along w gives the minus sign.
         const double m_xx = -(gradient[q][1][0] + nu * gradient[q][2][1]);
@@ -181,16 +192,12 @@ namespace liftoff
                              const FEValues<2>                  &values,
                              std::vector<Vector<double>>        &computed) const
   {
-    const unsigned int                 n = values.n_quadrature_points;
-    DataPostprocessorInputs::Vector<2> inputs;
-    inputs.solution_values.assign(n, Vector<double>(3));
-    inputs.solution_gradients.assign(n, std::vector<Tensor<1, 2>>(3));
-    values.get_function_values(solution, inputs.solution_values);
-    values.get_function_gradients(solution, inputs.solution_gradients);
-    inputs.evaluation_points = values.get_quadrature_points();
-    inputs.template set_cell<2>(cell);
+    const unsigned int                     n = values.n_quadrature_points;
+    std::vector<std::vector<Tensor<1, 2>>> gradients(
+      n, std::vector<Tensor<1, 2>>(3));
+    values.get_function_gradients(solution, gradients);
     computed.resize(n, Vector<double>(names.size()));
-    evaluate_vector_field(inputs, computed);
+    compute(cell, values.get_quadrature().get_points(), gradients, computed);
   }
 
 

@@ -465,19 +465,15 @@ namespace liftoff
   void
   TimeHistory::add_moment_extremes(const StepData &step, Row &row) const
   {
-    LocatedMaximum       largest_m_1, smallest_m_2, largest_q;
-    const ResultantSweep sweep(plate, *discretization, step.foundation.law());
-    sweep.visit(step.state.ghosted_u,
-                [&](const auto &,
-                    const std::vector<Point<2>>               &points,
-                    const std::vector<ResultantSweep::Values> &values) {
-                  for (unsigned int k = 0; k < points.size(); ++k)
-                    {
-                      largest_m_1.consider(values[k].m_1, points[k]);
-                      smallest_m_2.consider(-values[k].m_2, points[k]);
-                      largest_q.consider(values[k].shear, points[k]);
-                    }
-                });
+    LocatedMaximum largest_m_1, smallest_m_2, largest_q;
+    const auto    &points = step.resultants.points();
+    const auto    &values = step.resultants.values();
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        largest_m_1.consider(values[k].m_1, points[k]);
+        smallest_m_2.consider(-values[k].m_2, points[k]);
+        largest_q.consider(values[k].shear, points[k]);
+      }
     const MPI_Comm comm = discretization->mpi_communicator;
     largest_m_1         = largest_m_1.over_ranks(comm);
     smallest_m_2        = smallest_m_2.over_ranks(comm);

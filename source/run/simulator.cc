@@ -6,6 +6,7 @@
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/base/scene_input.h>
+#include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/run/simulator.h>
 #include <liftoff/run/stop_signal.h>
@@ -72,7 +73,7 @@ namespace liftoff
     time_history.parse_parameters(prm, parts.plate);
     profile_output.parse_parameters(prm);
     field_output.parse_parameters(prm, parts.plate);
-    envelopes.parse_parameters(prm, parts.plate);
+    envelopes.parse_parameters(prm);
     prm.leave_subsection();
     time_history.show_dissipated_energy(parts.foundation.has_damping());
     checkpoint.parse_parameters(prm);
@@ -295,13 +296,18 @@ namespace liftoff
   void
   Simulator::record(const ActiveSetIteration::Result &iteration)
   {
-    SectionTimer::Scope t(timer, "output");
-    const bool          is_static = !parts.is_dynamic();
-    const PlateState   &state     = stepper->state();
-    const StepData      step{state,
+    SectionTimer::Scope  t(timer, "output");
+    const bool           is_static = !parts.is_dynamic();
+    const PlateState    &state     = stepper->state();
+    const ResultantSweep resultants(parts.plate,
+                                    parts.discretization,
+                                    parts.foundation.law(),
+                                    state.ghosted_u);
+    const StepData       step{state,
                         parts.discretization,
                         parts.foundation,
                         iteration,
+                        resultants,
                         parts.foundation.diagnostics().contact_area_fraction(),
                         is_static ? 0.0 : parts.newmark.time_step,
                         is_static ? 0 : parts.newmark.n_steps(),

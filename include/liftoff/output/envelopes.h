@@ -3,7 +3,6 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/located_maximum.h>
-#include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/output/output.h>
 
 #include <string>
@@ -36,7 +35,7 @@ namespace liftoff
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
+    parse_parameters(ParameterHandler &prm);
 
     bool
     is_enabled() const;
@@ -85,7 +84,6 @@ namespace liftoff
     };
 
     bool                  enabled = false;
-    MindlinPlate          plate;
     std::string           directory;
     const Discretization *discretization = nullptr;
     std::vector<Envelope> envelopes;

@@ -10,6 +10,7 @@ namespace liftoff
 
   // StepData holds references only: the outputs include what they use.
   class Discretization;
+  class ResultantSweep;
   class TensionlessWinklerFoundation;
   struct PlateState;
 
@@ -21,6 +22,9 @@ namespace liftoff
     const Discretization               &discretization;
     const TensionlessWinklerFoundation &foundation;
     const ActiveSetResult              &iteration;
+    /// The resultants at the output points, computed by the first output
+    /// that reads them.
+    const ResultantSweep &resultants;
     /// Share of the plate in contact (computed once for all outputs: it is
     /// a collective sum).
     double contact_fraction;

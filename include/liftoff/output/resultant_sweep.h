@@ -1,13 +1,10 @@
 #pragma once
 
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_dgq.h>
-#include <deal.II/fe/fe_values.h>
+#include <deal.II/base/point.h>
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/mindlin_plate.h>
 
-#include <functional>
 #include <vector>
 
 namespace liftoff
@@ -27,6 +24,10 @@ namespace liftoff
    * support points of FE_DGQ(p) in its order, so that a FE_DGQ(p) field
    * holds one value per output point and is written exactly. The moments
    * and shear forces are StressResultants', so every output agrees.
+   *
+   * One object per step, made by the Simulator and handed to every output
+   * in StepData: the values are computed at the first call of values() and
+   * kept, so the outputs that read them share one pass over the points.
    */
   class ResultantSweep
   {
@@ -40,28 +41,29 @@ namespace liftoff
       double shear    = 0;
     };
 
-    /// What visit() hands on for each cell: the cell of the plate's
-    /// DoFHandler, the points in real coordinates and their values.
-    using Work =
-      std::function<void(const DoFHandler<2>::active_cell_iterator &cell,
-                         const std::vector<Point<2>>               &points,
-                         const std::vector<Values>                 &values)>;
+    ResultantSweep(const MindlinPlate    &plate,
+                   const Discretization  &discretization,
+                   const ContactLaw      &law,
+                   const LA::MPI::Vector &ghosted_solution);
 
-    ResultantSweep(const MindlinPlate   &plate,
-                   const Discretization &discretization,
-                   const ContactLaw     &law);
-
-    /// The element whose support points are the output points.
-    const FE_DGQ<2> &
-    point_element() const;
-
-    void
-    visit(const LA::MPI::Vector &ghosted_u, const Work &work) const;
+    /// The output points of this rank: its cells in the order of the
+    /// active cells, in each the support points of FE_DGQ(p).
+    const std::vector<Point<2>> &
+    points() const;
+    /// The values at points().
+    const std::vector<Values> &
+    values() const;
 
   private:
-    const MindlinPlate   &plate;
-    const Discretization &discretization;
-    const ContactLaw     &law;
-    const FE_DGQ<2>       points;
+    const MindlinPlate           &plate;
+    const Discretization         &discretization;
+    const ContactLaw             &law;
+    const LA::MPI::Vector        &solution;
+    mutable std::vector<Point<2>> point_list;
+    mutable std::vector<Values>   value_list;
+    mutable bool                  is_computed = false;
+
+    void
+    compute() const;
   };
 } // namespace liftoff

@@ -67,7 +67,7 @@ namespace liftoff
     field_index(const std::string &name);
 
     /// The fields at the points of `values`, reinitialised on `cell` with
-    /// values, gradients and quadrature points.
+    /// gradients.
     void
     evaluate(const DoFHandler<2>::cell_iterator &cell,
              const FEValues<2>                  &values,
@@ -94,6 +94,14 @@ namespace liftoff
     mutable Threads::ThreadLocalStorage<StrainsAtPoints> strains_at_points;
 
     /// The cell's assumed (or raw) shear strain at `unit_points`.
+    /// The fields at points of `cell` given in its unit coordinates, from
+    /// the solution's gradients there.
+    void
+    compute(const DoFHandler<2>::cell_iterator           &cell,
+            const std::vector<Point<2>>                  &unit_points,
+            const std::vector<std::vector<Tensor<1, 2>>> &gradients,
+            std::vector<Vector<double>>                  &computed) const;
+
     std::vector<Tensor<1, 2>>
     shear_strains(const DoFHandler<2>::cell_iterator &cell,
                   const std::vector<Point<2>>        &unit_points) const;
