@@ -105,11 +105,13 @@ namespace liftoff
     for (int digits = 6;; ++digits)
       {
         std::vector<std::string> names;
+        // In the scene's units: metres in an SI scene.
+        const double length = units.scale(PhysicalUnits::Quantity::length);
         for (const auto &p : probe_points)
           {
             std::ostringstream name;
-            name << std::setprecision(digits) << "w(" << p[0] << ";" << p[1]
-                 << ")";
+            name << std::setprecision(digits) << "w(" << length * p[0] << ";"
+                 << length * p[1] << ")";
             names.push_back(name.str());
           }
         std::vector<std::string> sorted = names;
@@ -139,42 +141,95 @@ namespace liftoff
   void
   TimeHistory::make_columns()
   {
+    using Quantity = PhysicalUnits::Quantity;
     columns.clear();
     const auto add = [this](const std::string                 &name,
-                            std::function<double(const Row &)> value) {
-      columns.push_back({name, std::move(value)});
+                            std::function<double(const Row &)> value,
+                            const Quantity quantity = Quantity::number) {
+      const double scale = units.scale(quantity);
+      columns.push_back({name + units.unit(quantity),
+                         [value = std::move(value), scale](const Row &r) {
+                           return scale * value(r);
+                         }});
     };
-    add("tau", [](const Row &r) { return r.tau; });
+    add(
+      units.is_physical() ? "t" : "tau",
+      [](const Row &r) { return r.tau; },
+      Quantity::time);
     const std::vector<std::string> probe_names = probe_column_names();
     for (unsigned int k = 0; k < probe_names.size(); ++k)
-      add(probe_names[k], [k](const Row &r) { return r.probe_w[k]; });
+      add(
+        probe_names[k],
+        [k](const Row &r) { return r.probe_w[k]; },
+        Quantity::deflection);
     add("contact_fraction", [](const Row &r) { return r.contact_fraction; });
-    add("max_uplift", [](const Row &r) { return r.max_uplift; });
+    add(
+      "max_uplift",
+      [](const Row &r) { return r.max_uplift; },
+      Quantity::deflection);
     add("active_set_iterations", [](const Row &r) { return r.iterations; });
     add("active_set_cycle", [](const Row &r) { return r.cycle_length; });
     add("cells", [](const Row &r) { return r.n_cells; });
     add("dofs", [](const Row &r) { return r.n_dofs; });
     if (write_energies)
       {
-        add("kinetic", [](const Row &r) { return r.energies.kinetic; });
-        add("strain", [](const Row &r) { return r.energies.strain; });
-        add("foundation", [](const Row &r) { return r.energies.foundation; });
-        add("work", [](const Row &r) { return r.energies.work; });
+        const auto energy = Quantity::energy;
+        add(
+          "kinetic", [](const Row &r) { return r.energies.kinetic; }, energy);
+        add(
+          "strain", [](const Row &r) { return r.energies.strain; }, energy);
+        add(
+          "foundation",
+          [](const Row &r) { return r.energies.foundation; },
+          energy);
+        add(
+          "work", [](const Row &r) { return r.energies.work; }, energy);
         if (write_dissipated)
-          add("dissipated_energy",
-              [](const Row &r) { return r.energies.dissipated; });
-        add("balance_error", [](const Row &r) { return r.balance_error; });
+          add(
+            "dissipated_energy",
+            [](const Row &r) { return r.energies.dissipated; },
+            energy);
+        add(
+          "balance_error",
+          [](const Row &r) { return r.balance_error; },
+          energy);
       }
     if (write_resultant)
       {
-        add("resultant", [](const Row &r) { return r.resultant; });
-        add("resultant_x", [](const Row &r) { return r.resultant_x; });
-        add("resultant_y", [](const Row &r) { return r.resultant_y; });
-        add("contact_area", [](const Row &r) { return r.contact_area; });
-        add("max_pressure", [](const Row &r) { return r.max_pressure; });
-        add("max_pressure_x", [](const Row &r) { return r.max_pressure_x; });
-        add("max_pressure_y", [](const Row &r) { return r.max_pressure_y; });
+        const auto length = Quantity::length;
+        add(
+          "resultant",
+          [](const Row &r) { return r.resultant; },
+          Quantity::force);
+        add(
+          "resultant_x", [](const Row &r) { return r.resultant_x; }, length);
+        add(
+          "resultant_y", [](const Row &r) { return r.resultant_y; }, length);
+        add(
+          "contact_area",
+          [](const Row &r) { return r.contact_area; },
+          Quantity::area);
+        add(
+          "max_pressure",
+          [](const Row &r) { return r.max_pressure; },
+          Quantity::pressure);
+        add(
+          "max_pressure_x",
+          [](const Row &r) { return r.max_pressure_x; },
+          length);
+        add(
+          "max_pressure_y",
+          [](const Row &r) { return r.max_pressure_y; },
+          length);
       }
+  }
+
+
+  void
+  TimeHistory::write_in_units_of(const PhysicalUnits &scene_units)
+  {
+    units = scene_units;
+    make_columns();
   }
 
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/output_files.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/point_functional.h>
 #include <liftoff/output/output.h>
@@ -118,6 +119,12 @@ namespace liftoff
     void
     show_dissipated_energy(const bool show);
 
+    /// Write the columns in the scene's units: an SI scene's names carry
+    /// their unit ("t [s]", "w(2.5;0) [m]") and its values are in SI; a
+    /// dimensionless scene's columns are as they were.
+    void
+    write_in_units_of(const PhysicalUnits &scene_units);
+
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;
@@ -166,6 +173,7 @@ namespace liftoff
     std::vector<std::string>
     column_names() const;
 
+    PhysicalUnits                units;
     std::vector<Point<2>>        probe_points;
     bool                         write_energies   = true;
     bool                         write_dissipated = false;

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 
 #include <liftoff/output/field_output.h>
@@ -116,6 +117,9 @@ namespace liftoff
     SectionTimer timer;
     Timer        wall_clock;
 
+    /// The scene's unit system; converts an SI scene before the parts
+    /// read it, and gives the outputs their units.
+    PhysicalUnits units;
     SceneParts    parts;
     TimeHistory   time_history;
     ProfileOutput profile_output;
@@ -130,8 +134,12 @@ namespace liftoff
     /// The scene as Checkpoint compares it, and the step resumed from.
     std::string  scene;
     unsigned int resume_step = 0;
-    /// The parameters as used_parameters.prm records them.
+    /// The parameters as used_parameters.prm records them; for an SI
+    /// scene followed by the dimensionless scene the solver ran, as
+    /// comments.
     std::string used_parameters;
+    /// The dimensionless scene of an SI scene (ShortPRM), else empty.
+    std::string dimensionless_scene;
     /// The output directory, locked while run() runs.
     std::unique_ptr<OutputDirectory> output_folder;
     /// False while a resumed run has not yet replaced the files of the run
@@ -148,6 +156,10 @@ namespace liftoff
     /// checkpoint of that step keeps this, and a resume that goes further
     /// adapts before its first step, as a run without the stop did.
     bool adaptation_pending = false;
+
+    /// Every part's and output's parameters, from a dimensionless scene.
+    void
+    parse_dimensionless(ParameterHandler &prm);
 
     /// The checks across parts and outputs that need no mesh (and a
     /// warning about profile times a run does not reach).
