@@ -163,6 +163,179 @@ namespace liftoff
                   + exact(x / unit);
       return result;
     }
+    /**
+     * The entries of an SI scene written into its dimensionless twin
+     * `out`: values divided by their unit, lists of points and times,
+     * muParser expressions in x, y [m] and t [s] rewritten in the solver's
+     * x, y and tau. Each error names the entry as the user wrote it.
+     */
+    struct SceneConverter
+    {
+      std::map<std::string, Entry> entries;
+      ParameterHandler            &out;
+      double                       length, width, t0, w_unit, psi_unit;
+
+      void
+      set(const std::string &path,
+          const double       value,
+          const std::string &written) const
+      {
+        set_entry(out, path, exact(value), written);
+      }
+
+      double
+      value(const std::string &path) const
+      {
+        return Utilities::string_to_double(entries.at(path).value);
+      }
+
+      std::string
+      expression(const std::string &path) const
+      {
+        static const std::regex name("[A-Za-z_][A-Za-z0-9_]*");
+        const std::string       si = entries.at(path).value;
+        std::string             result;
+        auto                    from = si.cbegin();
+        for (std::sregex_iterator i(si.begin(), si.end(), name), end; i != end;
+             ++i)
+          {
+            const std::string word = i->str();
+            AssertThrow(word != "tau",
+                        ExcMessage(path + " = <" + si
+                                   + ">: a scene with Units/System = SI "
+                                     "writes time as t in seconds, not "
+                                     "tau."));
+            result.append(from, (*i)[0].first);
+            from = (*i)[0].second;
+            if (word == "x" || word == "y")
+              result += "(" + exact(length) + "*" + word + ")";
+            else if (word == "t")
+              result += "(" + exact(t0) + "*tau)";
+            else
+              result += word;
+          }
+        return result.append(from, si.cend());
+      }
+
+      void
+      set_expression(const std::string &path,
+                     const std::string &prefix = "",
+                     const std::string &suffix = "") const
+      {
+        set_entry(out,
+                  path,
+                  prefix + expression(path) + suffix,
+                  path + " = <" + entries.at(path).value + ">");
+      }
+
+      // Points "x, y" separated by `separator`, in metres from the
+      // plate's centre; one outside the plate is refused in metres.
+      void
+      set_positions(const std::string &path, const char separator = ';') const
+      {
+        std::string result;
+        for (const std::string &point :
+             Utilities::split_string_list(entries.at(path).value, separator))
+          {
+            const auto xy = Utilities::string_to_double(
+              Utilities::split_string_list(point, ','));
+            AssertThrow(std::abs(xy[0]) <= length / 2 * (1 + 1e-12)
+                          && std::abs(xy[1]) <= width / 2 * (1 + 1e-12),
+                        ExcMessage(path + ": the point " + point
+                                   + " [m] lies outside the plate, [-"
+                                   + format_number(length / 2) + ", "
+                                   + format_number(length / 2) + "] x [-"
+                                   + format_number(width / 2) + ", "
+                                   + format_number(width / 2)
+                                   + "] m with its centre at the origin."));
+            result += (result.empty() ? "" : std::string(1, separator) + " ")
+                      + divided_list(point, length);
+          }
+        set_entry(out,
+                  path,
+                  result,
+                  path + " = " + entries.at(path).value + " [m]");
+      }
+
+      // Every numbered load of Loads: its magnitude in N, Pa or N/m, its
+      // position or region in m, its expressions.
+      void
+      loads(const double force, const double pressure, const double line) const
+      {
+        for (const auto &[path, entry] : entries)
+          {
+            if (path.rfind("Loads/", 0) != 0)
+              continue;
+            const std::string section = path.substr(0, path.rfind('/') + 1);
+            const std::string name    = path.substr(section.size());
+            const double      unit =
+              section.rfind("Loads/Point load", 0) == 0 ? force
+                   : section.rfind("Loads/Pressure", 0) == 0 ? pressure
+                                                             : line;
+            if (name == "Magnitude")
+              set(path, value(path) / unit, path + " = " + entry.value);
+            else if (name == "Time history" || name == "Intensity")
+              set_expression(path);
+            else if (name == "Position")
+              set_positions(path);
+            else if (name == "Region" && entry.value != "whole plate")
+              set_entry(out,
+                        path,
+                        divided_list(entry.value, length),
+                        path + " = " + entry.value + " [m]");
+          }
+      }
+
+      void
+      times_and_points() const
+      {
+        for (const std::string path :
+             {"Time integration/Time step", "Time integration/End time"})
+          set(path, value(path) / t0, path + " = " + entries.at(path).value);
+        const std::string times = "Output/Profile times";
+        set_entry(out,
+                  times,
+                  divided_list(entries.at(times).value, t0),
+                  times + " = " + entries.at(times).value);
+        for (const std::string path : {"Output/Probe points",
+                                       "Output/Profile start",
+                                       "Output/Profile end"})
+          set_positions(path);
+      }
+
+      // w; psi_x; psi_y in m and rad, and their velocities.
+      void
+      initial_conditions() const
+      {
+        for (const auto &[field, time_unit] :
+             std::vector<std::pair<std::string, double>>{{"Displacement", 1.0},
+                                                         {"Velocity", t0}})
+          {
+            const std::string path = "Initial conditions/" + field;
+            const auto        parts =
+              Utilities::split_string_list(expression(path), ';');
+            AssertThrow(parts.size() == 3,
+                        ExcMessage(path
+                                   + " must be three muParser expressions "
+                                     "separated by ';' (w; psi_x; psi_y)."));
+            set_entry(out,
+                      path,
+                      "(" + parts[0] + ")*" + exact(time_unit / w_unit) + "; ("
+                        + parts[1] + ")*" + exact(time_unit / psi_unit) + "; ("
+                        + parts[2] + ")*" + exact(time_unit / psi_unit),
+                      path + " = <" + entries.at(path).value + ">");
+          }
+      }
+
+      // The dimensionless twin reads no physical entry.
+      void
+      reset_physical_entries() const
+      {
+        for (const auto &[path, entry] : entries)
+          if (path.rfind("Units/", 0) == 0)
+            set_entry(out, path, entry.default_value, path);
+      }
+    };
   } // namespace
 
 
@@ -306,6 +479,42 @@ namespace liftoff
   }
 
 
+  ParameterHandler &
+  PhysicalUnits::solver_scene(
+    ParameterHandler                              &scene,
+    const std::function<void(ParameterHandler &)> &declare)
+  {
+    dimensionless_text.clear();
+    if (!is_physical())
+      return scene;
+    converted = std::make_shared<ParameterHandler>();
+    declare(*converted);
+    convert(scene, *converted);
+    std::ostringstream text;
+    converted->print_parameters(text, ParameterHandler::ShortPRM);
+    dimensionless_text = text.str();
+    return *converted;
+  }
+
+
+  std::string
+  PhysicalUnits::record_of(const std::string &scene_text) const
+  {
+    if (!is_physical())
+      return scene_text;
+    // Both forms: the scene as written, which reruns it, and what the
+    // solver read, for a dimensionless study of the same slab.
+    std::string record = scene_text
+                         + "\n# The dimensionless scene this SI scene was "
+                           "converted to (doc/model.md, \"Scenes in SI "
+                           "units\"):\n";
+    std::istringstream lines(dimensionless_text);
+    for (std::string line; std::getline(lines, line);)
+      record += "# " + line + '\n';
+    return record;
+  }
+
+
   void
   PhysicalUnits::convert(ParameterHandler &scene,
                          ParameterHandler &dimensionless) const
@@ -313,162 +522,42 @@ namespace liftoff
     std::stringstream text;
     scene.print_parameters(text, ParameterHandler::ShortPRM);
     dimensionless.parse_input(text, "the scene");
-    if (!is_physical())
-      return;
-
-    const auto   entries  = entries_of(scene);
-    const double w_unit   = scale(Quantity::deflection);
-    const double psi_unit = f0 * length / bending_stiffness;
-    const auto   set      = [&](const std::string &path,
-                         const double       value,
-                         const std::string &written) {
-      set_entry(dimensionless, path, exact(value), written);
-    };
-    // An SI expression in x, y (m) and t (s) as one in the solver's x, y
-    // and tau.
-    const auto expression = [&](const std::string &path) {
-      static const std::regex name("[A-Za-z_][A-Za-z0-9_]*");
-      const std::string       si = entries.at(path).value;
-      std::string             result;
-      auto                    from = si.cbegin();
-      for (std::sregex_iterator i(si.begin(), si.end(), name), end; i != end;
-           ++i)
-        {
-          const std::string word = i->str();
-          AssertThrow(word != "tau",
-                      ExcMessage(path + " = <" + si
-                                 + ">: a scene with Units/System = SI writes "
-                                   "time as t in seconds, not tau."));
-          result.append(from, (*i)[0].first);
-          from = (*i)[0].second;
-          if (word == "x" || word == "y")
-            result += "(" + exact(length) + "*" + word + ")";
-          else if (word == "t")
-            result += "(" + exact(t0) + "*tau)";
-          else
-            result += word;
-        }
-      return result.append(from, si.cend());
-    };
-    const auto set_expression = [&](const std::string &path,
-                                    const std::string &prefix = "",
-                                    const std::string &suffix = "") {
-      set_entry(dimensionless,
-                path,
-                prefix + expression(path) + suffix,
-                path + " = <" + entries.at(path).value + ">");
-    };
-    const auto set_positions = [&](const std::string &path,
-                                   const char         separator = ';') {
-      std::string result;
-      for (const std::string &point :
-           Utilities::split_string_list(entries.at(path).value, separator))
-        {
-          const auto xy = Utilities::string_to_double(
-            Utilities::split_string_list(point, ','));
-          AssertThrow(std::abs(xy[0]) <= length / 2 * (1 + 1e-12)
-                        && std::abs(xy[1]) <= width / 2 * (1 + 1e-12),
-                      ExcMessage(path + ": the point " + point
-                                 + " [m] lies outside the plate, [-"
-                                 + format_number(length / 2) + ", "
-                                 + format_number(length / 2) + "] x [-"
-                                 + format_number(width / 2) + ", "
-                                 + format_number(width / 2)
-                                 + "] m with its centre at the origin."));
-          result += (result.empty() ? "" : std::string(1, separator) + " ")
-                    + divided_list(point, length);
-        }
-      set_entry(dimensionless,
-                path,
-                result,
-                path + " = " + entries.at(path).value + " [m]");
-    };
-    const auto value = [&](const std::string &path) {
-      return Utilities::string_to_double(entries.at(path).value);
-    };
+    const SceneConverter convert{entries_of(scene),
+                                 dimensionless,
+                                 length,
+                                 width,
+                                 t0,
+                                 scale(Quantity::deflection),
+                                 f0 * length / bending_stiffness};
 
     // The plate and the bed.
-    set("Plate/Aspect ratio", width / length, "Units/Width / Units/Length");
-    set("Plate/Thickness ratio",
-        thickness / length,
-        "Units/Thickness / Units/Length");
-    set("Foundation/Stiffness",
-        subgrade_modulus * std::pow(length, 4) / bending_stiffness,
-        "Units/Subgrade modulus k L^4 / D");
-    set("Foundation/Damping",
-        dashpot * length * length
-          / std::sqrt(density * thickness * bending_stiffness),
-        "Units/Dashpot coefficient C L^2 / sqrt(rho H D)");
-    set("Foundation/Shear modulus",
-        shear_layer * length * length / bending_stiffness,
-        "Units/Shear layer modulus G_f L^2 / D");
-    set("Loads/Self weight",
-        density * gravity * thickness / scale(Quantity::pressure),
-        "Units/Density * Gravity * Thickness");
-    set_expression("Foundation/Initial gap", "(", ")/" + exact(w_unit));
+    convert.set("Plate/Aspect ratio", width / length, "Units/Width / Length");
+    convert.set("Plate/Thickness ratio",
+                thickness / length,
+                "Units/Thickness / Units/Length");
+    convert.set("Foundation/Stiffness",
+                subgrade_modulus * std::pow(length, 4) / bending_stiffness,
+                "Units/Subgrade modulus k L^4 / D");
+    convert.set("Foundation/Damping",
+                dashpot * length * length
+                  / std::sqrt(density * thickness * bending_stiffness),
+                "Units/Dashpot coefficient C L^2 / sqrt(rho H D)");
+    convert.set("Foundation/Shear modulus",
+                shear_layer * length * length / bending_stiffness,
+                "Units/Shear layer modulus G_f L^2 / D");
+    convert.set("Loads/Self weight",
+                density * gravity * thickness / scale(Quantity::pressure),
+                "Units/Density * Gravity * Thickness");
+    convert.set_expression("Foundation/Initial gap",
+                           "(",
+                           ")/" + exact(convert.w_unit));
 
-    // The loads: their magnitudes, positions and expressions.
-    for (const auto &[path, entry] : entries)
-      {
-        if (path.rfind("Loads/", 0) != 0)
-          continue;
-        const std::string section = path.substr(0, path.rfind('/') + 1);
-        const std::string name    = path.substr(section.size());
-        const double      unit    = section.rfind("Loads/Point load", 0) == 0
-                                      ? scale(Quantity::force)
-                                    : section.rfind("Loads/Pressure", 0) == 0
-                                      ? scale(Quantity::pressure)
-                                      : scale(Quantity::shear_force);
-        if (name == "Magnitude")
-          set(path, value(path) / unit, path + " = " + entry.value);
-        else if (name == "Time history" || name == "Intensity")
-          set_expression(path);
-        else if (name == "Position")
-          set_positions(path, ';');
-        else if (name == "Region" && entry.value != "whole plate")
-          set_entry(dimensionless,
-                    path,
-                    divided_list(entry.value, length),
-                    path + " = " + entry.value + " [m]");
-      }
-
-    // Times and the outputs' points.
-    for (const std::string path :
-         {"Time integration/Time step", "Time integration/End time"})
-      set(path, value(path) / t0, path + " = " + entries.at(path).value);
-    set_entry(dimensionless,
-              "Output/Profile times",
-              divided_list(entries.at("Output/Profile times").value, t0),
-              "Output/Profile times = "
-                + entries.at("Output/Profile times").value);
-    set_positions("Output/Probe points");
-    set_positions("Output/Profile start");
-    set_positions("Output/Profile end");
-
-    // w; psi_x; psi_y, and their velocities.
-    for (const auto &[field, time_unit] :
-         std::vector<std::pair<std::string, double>>{{"Displacement", 1.0},
-                                                     {"Velocity", t0}})
-      {
-        const std::string path = "Initial conditions/" + field;
-        const auto        components =
-          Utilities::split_string_list(expression(path), ';');
-        AssertThrow(components.size() == 3,
-                    ExcMessage(path
-                               + " must be three muParser expressions "
-                                 "separated by ';' (w; psi_x; psi_y)."));
-        set_entry(dimensionless,
-                  path,
-                  "(" + components[0] + ")*" + exact(time_unit / w_unit) + "; ("
-                    + components[1] + ")*" + exact(time_unit / psi_unit) + "; ("
-                    + components[2] + ")*" + exact(time_unit / psi_unit),
-                  path + " = <" + entries.at(path).value + ">");
-      }
-
-    // The dimensionless scene reads no physical entry.
-    for (const auto &[path, entry] : entries)
-      if (path.rfind("Units/", 0) == 0)
-        set_entry(dimensionless, path, entry.default_value, path);
+    convert.loads(scale(Quantity::force),
+                  scale(Quantity::pressure),
+                  scale(Quantity::shear_force));
+    convert.times_and_points();
+    convert.initial_conditions();
+    convert.reset_physical_entries();
   }
 
 
@@ -492,7 +581,9 @@ namespace liftoff
   std::string
   PhysicalUnits::groups_line() const
   {
-    std::string line = "liftoff: SI scene:";
+    if (!is_physical())
+      return "";
+    std::string line = "\nliftoff: SI scene:";
     for (const auto &[name, value] : groups())
       line +=
         (line.back() == ':' ? " " : ", ") + name + " = " + format_number(value);

@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace liftoff
 {
@@ -146,16 +147,22 @@ namespace liftoff
     const auto add = [this](const std::string                 &name,
                             std::function<double(const Row &)> value,
                             const Quantity quantity = Quantity::number) {
-      const double scale = units.scale(quantity);
-      columns.push_back({name + units.unit(quantity),
-                         [value = std::move(value), scale](const Row &r) {
-                           return scale * value(r);
-                         }});
+      add_column(name, std::move(value), quantity);
     };
-    add(
-      units.is_physical() ? "t" : "tau",
-      [](const Row &r) { return r.tau; },
-      Quantity::time);
+    const auto add_member = [&add](const std::string &name,
+                                   double Row::*const member,
+                                   const Quantity     quantity) {
+      add(
+        name, [member](const Row &r) { return r.*member; }, quantity);
+    };
+    const auto add_energy = [&add](const std::string &name,
+                                   double EnergyBalance::*const member) {
+      add(
+        name,
+        [member](const Row &r) { return r.energies.*member; },
+        Quantity::energy);
+    };
+    add_member(units.is_physical() ? "t" : "tau", &Row::tau, Quantity::time);
     const std::vector<std::string> probe_names = probe_column_names();
     for (unsigned int k = 0; k < probe_names.size(); ++k)
       add(
@@ -163,65 +170,46 @@ namespace liftoff
         [k](const Row &r) { return r.probe_w[k]; },
         Quantity::deflection);
     add("contact_fraction", [](const Row &r) { return r.contact_fraction; });
-    add(
-      "max_uplift",
-      [](const Row &r) { return r.max_uplift; },
-      Quantity::deflection);
+    add_member("max_uplift", &Row::max_uplift, Quantity::deflection);
     add("active_set_iterations", [](const Row &r) { return r.iterations; });
     add("active_set_cycle", [](const Row &r) { return r.cycle_length; });
     add("cells", [](const Row &r) { return r.n_cells; });
     add("dofs", [](const Row &r) { return r.n_dofs; });
     if (write_energies)
       {
-        const auto energy = Quantity::energy;
-        add(
-          "kinetic", [](const Row &r) { return r.energies.kinetic; }, energy);
-        add(
-          "strain", [](const Row &r) { return r.energies.strain; }, energy);
-        add(
-          "foundation",
-          [](const Row &r) { return r.energies.foundation; },
-          energy);
-        add(
-          "work", [](const Row &r) { return r.energies.work; }, energy);
+        add_energy("kinetic", &EnergyBalance::kinetic);
+        add_energy("strain", &EnergyBalance::strain);
+        add_energy("foundation", &EnergyBalance::foundation);
+        add_energy("work", &EnergyBalance::work);
         if (write_dissipated)
-          add(
-            "dissipated_energy",
-            [](const Row &r) { return r.energies.dissipated; },
-            energy);
-        add(
-          "balance_error",
-          [](const Row &r) { return r.balance_error; },
-          energy);
+          add_energy("dissipated_energy", &EnergyBalance::dissipated);
+        add_member("balance_error", &Row::balance_error, Quantity::energy);
       }
     if (write_resultant)
-      {
-        const auto length = Quantity::length;
-        add(
-          "resultant",
-          [](const Row &r) { return r.resultant; },
-          Quantity::force);
-        add(
-          "resultant_x", [](const Row &r) { return r.resultant_x; }, length);
-        add(
-          "resultant_y", [](const Row &r) { return r.resultant_y; }, length);
-        add(
-          "contact_area",
-          [](const Row &r) { return r.contact_area; },
-          Quantity::area);
-        add(
-          "max_pressure",
-          [](const Row &r) { return r.max_pressure; },
-          Quantity::pressure);
-        add(
-          "max_pressure_x",
-          [](const Row &r) { return r.max_pressure_x; },
-          length);
-        add(
-          "max_pressure_y",
-          [](const Row &r) { return r.max_pressure_y; },
-          length);
-      }
+      for (const auto &[name, member, quantity] :
+           std::vector<std::tuple<std::string, double Row::*, Quantity>>{
+             {"resultant", &Row::resultant, Quantity::force},
+             {"resultant_x", &Row::resultant_x, Quantity::length},
+             {"resultant_y", &Row::resultant_y, Quantity::length},
+             {"contact_area", &Row::contact_area, Quantity::area},
+             {"max_pressure", &Row::max_pressure, Quantity::pressure},
+             {"max_pressure_x", &Row::max_pressure_x, Quantity::length},
+             {"max_pressure_y", &Row::max_pressure_y, Quantity::length}})
+        add_member(name, member, quantity);
+  }
+
+
+  void
+  TimeHistory::add_column(const std::string                 &name,
+                          std::function<double(const Row &)> value,
+                          const PhysicalUnits::Quantity      quantity)
+  {
+    // In the scene's units; a dimensionless scene's are as they were.
+    const double scale = units.scale(quantity);
+    columns.push_back({name + units.unit(quantity),
+                       [value = std::move(value), scale](const Row &r) {
+                         return scale * value(r);
+                       }});
   }
 
 

@@ -59,7 +59,6 @@ namespace liftoff
     FieldOutput::declare_parameters(prm);
     prm.leave_subsection();
     Checkpoint::declare_parameters(prm);
-    // Last: it watches the entries an SI scene replaces.
     PhysicalUnits::declare_parameters(prm);
   }
 
@@ -68,39 +67,18 @@ namespace liftoff
   Simulator::parse_parameters(ParameterHandler &prm)
   {
     units.parse_parameters(prm);
-    dimensionless_scene.clear();
-    if (!units.is_physical())
-      {
-        parse_dimensionless(prm);
-        return;
-      }
-    // The scene as written stays in `prm` (used_parameters.prm and the
-    // checkpoint record it); the parts read its dimensionless twin.
-    ParameterHandler dimensionless;
-    declare_parameters(dimensionless);
-    units.convert(prm, dimensionless);
-    parse_dimensionless(dimensionless);
-    std::ostringstream text;
-    dimensionless.print_parameters(text, ParameterHandler::ShortPRM);
-    dimensionless_scene = text.str();
-  }
-
-
-  void
-  Simulator::parse_dimensionless(ParameterHandler &prm)
-  {
-    parts.parse_parameters(prm);
-    prm.enter_subsection("Output");
-    output_directory = prm.get("Directory");
-    time_history.parse_parameters(prm);
-    profile_output.parse_parameters(prm);
-    field_output.parse_parameters(prm, parts.plate);
-    prm.leave_subsection();
+    ParameterHandler &scene = units.solver_scene(prm, declare_parameters);
+    parts.parse_parameters(scene);
+    scene.enter_subsection("Output");
+    output_directory = scene.get("Directory");
+    time_history.parse_parameters(scene);
+    profile_output.parse_parameters(scene);
+    field_output.parse_parameters(scene, parts.plate);
+    scene.leave_subsection();
     time_history.show_dissipated_energy(parts.foundation.has_damping());
-    time_history.write_in_units_of(units);
-    profile_output.write_in_units_of(units);
-    progress_line.write_in_units_of(units);
-    checkpoint.parse_parameters(prm);
+    for (Output *output : outputs)
+      output->write_in_units_of(units);
+    checkpoint.parse_parameters(scene);
 
     check_scene();
   }
@@ -176,9 +154,7 @@ namespace liftoff
           << " cells, " << discretization.dof_handler.n_dofs() << " dofs ("
           << discretization.element().name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
-          << std::endl;
-    if (units.is_physical())
-      pcout << units.groups_line() << std::endl;
+          << units.groups_line() << std::endl;
   }
 
 
@@ -211,17 +187,7 @@ namespace liftoff
     scene = Checkpoint::comparable_scene(prm);
     std::ostringstream parameters;
     prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-    if (units.is_physical())
-      {
-        // Both forms: the scene as written, which reruns it, and what the
-        // solver read, for a dimensionless study of the same slab.
-        parameters << "\n# The dimensionless scene this SI scene was "
-                      "converted to (doc/model.md, \"Scenes in SI units\"):\n";
-        std::istringstream lines(dimensionless_scene);
-        for (std::string line; std::getline(lines, line);)
-          parameters << "# " << line << '\n';
-      }
-    used_parameters = parameters.str();
+    used_parameters = units.record_of(parameters.str());
     resume_step     = 0;
     if (start == Start::resume)
       {
@@ -574,13 +540,7 @@ namespace liftoff
     if (resume_step > 0)
       summary.add("resumed after step", double(resume_step));
     summary.add("analysis", parts.is_dynamic() ? "dynamic" : "static");
-    if (units.is_physical())
-      {
-        summary.add("units",
-                    "SI (history.csv: t [s], w [m], energies [J], "
-                    "forces [N], pressures [Pa])");
-        summary.add("scene groups", units.groups());
-      }
+    summary.add_units(units);
     summary.add_mesh(parts.discretization);
     if (parts.mesh_refinement.is_enabled())
       {

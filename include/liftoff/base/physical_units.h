@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,13 +60,20 @@ namespace liftoff
     is_physical() const;
 
     /**
-     * Sets every entry of `dimensionless` (declared as `scene` is) to the
-     * scene's value, converted where the scene is in SI units; its
-     * `Units/System` is then `dimensionless`. Errors name the entry the
-     * user wrote.
+     * The scene the solver's parts read: `scene` itself if it is
+     * dimensionless; else its dimensionless twin, declared by `declare` as
+     * `scene` was, every entry converted (errors name the entry the user
+     * wrote), and kept by this object. `scene` stays as written, for
+     * used_parameters.prm and the checkpoint.
      */
-    void
-    convert(ParameterHandler &scene, ParameterHandler &dimensionless) const;
+    ParameterHandler &
+    solver_scene(ParameterHandler                              &scene,
+                 const std::function<void(ParameterHandler &)> &declare);
+
+    /// used_parameters.prm: `scene_text` (the scene as written), and for
+    /// an SI scene its dimensionless twin after it as comments.
+    std::string
+    record_of(const std::string &scene_text) const;
 
     /// The groups of an SI scene, each with its unit in its name: D, mu,
     /// Delta, Gamma, t0, the bed's radius of relative stiffness
@@ -73,7 +82,8 @@ namespace liftoff
     std::vector<std::pair<std::string, double>>
     groups() const;
 
-    /// groups() in one line, for the start of a run.
+    /// groups() on a line of their own after a new line, for the start of
+    /// a run; empty for a dimensionless scene.
     std::string
     groups_line() const;
 
@@ -99,7 +109,16 @@ namespace liftoff
     // force F0.
     double bending_stiffness = 1, t0 = 1, f0 = 1;
 
+    /// The dimensionless twin of an SI scene and its text.
+    std::shared_ptr<ParameterHandler> converted;
+    std::string                       dimensionless_text;
+
     void
     check_physical_values(ParameterHandler &scene) const;
+
+    /// Sets every entry of `dimensionless` (declared as `scene` is) to the
+    /// SI scene's value, converted; its Units are left at their defaults.
+    void
+    convert(ParameterHandler &scene, ParameterHandler &dimensionless) const;
   };
 } // namespace liftoff

@@ -33,7 +33,7 @@ namespace liftoff
 
     /// Write profiles.csv in the scene's units (TimeHistory's rule).
     void
-    write_in_units_of(const PhysicalUnits &scene_units);
+    write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
     check_against(const Discretization &discretization) const;

@@ -27,7 +27,7 @@ namespace liftoff
 
     /// Show the time in the scene's units (t in s for an SI scene).
     void
-    write_in_units_of(const PhysicalUnits &scene_units);
+    write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
     setup(const Discretization &discretization,

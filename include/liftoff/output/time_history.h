@@ -123,7 +123,7 @@ namespace liftoff
     /// their unit ("t [s]", "w(2.5;0) [m]") and its values are in SI; a
     /// dimensionless scene's columns are as they were.
     void
-    write_in_units_of(const PhysicalUnits &scene_units);
+    write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
     setup(const Discretization &discretization,
@@ -170,6 +170,12 @@ namespace liftoff
     std::vector<Column> columns;
     void
     make_columns();
+    /// Appends the column `name` of `value`, a `quantity` of the solver,
+    /// in the scene's units.
+    void
+    add_column(const std::string                 &name,
+               std::function<double(const Row &)> value,
+               const PhysicalUnits::Quantity      quantity);
     std::vector<std::string>
     column_names() const;
 

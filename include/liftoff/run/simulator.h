@@ -134,12 +134,9 @@ namespace liftoff
     /// The scene as Checkpoint compares it, and the step resumed from.
     std::string  scene;
     unsigned int resume_step = 0;
-    /// The parameters as used_parameters.prm records them; for an SI
-    /// scene followed by the dimensionless scene the solver ran, as
-    /// comments.
+    /// The parameters as used_parameters.prm records them
+    /// (PhysicalUnits::record_of()).
     std::string used_parameters;
-    /// The dimensionless scene of an SI scene (ShortPRM), else empty.
-    std::string dimensionless_scene;
     /// The output directory, locked while run() runs.
     std::unique_ptr<OutputDirectory> output_folder;
     /// False while a resumed run has not yet replaced the files of the run
@@ -156,10 +153,6 @@ namespace liftoff
     /// checkpoint of that step keeps this, and a resume that goes further
     /// adapts before its first step, as a run without the stop did.
     bool adaptation_pending = false;
-
-    /// Every part's and output's parameters, from a dimensionless scene.
-    void
-    parse_dimensionless(ParameterHandler &prm);
 
     /// The checks across parts and outputs that need no mesh (and a
     /// warning about profile times a run does not reach).
