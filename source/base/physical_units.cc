@@ -591,65 +591,46 @@ namespace liftoff
   }
 
 
-  double
-  PhysicalUnits::scale(const Quantity quantity) const
+  std::pair<double, std::string>
+  PhysicalUnits::si_measure(const Quantity quantity) const
   {
-    if (!is_physical())
-      return 1;
     const double w = f0 * length * length / bending_stiffness;
     switch (quantity)
       {
-      case Quantity::number:
-        return 1;
       case Quantity::length:
-        return length;
+        return {length, " [m]"};
       case Quantity::deflection:
-        return w;
+        return {w, " [m]"};
       case Quantity::time:
-        return t0;
+        return {t0, " [s]"};
       case Quantity::force:
-      case Quantity::moment:
-        return f0;
+        return {f0, " [N]"};
       case Quantity::pressure:
-        return f0 / (length * length);
+        return {f0 / (length * length), " [Pa]"};
       case Quantity::area:
-        return length * length;
+        return {length * length, " [m^2]"};
       case Quantity::energy:
-        return f0 * w;
+        return {f0 * w, " [J]"};
+      case Quantity::moment:
+        return {f0, " [N m/m]"};
       case Quantity::shear_force:
-        return f0 / length;
+        return {f0 / length, " [N/m]"};
+      default:
+        return {1, ""};
       }
-    return 1;
+  }
+
+
+  double
+  PhysicalUnits::scale(const Quantity quantity) const
+  {
+    return is_physical() ? si_measure(quantity).first : 1;
   }
 
 
   std::string
   PhysicalUnits::unit(const Quantity quantity) const
   {
-    if (!is_physical())
-      return "";
-    switch (quantity)
-      {
-      case Quantity::number:
-        return "";
-      case Quantity::length:
-      case Quantity::deflection:
-        return " [m]";
-      case Quantity::time:
-        return " [s]";
-      case Quantity::force:
-        return " [N]";
-      case Quantity::pressure:
-        return " [Pa]";
-      case Quantity::area:
-        return " [m^2]";
-      case Quantity::energy:
-        return " [J]";
-      case Quantity::moment:
-        return " [N m/m]";
-      case Quantity::shear_force:
-        return " [N/m]";
-      }
-    return "";
+    return is_physical() ? si_measure(quantity).second : "";
   }
 } // namespace liftoff

@@ -116,6 +116,10 @@ namespace liftoff
     void
     check_physical_values(ParameterHandler &scene) const;
 
+    /// One unit of the solver's `quantity` in SI, and its unit's name.
+    std::pair<double, std::string>
+    si_measure(const Quantity quantity) const;
+
     /// Sets every entry of `dimensionless` (declared as `scene` is) to the
     /// SI scene's value, converted; its Units are left at their defaults.
     void
