@@ -490,9 +490,19 @@ namespace liftoff
     converted = std::make_shared<ParameterHandler>();
     declare(*converted);
     convert(scene, *converted);
-    std::ostringstream text;
+    // Without its Units subsection (all defaults), so that the twin runs
+    // as it stands: setting a Units entry, even to its default, makes a
+    // dimensionless scene a mix.
+    std::stringstream text;
     converted->print_parameters(text, ParameterHandler::ShortPRM);
-    dimensionless_text = text.str();
+    bool in_units = false;
+    for (std::string line; std::getline(text, line);)
+      {
+        const bool was_in_units = in_units;
+        in_units = was_in_units ? line != "end" : line == "subsection Units";
+        if (!in_units && !was_in_units)
+          dimensionless_text += line + '\n';
+      }
     return *converted;
   }
 
