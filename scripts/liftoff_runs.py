@@ -107,7 +107,10 @@ def read_table(path):
     study tool reads: parsed in C, a hundred histories in well under a
     second)."""
     import pandas
-    return pandas.read_csv(path, dtype=float)
+    table = pandas.read_csv(path, dtype=float)
+    # A run of a scene in SI units has its time as "t [s]": the study's time
+    # axis is then in seconds, the unit of that scene's Time step.
+    return table.rename(columns={"t [s]": "tau"})
 
 
 def used_parameters(directory):

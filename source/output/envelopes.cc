@@ -25,30 +25,36 @@ namespace liftoff
       const char *name;
       double      sign;
       double (*value)(const ResultantSweep::Values &);
-      const char *unit;
+      const char             *unit;
+      PhysicalUnits::Quantity quantity;
     };
 
     const std::array<Kind, 5> kinds = {
       {{"w_max",
         1,
         [](const ResultantSweep::Values &v) { return v.w; },
-        "F0*L^2/D"},
+        "F0*L^2/D",
+        PhysicalUnits::Quantity::deflection},
        {"w_min",
         -1,
         [](const ResultantSweep::Values &v) { return v.w; },
-        "F0*L^2/D"},
+        "F0*L^2/D",
+        PhysicalUnits::Quantity::deflection},
        {"foundation_pressure_max",
         1,
         [](const ResultantSweep::Values &v) { return v.pressure; },
-        "F0/L^2"},
+        "F0/L^2",
+        PhysicalUnits::Quantity::pressure},
        {"M_1_max",
         1,
         [](const ResultantSweep::Values &v) { return v.m_1; },
-        "F0"},
+        "F0",
+        PhysicalUnits::Quantity::moment},
        {"M_2_min",
         -1,
         [](const ResultantSweep::Values &v) { return v.m_2; },
-        "F0"}}};
+        "F0",
+        PhysicalUnits::Quantity::moment}}};
   } // namespace
 
 
@@ -75,6 +81,13 @@ namespace liftoff
     envelopes.clear();
     for (const Kind &kind : kinds)
       envelopes.push_back({kind.name, {}, {}});
+  }
+
+
+  void
+  Envelopes::write_in_units_of(const PhysicalUnits &scene_units)
+  {
+    units = scene_units;
   }
 
 
@@ -252,11 +265,17 @@ namespace liftoff
     const std::vector<LocatedMaximum> all = extremes();
     for (unsigned int e = 0; e < kinds.size(); ++e)
       {
-        const std::string name = kinds[e].name;
-        section.emplace_back(name, all[e].value);
-        section.emplace_back(name + " x", all[e].point[0]);
-        section.emplace_back(name + " y", all[e].point[1]);
-        section.emplace_back(name + " time", all[e].time);
+        using Quantity           = PhysicalUnits::Quantity;
+        const std::string name   = kinds[e].name;
+        const double      length = units.scale(Quantity::length);
+        section.emplace_back(name + units.unit(kinds[e].quantity),
+                             units.scale(kinds[e].quantity) * all[e].value);
+        section.emplace_back(name + " x" + units.unit(Quantity::length),
+                             length * all[e].point[0]);
+        section.emplace_back(name + " y" + units.unit(Quantity::length),
+                             length * all[e].point[1]);
+        section.emplace_back(name + " time" + units.unit(Quantity::time),
+                             units.scale(Quantity::time) * all[e].time);
       }
     summary.add("envelope extremes (points of the meshed part)", section);
   }

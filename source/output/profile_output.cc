@@ -63,6 +63,13 @@ namespace liftoff
   }
 
 
+  void
+  ProfileOutput::write_in_units_of(const PhysicalUnits &scene_units)
+  {
+    units = scene_units;
+  }
+
+
   Point<2>
   ProfileOutput::point(const unsigned int i) const
   {
@@ -105,12 +112,15 @@ namespace liftoff
     const auto late = times_not_reached(end_time, dt);
     if (late.empty() || Utilities::MPI::this_mpi_process(comm) != 0)
       return;
+    // In the unit the scene gives the times in.
+    const double      t0   = units.scale(PhysicalUnits::Quantity::time);
+    const std::string unit = units.is_physical() ? " s" : "";
     std::cerr << "liftoff: warning: Output/Profile times";
     for (const double tau : late)
-      std::cerr << ' ' << format_number(tau);
-    std::cerr << " lie beyond Time integration/End time = "
-              << format_number(end_time) << "; no profile is written for them."
-              << std::endl;
+      std::cerr << ' ' << format_number(t0 * tau);
+    std::cerr << unit << " lie beyond Time integration/End time = "
+              << format_number(t0 * end_time) << unit
+              << "; no profile is written for them." << std::endl;
   }
 
 
@@ -126,7 +136,13 @@ namespace liftoff
     file.open(directory.empty() ? "" : directory + "/profiles.csv",
               rewrite_interval,
               disc.mpi_communicator);
-    file.stream() << "tau,s,x,y,w\n";
+    using Quantity = PhysicalUnits::Quantity;
+    file.stream() << (units.is_physical() ? "t" : "tau")
+                  << units.unit(Quantity::time) << ",s"
+                  << units.unit(Quantity::length) << ",x"
+                  << units.unit(Quantity::length) << ",y"
+                  << units.unit(Quantity::length) << ",w"
+                  << units.unit(Quantity::deflection) << '\n';
   }
 
 
@@ -159,13 +175,17 @@ namespace liftoff
     for (const auto &p : points)
       w.push_back(p.local_value(u));
     Utilities::MPI::sum(w, discretization->mpi_communicator, w);
-    std::ostream &out = file.stream();
+    using Quantity       = PhysicalUnits::Quantity;
+    const double  length = units.scale(Quantity::length);
+    std::ostream &out    = file.stream();
     out << std::setprecision(12);
     for (unsigned int i = 0; i < n_points; ++i)
       {
         const Point<2> p = point(i);
-        out << tau << ',' << p.distance(start) << ',' << p[0] << ',' << p[1]
-            << ',' << w[i] << '\n';
+        out << units.scale(Quantity::time) * tau << ','
+            << length * p.distance(start) << ',' << length * p[0] << ','
+            << length * p[1] << ',' << units.scale(Quantity::deflection) * w[i]
+            << '\n';
       }
     file.flush();
   }

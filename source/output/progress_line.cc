@@ -57,6 +57,13 @@ namespace liftoff
 
 
   void
+  ProgressLine::write_in_units_of(const PhysicalUnits &scene_units)
+  {
+    units = scene_units;
+  }
+
+
+  void
   ProgressLine::mesh_changed(const Discretization &)
   {}
 
@@ -82,8 +89,10 @@ namespace liftoff
     const unsigned int left = step.n_steps - step.state.step;
 
     std::ostringstream line;
-    line << "step " << step.state.step << "/" << step.n_steps << "  tau "
-         << std::setprecision(6) << step.state.tau << "  iterations "
+    line << "step " << step.state.step << "/" << step.n_steps
+         << (units.is_physical() ? "  t " : "  tau ") << std::setprecision(6)
+         << units.scale(PhysicalUnits::Quantity::time) * step.state.tau
+         << (units.is_physical() ? " s" : "") << "  iterations "
          << step.iteration.iterations << "  contact " << std::fixed
          << std::setprecision(3) << step.contact_fraction << "  elapsed "
          << duration(elapsed);

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <liftoff/base/output_files.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/output/run_summary.h>
@@ -115,6 +116,18 @@ namespace liftoff
       write_file_atomically(directory + "/summary.txt",
                             [&](std::ostream &out) { out << text(); });
     });
+  }
+
+
+  void
+  RunSummary::add_units(const PhysicalUnits &units)
+  {
+    if (!units.is_physical())
+      return;
+    add("units",
+        "SI (history.csv and profiles.csv: t [s], w [m], energies [J], "
+        "forces [N], pressures [Pa])");
+    add("scene groups", units.groups());
   }
 
 

@@ -48,6 +48,19 @@ namespace liftoff
     }
 
 
+    /// The kind of a stress resultant's unit.
+    PhysicalUnits::Quantity
+    quantity_of(const std::string &field)
+    {
+      using Quantity = PhysicalUnits::Quantity;
+      if (field == "M_1_angle")
+        return Quantity::number;
+      return field[0] == 'M'   ? Quantity::moment
+             : field[0] == 'Q' ? Quantity::shear_force
+                               : Quantity::pressure;
+    }
+
+
     /// "M_xx(0.25; 0), Q_x(0.5; 0)" as the quantities and points it names.
     std::vector<std::pair<std::string, Point<2>>>
     parse_quantity_list(const std::string &text)
@@ -199,18 +212,21 @@ namespace liftoff
 
   std::vector<std::string>
   TimeHistory::probe_column_names(const std::vector<std::string> &quantities,
-                                  const std::vector<Point<2>>    &points)
+                                  const std::vector<Point<2>>    &points) const
   {
     // Six digits name most points briefly; points that six digits do not
     // tell apart (0.333333 and 0.3333334) get as many as they need.
     for (int digits = 6;; ++digits)
       {
         std::vector<std::string> names;
+        // In the scene's units: metres in an SI scene.
+        const double length = units.scale(PhysicalUnits::Quantity::length);
         for (unsigned int k = 0; k < points.size(); ++k)
           {
             std::ostringstream name;
             name << std::setprecision(digits) << quantities[k] << "("
-                 << points[k][0] << ";" << points[k][1] << ")";
+                 << length * points[k][0] << ";" << length * points[k][1]
+                 << ")";
             names.push_back(name.str());
           }
         std::vector<std::string> sorted = names;
@@ -240,44 +256,62 @@ namespace liftoff
   void
   TimeHistory::make_columns()
   {
+    using Quantity = PhysicalUnits::Quantity;
     columns.clear();
     const auto add = [this](const std::string                 &name,
-                            std::function<double(const Row &)> value) {
-      columns.push_back({name, std::move(value)});
+                            std::function<double(const Row &)> value,
+                            const Quantity quantity = Quantity::number) {
+      add_column(name, std::move(value), quantity);
     };
-    add("tau", [](const Row &r) { return r.tau; });
+    const auto add_member = [&add](const std::string &name,
+                                   double Row::*const member,
+                                   const Quantity     quantity) {
+      add(
+        name, [member](const Row &r) { return r.*member; }, quantity);
+    };
+    const auto add_energy = [&add](const std::string &name,
+                                   double EnergyBalance::*const member) {
+      add(
+        name,
+        [member](const Row &r) { return r.energies.*member; },
+        Quantity::energy);
+    };
+    add_member(units.is_physical() ? "t" : "tau", &Row::tau, Quantity::time);
     const std::vector<std::string> probe_names =
       probe_column_names(std::vector<std::string>(probe_points.size(), "w"),
                          probe_points);
     for (unsigned int k = 0; k < probe_names.size(); ++k)
-      add(probe_names[k], [k](const Row &r) { return r.probe_w[k]; });
+      add(
+        probe_names[k],
+        [k](const Row &r) { return r.probe_w[k]; },
+        Quantity::deflection);
     add("contact_fraction", [](const Row &r) { return r.contact_fraction; });
-    add("max_uplift", [](const Row &r) { return r.max_uplift; });
+    add_member("max_uplift", &Row::max_uplift, Quantity::deflection);
     add("active_set_iterations", [](const Row &r) { return r.iterations; });
     add("active_set_cycle", [](const Row &r) { return r.cycle_length; });
     add("cells", [](const Row &r) { return r.n_cells; });
     add("dofs", [](const Row &r) { return r.n_dofs; });
     if (write_energies)
       {
-        add("kinetic", [](const Row &r) { return r.energies.kinetic; });
-        add("strain", [](const Row &r) { return r.energies.strain; });
-        add("foundation", [](const Row &r) { return r.energies.foundation; });
-        add("work", [](const Row &r) { return r.energies.work; });
+        add_energy("kinetic", &EnergyBalance::kinetic);
+        add_energy("strain", &EnergyBalance::strain);
+        add_energy("foundation", &EnergyBalance::foundation);
+        add_energy("work", &EnergyBalance::work);
         if (write_dissipated)
-          add("dissipated_energy",
-              [](const Row &r) { return r.energies.dissipated; });
-        add("balance_error", [](const Row &r) { return r.balance_error; });
+          add_energy("dissipated_energy", &EnergyBalance::dissipated);
+        add_member("balance_error", &Row::balance_error, Quantity::energy);
       }
     if (write_resultant)
-      {
-        add("resultant", [](const Row &r) { return r.resultant; });
-        add("resultant_x", [](const Row &r) { return r.resultant_x; });
-        add("resultant_y", [](const Row &r) { return r.resultant_y; });
-        add("contact_area", [](const Row &r) { return r.contact_area; });
-        add("max_pressure", [](const Row &r) { return r.max_pressure; });
-        add("max_pressure_x", [](const Row &r) { return r.max_pressure_x; });
-        add("max_pressure_y", [](const Row &r) { return r.max_pressure_y; });
-      }
+      for (const auto &[name, member, quantity] :
+           std::vector<std::tuple<std::string, double Row::*, Quantity>>{
+             {"resultant", &Row::resultant, Quantity::force},
+             {"resultant_x", &Row::resultant_x, Quantity::length},
+             {"resultant_y", &Row::resultant_y, Quantity::length},
+             {"contact_area", &Row::contact_area, Quantity::area},
+             {"max_pressure", &Row::max_pressure, Quantity::pressure},
+             {"max_pressure_x", &Row::max_pressure_x, Quantity::length},
+             {"max_pressure_y", &Row::max_pressure_y, Quantity::length}})
+        add_member(name, member, quantity);
     std::vector<std::string> quantities;
     std::vector<Point<2>>    points;
     for (const auto &probe : quantity_probes)
@@ -288,20 +322,45 @@ namespace liftoff
     const std::vector<std::string> quantity_names =
       probe_column_names(quantities, points);
     for (unsigned int k = 0; k < quantity_names.size(); ++k)
-      add(quantity_names[k],
-          [k](const Row &r) { return r.probe_quantities[k]; });
+      add(
+        quantity_names[k],
+        [k](const Row &r) { return r.probe_quantities[k]; },
+        quantity_of(quantity_probes[k].quantity));
     if (write_moment_extremes)
-      {
-        add("max_M_1", [](const Row &r) { return r.max_m_1; });
-        add("max_M_1_x", [](const Row &r) { return r.max_m_1_x; });
-        add("max_M_1_y", [](const Row &r) { return r.max_m_1_y; });
-        add("min_M_2", [](const Row &r) { return r.min_m_2; });
-        add("min_M_2_x", [](const Row &r) { return r.min_m_2_x; });
-        add("min_M_2_y", [](const Row &r) { return r.min_m_2_y; });
-        add("max_Q", [](const Row &r) { return r.max_q; });
-        add("max_Q_x", [](const Row &r) { return r.max_q_x; });
-        add("max_Q_y", [](const Row &r) { return r.max_q_y; });
-      }
+      for (const auto &[name, member, quantity] :
+           std::vector<std::tuple<std::string, double Row::*, Quantity>>{
+             {"max_M_1", &Row::max_m_1, Quantity::moment},
+             {"max_M_1_x", &Row::max_m_1_x, Quantity::length},
+             {"max_M_1_y", &Row::max_m_1_y, Quantity::length},
+             {"min_M_2", &Row::min_m_2, Quantity::moment},
+             {"min_M_2_x", &Row::min_m_2_x, Quantity::length},
+             {"min_M_2_y", &Row::min_m_2_y, Quantity::length},
+             {"max_Q", &Row::max_q, Quantity::shear_force},
+             {"max_Q_x", &Row::max_q_x, Quantity::length},
+             {"max_Q_y", &Row::max_q_y, Quantity::length}})
+        add_member(name, member, quantity);
+  }
+
+
+  void
+  TimeHistory::add_column(const std::string                 &name,
+                          std::function<double(const Row &)> value,
+                          const PhysicalUnits::Quantity      quantity)
+  {
+    // In the scene's units; a dimensionless scene's are as they were.
+    const double scale = units.scale(quantity);
+    columns.push_back({name + units.unit(quantity),
+                       [value = std::move(value), scale](const Row &r) {
+                         return scale * value(r);
+                       }});
+  }
+
+
+  void
+  TimeHistory::write_in_units_of(const PhysicalUnits &scene_units)
+  {
+    units = scene_units;
+    make_columns();
   }
 
 

@@ -61,22 +61,27 @@ namespace liftoff
     Envelopes::declare_parameters(prm);
     prm.leave_subsection();
     Checkpoint::declare_parameters(prm);
+    PhysicalUnits::declare_parameters(prm);
   }
 
 
   void
   Simulator::parse_parameters(ParameterHandler &prm)
   {
-    parts.parse_parameters(prm);
-    prm.enter_subsection("Output");
-    output_directory = prm.get("Directory");
-    time_history.parse_parameters(prm, parts.plate);
-    profile_output.parse_parameters(prm);
-    field_output.parse_parameters(prm, parts.plate);
-    envelopes.parse_parameters(prm);
-    prm.leave_subsection();
+    units.parse_parameters(prm);
+    ParameterHandler &scene = units.solver_scene(prm, declare_parameters);
+    parts.parse_parameters(scene);
+    scene.enter_subsection("Output");
+    output_directory = scene.get("Directory");
+    time_history.parse_parameters(scene, parts.plate);
+    profile_output.parse_parameters(scene);
+    field_output.parse_parameters(scene, parts.plate);
+    envelopes.parse_parameters(scene);
+    scene.leave_subsection();
     time_history.show_dissipated_energy(parts.foundation.has_damping());
-    checkpoint.parse_parameters(prm);
+    for (Output *output : outputs)
+      output->write_in_units_of(units);
+    checkpoint.parse_parameters(scene);
 
     check_scene();
   }
@@ -157,7 +162,7 @@ namespace liftoff
           << " cells, " << discretization.dof_handler.n_dofs() << " dofs ("
           << discretization.element().name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator) << " rank(s)"
-          << std::endl;
+          << units.groups_line() << std::endl;
   }
 
 
@@ -190,7 +195,7 @@ namespace liftoff
     scene = Checkpoint::comparable_scene(prm);
     std::ostringstream parameters;
     prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-    used_parameters = parameters.str();
+    used_parameters = units.record_of(parameters.str());
     resume_step     = 0;
     if (start == Start::resume)
       {
@@ -548,6 +553,7 @@ namespace liftoff
     if (resume_step > 0)
       summary.add("resumed after step", double(resume_step));
     summary.add("analysis", parts.is_dynamic() ? "dynamic" : "static");
+    summary.add_units(units);
     summary.add_mesh(parts.discretization);
     if (parts.mesh_refinement.is_enabled())
       {

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Every scene in prm/ must run as it stands: each is fed to `liftoff -`
-# with End time = 5 of its own time steps and no VTU files, and must exit
+# with End time = 5 of its own time steps (or the number its line
+# "# prm_scenes: steps = N" gives, for a scene that lifts off later) and no
+# VTU files, and must exit
 # with 0, say completed, write a history with one complete row per step
 # (tau = 0 and 5 steps), only finite numbers, tau advancing by the scene's
 # step, and a contact fraction in [0, 1] that is below 1 somewhere (every
@@ -16,7 +18,9 @@ for scene in "$scenes"/*.prm; do
   n_scenes=$((n_scenes + 1))
   dt=$(sed -n 's/^ *set Time step *= *\([^ #]*\).*/\1/p' "$scene" | tail -1)
   [ -n "$dt" ]; check $? "$name: sets its time step ($dt)"
-  end=$(awk -v dt="$dt" 'BEGIN {printf "%.17g", 5 * dt}')
+  steps=$(sed -n 's/^# prm_scenes: steps = \([0-9]*\).*/\1/p' "$scene")
+  steps=${steps:-5}
+  end=$(awk -v dt="$dt" -v n="$steps" 'BEGIN {printf "%.17g", n * dt}')
   { cat "$scene"
     printf '\nsubsection Time integration\n  set End time = %s\nend\n' "$end"
     printf 'subsection Output\n  set Directory = %s\n  set VTU interval = 0\nend\n' "$name"
@@ -24,7 +28,7 @@ for scene in "$scenes"/*.prm; do
   [ $? -eq 0 ]; check $? "$name: exits with 0"
   grep -q '^status: completed' "$name/summary.txt" 2>/dev/null; check $? "$name: summary says completed"
   rows=$(wc -l < "$name/history.csv" 2>/dev/null || echo 0)
-  [ "$rows" -eq 7 ]; check $? "$name: history.csv has a header and 6 rows: $rows lines"
+  [ "$rows" -eq $((steps + 2)) ]; check $? "$name: history.csv has a header and $((steps + 1)) rows: $rows lines"
   history_is_complete "$name"; check $? "$name: every history row has $n_columns columns"
   awk -F, -v dt="$dt" '
     NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "contact_fraction") c = i; next }

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/located_maximum.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/output/output.h>
 
 #include <string>
@@ -39,6 +40,11 @@ namespace liftoff
 
     bool
     is_enabled() const;
+
+    /// The summary's extremes in the scene's units; envelope.pvtu stays in
+    /// the solver's, as the field files do.
+    void
+    write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
     setup(const Discretization &discretization,
@@ -89,6 +95,7 @@ namespace liftoff
     std::vector<Envelope> envelopes;
     std::vector<Point<2>> points;
     unsigned int          n_steps_seen = 0;
+    PhysicalUnits         units;
 
     void
            write() const;

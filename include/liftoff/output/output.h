@@ -10,6 +10,7 @@ namespace liftoff
 
   // StepData holds references only: the outputs include what they use.
   class Discretization;
+  class PhysicalUnits;
   class ResultantSweep;
   class TensionlessWinklerFoundation;
   struct PlateState;
@@ -47,6 +48,13 @@ namespace liftoff
   {
   public:
     virtual ~Output() = default;
+
+    /// Write in the scene's units (an SI scene's outputs in SI, with the
+    /// units in the headers); an output that does not convert keeps the
+    /// solver's dimensionless values.
+    virtual void
+    write_in_units_of(const PhysicalUnits &)
+    {}
 
     /// Before the first step: the mesh, and the folder to write to (empty:
     /// keep results in memory only).

@@ -4,6 +4,7 @@
 
 #include <liftoff/base/archive_types.h>
 #include <liftoff/base/output_files.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/point_functional.h>
 #include <liftoff/output/output.h>
@@ -29,6 +30,10 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+
+    /// Write profiles.csv in the scene's units (TimeHistory's rule).
+    void
+    write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
     check_against(const Discretization &discretization) const;
@@ -71,6 +76,7 @@ namespace liftoff
     Point<2>                     start, end;
     unsigned int                 n_points = 0;
     std::vector<double>          times;
+    PhysicalUnits                units;
     std::vector<bool>            is_written;
     std::vector<PointFunctional> points;
     const Discretization        *discretization = nullptr;

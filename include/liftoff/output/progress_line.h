@@ -2,6 +2,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <liftoff/base/physical_units.h>
 #include <liftoff/output/output.h>
 
 #include <chrono>
@@ -24,6 +25,10 @@ namespace liftoff
   public:
     ProgressLine(const MPI_Comm comm, std::ostream &out);
 
+    /// Show the time in the scene's units (t in s for an SI scene).
+    void
+    write_in_units_of(const PhysicalUnits &scene_units) override;
+
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;
@@ -43,6 +48,7 @@ namespace liftoff
   private:
     using Clock = std::chrono::steady_clock;
 
+    PhysicalUnits     units;
     std::ostream     &out;
     const bool        is_root;
     const bool        is_terminal;

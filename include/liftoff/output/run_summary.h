@@ -10,6 +10,7 @@
 namespace liftoff
 {
   class Discretization;
+  class PhysicalUnits;
   class LinearSolver;
   class SectionTimer;
 
@@ -27,6 +28,10 @@ namespace liftoff
 
     void
     add(const std::string &key, const Value &value);
+    /// An SI scene's unit system and groups (nothing for a dimensionless
+    /// one).
+    void
+    add_units(const PhysicalUnits &units);
     /// The entries every run reports the same way, in the summary's order:
     /// the mesh (ranks, cells, element, dofs, collective), ...
     void

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/output_files.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/point_functional.h>
@@ -143,6 +144,12 @@ namespace liftoff
     void
     show_dissipated_energy(const bool show);
 
+    /// Write the columns in the scene's units: an SI scene's names carry
+    /// their unit ("t [s]", "w(2.5;0) [m]") and its values are in SI; a
+    /// dimensionless scene's columns are as they were.
+    void
+    write_in_units_of(const PhysicalUnits &scene_units) override;
+
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;
@@ -174,9 +181,9 @@ namespace liftoff
     /// The history's column names of the probes, "w(x;y)", with enough
     /// digits to tell every two points apart.
     /// Names "quantity(x;y)" with as many digits as tell the points apart.
-    static std::vector<std::string>
+    std::vector<std::string>
     probe_column_names(const std::vector<std::string> &quantities,
-                       const std::vector<Point<2>>    &points);
+                       const std::vector<Point<2>>    &points) const;
 
     /// A probe of a stress resultant: its field, its point and, on the
     /// rank that holds the point, its cell and unit point.
@@ -206,9 +213,16 @@ namespace liftoff
     std::vector<Column> columns;
     void
     make_columns();
+    /// Appends the column `name` of `value`, a `quantity` of the solver,
+    /// in the scene's units.
+    void
+    add_column(const std::string                 &name,
+               std::function<double(const Row &)> value,
+               const PhysicalUnits::Quantity      quantity);
     std::vector<std::string>
     column_names() const;
 
+    PhysicalUnits                units;
     std::vector<Point<2>>        probe_points;
     bool                         write_energies        = true;
     bool                         write_dissipated      = false;

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 
 #include <liftoff/output/envelopes.h>
@@ -124,6 +125,9 @@ namespace liftoff
     SectionTimer timer;
     Timer        wall_clock;
 
+    /// The scene's unit system; converts an SI scene before the parts
+    /// read it, and gives the outputs their units.
+    PhysicalUnits units;
     SceneParts    parts;
     TimeHistory   time_history;
     ProfileOutput profile_output;
@@ -139,7 +143,8 @@ namespace liftoff
     /// The scene as Checkpoint compares it, and the step resumed from.
     std::string  scene;
     unsigned int resume_step = 0;
-    /// The parameters as used_parameters.prm records them.
+    /// The parameters as used_parameters.prm records them
+    /// (PhysicalUnits::record_of()).
     std::string used_parameters;
     /// The output directory, locked while run() runs.
     std::unique_ptr<OutputDirectory> output_folder;

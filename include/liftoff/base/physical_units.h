@@ -1,0 +1,128 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The unit system a scene is written in (`Units/System`). The solver
+   * runs the dimensionless groups of doc/model.md; a scene in SI units
+   * (`Units/System = SI`) gives the physical plate and bed in `Units` and
+   * every other dimensional entry (loads, positions, times, expressions) in
+   * SI, and convert() writes the dimensionless scene the parts parse. The
+   * force scale of that scene is F0 = D / L, so its deflection is w / L.
+   * The outputs ask scale() and unit() for each quantity, so a run reports
+   * in the units its scene was written in.
+   */
+  class PhysicalUnits
+  {
+  public:
+    enum class System
+    {
+      dimensionless,
+      si
+    };
+
+    /// What an output value is, for its scale and unit.
+    enum class Quantity
+    {
+      number,      ///< dimensionless in both systems (nu, fractions)
+      length,      ///< positions: L
+      deflection,  ///< w, gaps: F0 L^2 / D
+      time,        ///< t0
+      force,       ///< F0
+      pressure,    ///< F0 / L^2
+      area,        ///< L^2
+      energy,      ///< F0^2 L^2 / D
+      moment,      ///< a moment per unit length, F0
+      shear_force, ///< a force per unit length, F0 / L
+    };
+
+    /// The subsection `Units`; declared after the groups an SI scene
+    /// replaces (Plate, Foundation, Loads), which it watches for being set.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads `Units`; refuses a scene that mixes physical entries with
+    /// the dimensionless ones they replace, naming both.
+    void
+    parse_parameters(ParameterHandler &scene);
+
+    bool
+    is_physical() const;
+
+    /**
+     * The scene the solver's parts read: `scene` itself if it is
+     * dimensionless; else its dimensionless twin, declared by `declare` as
+     * `scene` was, every entry converted (errors name the entry the user
+     * wrote), and kept by this object. `scene` stays as written, for
+     * used_parameters.prm and the checkpoint.
+     */
+    ParameterHandler &
+    solver_scene(ParameterHandler                              &scene,
+                 const std::function<void(ParameterHandler &)> &declare);
+
+    /// used_parameters.prm: `scene_text` (the scene as written), and for
+    /// an SI scene its dimensionless twin after it as comments.
+    std::string
+    record_of(const std::string &scene_text) const;
+
+    /// The groups of an SI scene, each with its unit in its name: D, mu,
+    /// Delta, Gamma, t0, the bed's radius of relative stiffness
+    /// l = (D/k)^(1/4) (with a bed) and F0 (the start-up line and the
+    /// summary).
+    std::vector<std::pair<std::string, double>>
+    groups() const;
+
+    /// groups() on a line of their own after a new line, for the start of
+    /// a run; empty for a dimensionless scene.
+    std::string
+    groups_line() const;
+
+    /// The value in the scene's units of one unit of the solver's
+    /// `quantity` (1 in a dimensionless scene).
+    double
+    scale(const Quantity quantity) const;
+
+    /// " [m]" and so on in an SI scene, "" in a dimensionless one (whose
+    /// headers stay as they are).
+    std::string
+    unit(const Quantity quantity) const;
+
+  private:
+    System system = System::dimensionless;
+
+    // The SI scene's plate and bed, as written.
+    double length = 0, width = 0, thickness = 0, youngs_modulus = 0,
+           density = 0, gravity = 0, subgrade_modulus = 0, dashpot = 0,
+           shear_layer = 0, poisson_ratio = 0;
+
+    // The scales of the dimensionless scene: bending stiffness D, time t0,
+    // force F0.
+    double bending_stiffness = 1, t0 = 1, f0 = 1;
+
+    /// The dimensionless twin of an SI scene and its text.
+    std::shared_ptr<ParameterHandler> converted;
+    std::string                       dimensionless_text;
+
+    void
+    check_physical_values(ParameterHandler &scene) const;
+
+    /// One unit of the solver's `quantity` in SI, and its unit's name.
+    std::pair<double, std::string>
+    si_measure(const Quantity quantity) const;
+
+    /// Sets every entry of `dimensionless` (declared as `scene` is) to the
+    /// SI scene's value, converted; its Units are left at their defaults.
+    void
+    convert(ParameterHandler &scene, ParameterHandler &dimensionless) const;
+  };
+} // namespace liftoff
