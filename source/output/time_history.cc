@@ -9,6 +9,7 @@
 #include <liftoff/output/time_history.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 
 #include <iomanip>
@@ -129,6 +130,17 @@ namespace liftoff
 
 
   void
+  TimeHistory::follow(
+    const std::vector<std::string>                         &names,
+    const std::function<std::vector<double>(const double)> &positions)
+  {
+    moving_load_names     = names;
+    moving_load_positions = positions;
+    make_columns();
+  }
+
+
+  void
   TimeHistory::show_dissipated_energy(const bool show)
   {
     write_dissipated = show;
@@ -175,6 +187,9 @@ namespace liftoff
         add("max_pressure_x", [](const Row &r) { return r.max_pressure_x; });
         add("max_pressure_y", [](const Row &r) { return r.max_pressure_y; });
       }
+    for (unsigned int k = 0; k < 3 * moving_load_names.size(); ++k)
+      add(moving_load_names[k / 3] + std::array{"_x", "_y", "_on"}[k % 3],
+          [k](const Row &r) { return r.moving_loads[k]; });
   }
 
 
@@ -265,6 +280,8 @@ namespace liftoff
     row.n_dofs     = step.discretization.dof_handler.n_dofs();
     row.energies   = step.state.energies;
     row.balance_error = row.energies.error(step.state.initial_energies);
+    if (moving_load_positions)
+      row.moving_loads = moving_load_positions(row.tau);
     if (write_resultant)
       {
         const auto r =

@@ -73,6 +73,10 @@ namespace liftoff
     field_output.parse_parameters(prm, parts.plate);
     prm.leave_subsection();
     time_history.show_dissipated_energy(parts.foundation.has_damping());
+    time_history.follow(parts.loads.moving_load_names(),
+                        [this](const double tau) {
+                          return parts.loads.moving_load_positions(tau);
+                        });
     checkpoint.parse_parameters(prm);
 
     check_scene();

@@ -63,6 +63,8 @@ namespace liftoff
       double max_pressure   = 0;
       double max_pressure_x = 0;
       double max_pressure_y = 0;
+      /// x, y and the loads on the plate of each moving load (follow()).
+      std::vector<double> moving_loads;
 
       /// The members serialize() archives, in its order: a checkpoint
       /// keeps them, and one of another layout is refused by name before
@@ -86,7 +88,8 @@ namespace liftoff
                 "contact_area",
                 "max_pressure",
                 "max_pressure_x",
-                "max_pressure_y"};
+                "max_pressure_y",
+                "moving_loads"};
       }
 
       template <class Archive>
@@ -96,7 +99,7 @@ namespace liftoff
         archive &tau &iterations &cycle_length &contact_fraction &max_uplift
           &n_cells &n_dofs &probe_w &energies &balance_error &resultant
             &resultant_x &resultant_y &contact_area &max_pressure
-              &max_pressure_x &max_pressure_y;
+              &max_pressure_x &max_pressure_y &moving_loads;
       }
     };
 
@@ -112,6 +115,11 @@ namespace liftoff
 
     bool
     wants_energies() const;
+    /// Columns <name>_x, <name>_y, <name>_on per moving load, their values
+    /// at tau in that order from `positions` (LoadSet's moving loads).
+    void
+    follow(const std::vector<std::string>                         &names,
+           const std::function<std::vector<double>(const double)> &positions);
 
     /// Write the dashpots' dissipated energy (a column `dissipated_energy`
     /// after `work`, with the energies): only a scene with dashpots has it.
@@ -166,11 +174,13 @@ namespace liftoff
     std::vector<std::string>
     column_names() const;
 
-    std::vector<Point<2>>        probe_points;
-    bool                         write_energies   = true;
-    bool                         write_dissipated = false;
-    bool                         write_resultant  = false;
-    std::vector<PointFunctional> probes;
+    std::vector<Point<2>>                            probe_points;
+    bool                                             write_energies   = true;
+    bool                                             write_dissipated = false;
+    bool                                             write_resultant  = false;
+    std::vector<PointFunctional>                     probes;
+    std::vector<std::string>                         moving_load_names;
+    std::function<std::vector<double>(const double)> moving_load_positions;
     /// This rank's degrees of freedom of w.
     IndexSet w_dofs;
     /// The initial gap at them, in the order of w_dofs (filled at the first
