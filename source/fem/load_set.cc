@@ -325,9 +325,10 @@ namespace liftoff
                       const std::string &section)
   {
     Load load;
-    load.kind      = kind;
-    load.name      = "Loads/" + section;
-    load.magnitude = prm.get_double("Magnitude");
+    load.kind       = kind;
+    load.name       = "Loads/" + section;
+    load.path_owner = load.name;
+    load.magnitude  = prm.get_double("Magnitude");
     // A load that is off (Magnitude 0) is checked all the same: a
     // broken expression is an error whether or not it is used yet.
     load.history_expression = prm.get("Time history");
@@ -454,6 +455,7 @@ namespace liftoff
           wheel.name, wheel.history_expression, 1, "tau", false);
         wheel.path_expression = vehicle.path_expression;
         wheel.path            = vehicle.path;
+        wheel.path_owner      = vehicle.name;
         wheel.moves           = vehicle.moves;
         wheel.offset          = Tensor<1, 2>({wheels[k][0], wheels[k][1]});
         track.members.push_back(loads.size());
@@ -590,20 +592,24 @@ namespace liftoff
   void
   LoadSet::require_path_on_plate(const Load                &load,
                                  const std::vector<double> &times,
-                                 const BoundingBox<2>      &plate)
+                                 const BoundingBox<2>      &plate) const
   {
+    // The loads on this path: one, or a vehicle's wheels, of which one on
+    // the plate is enough.
     bool touches = false;
     for (const double tau : times)
       {
-        const Point<2> p = load.position_at(tau);
+        const Point<2> p = load.position_at(tau) - load.offset;
         AssertThrow(std::isfinite(p[0]) && std::isfinite(p[1]),
-                    ExcMessage(load.name + "/Path = <" + load.path_expression
-                               + "> is not finite at tau = " + time_text(tau)
-                               + "."));
-        touches = touches || load.touches(plate, tau);
+                    ExcMessage(load.path_owner + "/Path = <"
+                               + load.path_expression + "> is not finite at "
+                               + "tau = " + time_text(tau) + "."));
+        for (const Load &other : loads)
+          touches =
+            touches || (other.path == load.path && other.touches(plate, tau));
       }
     AssertThrow(touches,
-                ExcMessage(load.name + "/Path = <"
+                ExcMessage(load.path_owner + "/Path = <"
                            + abbreviated(load.path_expression)
                            + "> keeps the load off the plate at every step "
                              "time from tau = 0 to the End time: it would "
@@ -656,7 +662,12 @@ namespace liftoff
       times[k] = k * time_step;
     for (const auto &load : loads)
       {
-        if (load.path != nullptr)
+        // Once per path (a vehicle's wheels share theirs).
+        const auto first_on_path =
+          std::find_if(loads.begin(), loads.end(), [&](const Load &other) {
+            return other.path == load.path;
+          });
+        if (load.path != nullptr && &*first_on_path == &load)
           require_path_on_plate(load, times, plate);
         else if (load.kind == Kind::point)
           AssertThrow(plate.point_inside(load.position, 1e-12),

@@ -146,7 +146,8 @@ namespace liftoff
       /// (x, y)(tau) of point loads, patches and vehicles (one path for
       /// all the wheels of a vehicle); none: the point load stands at
       /// `position`.
-      std::string                        path_expression;
+      std::string path_expression;
+      std::string path_owner; // the subsection of Path, for messages
       std::shared_ptr<FunctionParser<1>> path;
       bool                               moves = false; // the path names tau
       Tensor<1, 2>                       offset; // a wheel's, from the path
@@ -208,12 +209,13 @@ namespace liftoff
     /// if its Magnitude is not 0, with their track.
     void
     read_vehicle(ParameterHandler &prm, const std::string &section);
-    /// Refuse a moving load whose path is not finite at one of `times` or
-    /// never brings it onto the plate.
-    static void
+    /// Refuse the path of `load` if it is not finite at one of `times` or
+    /// never brings a load on it (a vehicle: one of its wheels) onto the
+    /// plate.
+    void
     require_path_on_plate(const Load                &load,
                           const std::vector<double> &times,
-                          const BoundingBox<2>      &plate);
+                          const BoundingBox<2>      &plate) const;
 
     /// b_k(tau) = magnitude * int f(x, y, tau) phi_i (without h).
     void
