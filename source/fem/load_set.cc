@@ -167,6 +167,81 @@ namespace liftoff
       return (image_lo - b.get_boundary_points().first).norm() <= 1e-12
              && (image_hi - b.get_boundary_points().second).norm() <= 1e-12;
     }
+    // "dx, dy, share; ..." of a vehicle, or refused naming `parameter`.
+    std::vector<std::array<double, 3>>
+    parse_wheels(const std::string &text, const std::string &parameter)
+    {
+      const std::string message =
+        parameter + " = <" + abbreviated(text)
+        + "> must be 'dx, dy, share' per wheel, separated by ';' (finite "
+          "numbers).";
+      std::vector<std::array<double, 3>> wheels;
+      try
+        {
+          for (const auto &wheel : Utilities::split_string_list(text, ';'))
+            {
+              const std::vector<double> v = Utilities::string_to_double(
+                Utilities::split_string_list(wheel, ','));
+              AssertThrow(v.size() == 3, ExcMessage(message));
+              wheels.push_back({{v[0], v[1], v[2]}});
+            }
+        }
+      catch (...)
+        {
+          AssertThrow(false, ExcMessage(message));
+        }
+      AssertThrow(!wheels.empty(), ExcMessage(message));
+      for (const auto &wheel : wheels)
+        for (const double v : wheel)
+          AssertThrow(std::isfinite(v), ExcMessage(message));
+      return wheels;
+    }
+
+    // The i-th patch load and vehicle, whose entries only moving loads
+    // have.
+    void
+    declare_moving_loads(ParameterHandler &prm, const unsigned int i)
+    {
+      declare_load(prm,
+                   subsection_name("Patch load", i),
+                   "Uniform pressure in units of F0 / L^2",
+                   [&]() {
+                     prm.declare_entry("Shape",
+                                       "rectangle",
+                                       patch_shapes.pattern(),
+                                       "What the pressure covers (a tyre's "
+                                       "contact area), centred on the path.");
+                     prm.declare_entry("Size",
+                                       "0.1, 0.1",
+                                       size_pattern,
+                                       "'a, b', the widths along x and y of a "
+                                       "rectangle, or 'd', a disc's diameter.");
+                     declare_path(prm, "0; 0");
+                   });
+      declare_load(
+        prm,
+        subsection_name("Vehicle", i),
+        "Force in units of F0 that each wheel's share multiplies",
+        [&]() {
+          declare_path(prm, "0; 0");
+          prm.declare_entry(
+            "Wheels",
+            "0, 0, 1",
+            Patterns::Anything(),
+            "dx, dy, share; dx, dy, share; ...: each wheel's offset from the "
+            "path's point and its share of Magnitude; the wheels move "
+            "together.");
+          prm.declare_entry("Wheel shape",
+                            "point",
+                            wheel_shapes.pattern(),
+                            "A point load, or a patch load of the wheel's "
+                            "force spread over its area.");
+          prm.declare_entry("Wheel size",
+                            "0.1, 0.1",
+                            size_pattern,
+                            "As Size of a Patch load, for patch wheels.");
+        });
+    }
   } // namespace
 
 
@@ -243,45 +318,7 @@ namespace liftoff
                           "nodes), if Path is empty.");
         declare_path(prm, "");
       });
-    declare_load(prm,
-                 subsection_name("Patch load", i),
-                 "Uniform pressure in units of F0 / L^2",
-                 [&]() {
-                   prm.declare_entry("Shape",
-                                     "rectangle",
-                                     patch_shapes.pattern(),
-                                     "What the pressure covers (a tyre's "
-                                     "contact area), centred on the path.");
-                   prm.declare_entry("Size",
-                                     "0.1, 0.1",
-                                     size_pattern,
-                                     "'a, b', the widths along x and y of a "
-                                     "rectangle, or 'd', a disc's diameter.");
-                   declare_path(prm, "0; 0");
-                 });
-    declare_load(
-      prm,
-      subsection_name("Vehicle", i),
-      "Force in units of F0 that each wheel's share multiplies",
-      [&]() {
-        declare_path(prm, "0; 0");
-        prm.declare_entry(
-          "Wheels",
-          "0, 0, 1",
-          Patterns::Anything(),
-          "dx, dy, share; dx, dy, share; ...: each wheel's offset from the "
-          "path's point and its share of Magnitude; the wheels move "
-          "together.");
-        prm.declare_entry("Wheel shape",
-                          "point",
-                          wheel_shapes.pattern(),
-                          "A point load, or a patch load of the wheel's "
-                          "force spread over its area.");
-        prm.declare_entry("Wheel size",
-                          "0.1, 0.1",
-                          size_pattern,
-                          "As Size of a Patch load, for patch wheels.");
-      });
+    declare_moving_loads(prm, i);
     declare_load(prm,
                  subsection_name("Pressure", i),
                  "Pressure in units of F0 / L^2",
@@ -411,30 +448,8 @@ namespace liftoff
                                           vehicle.name + "/Wheel size"));
     AssertThrow(vehicle.path != nullptr,
                 ExcMessage(vehicle.name + "/Path must not be empty."));
-    const std::string message =
-      vehicle.name + "/Wheels = <" + abbreviated(wheels_text)
-      + "> must be 'dx, dy, share' per wheel, separated by ';' (finite "
-        "numbers).";
-    std::vector<std::vector<double>> wheels;
-    try
-      {
-        for (const auto &wheel : Utilities::split_string_list(wheels_text, ';'))
-          wheels.push_back(Utilities::string_to_double(
-            Utilities::split_string_list(wheel, ',')));
-      }
-    catch (...)
-      {
-        AssertThrow(false, ExcMessage(message));
-      }
-    AssertThrow(!wheels.empty(), ExcMessage(message));
-    for (const auto &wheel : wheels)
-      AssertThrow(wheel.size() == 3
-                    && std::all_of(wheel.begin(),
-                                   wheel.end(),
-                                   [](const double v) {
-                                     return std::isfinite(v);
-                                   }),
-                  ExcMessage(message));
+    const std::vector<std::array<double, 3>> wheels =
+      parse_wheels(wheels_text, vehicle.name + "/Wheels");
     if (vehicle.magnitude == 0.0)
       return;
 
@@ -660,6 +675,17 @@ namespace liftoff
     std::vector<double>  times(n_steps + 1);
     for (unsigned int k = 0; k <= n_steps; ++k)
       times[k] = k * time_step;
+    require_on_plate(times, plate);
+    if (disc.geometry().symmetry() == Symmetry::full)
+      return;
+    check_symmetry(times, disc);
+  }
+
+
+  void
+  LoadSet::require_on_plate(const std::vector<double> &times,
+                            const BoundingBox<2>      &plate) const
+  {
     for (const auto &load : loads)
       {
         // Once per path (a vehicle's wheels share theirs).
@@ -679,9 +705,14 @@ namespace liftoff
         if (load.kind == Kind::pressure)
           region_of(load, plate);
       }
-    if (disc.geometry().symmetry() == Symmetry::full)
-      return;
+  }
 
+
+  void
+  LoadSet::check_symmetry(const std::vector<double> &times,
+                          const Discretization      &disc) const
+  {
+    const BoundingBox<2> plate = disc.geometry().plate_box();
     // A reduced model is right only if what it integrates is symmetric: the
     // loads are compared where they are evaluated (every quadrature point of
     // the full plate's mesh) and when (every time the run visits), not at

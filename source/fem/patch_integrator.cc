@@ -57,6 +57,31 @@ namespace liftoff
         }
       return Quadrature<1>(points, weights);
     }
+    /// The ends in x of the slices of disc ∩ cell (cell [x0, x1] x [y0,
+    /// y1], [a, b] its x-range inside the disc): a, b and where the circle
+    /// crosses y = y0 or y = y1 between them. Inside a slice each bound of
+    /// y is either a cell edge or the circle, smoothly.
+    std::vector<double>
+    slice_ends(const double    a,
+               const double    b,
+               const double    y0,
+               const double    y1,
+               const Point<2> &c,
+               const double    r)
+    {
+      std::vector<double> ends = {a, b};
+      for (const double y : {y0, y1})
+        if (std::abs(y - c[1]) < r)
+          for (const double sign : {-1.0, 1.0})
+            {
+              const double x =
+                c[0] + sign * std::sqrt(r * r - (y - c[1]) * (y - c[1]));
+              if (x > a && x < b)
+                ends.push_back(x);
+            }
+      std::sort(ends.begin(), ends.end());
+      return ends;
+    }
   } // namespace
 
 
@@ -133,7 +158,11 @@ namespace liftoff
     const Point<2>      &c   = disc.centre;
     const double         r   = disc.radius;
     Cover                result;
-    bool                 inside = true;
+    // Most cells are away from the disc: its bounding box tells them.
+    for (unsigned int d = 0; d < 2; ++d)
+      if (box.lower_bound(d) >= c[d] + r || box.upper_bound(d) <= c[d] - r)
+        return result;
+    bool inside = true;
     for (const unsigned int v : cell->vertex_indices())
       inside = inside && (cell->vertex(v) - c).norm() <= r;
     result.whole = inside;
@@ -146,21 +175,8 @@ namespace liftoff
     const double a = std::max(x0, c[0] - r), b = std::min(x1, c[0] + r);
     if (b - a <= 1e-12 * cell->diameter())
       return result;
-    // The slices end where the circle crosses y = y0 or y = y1: inside a
-    // slice each bound of y is either a cell edge or the circle, smoothly.
-    std::vector<double> ends = {a, b};
-    for (const double y : {y0, y1})
-      if (std::abs(y - c[1]) < r)
-        for (const double sign : {-1.0, 1.0})
-          {
-            const double x =
-              c[0] + sign * std::sqrt(r * r - (y - c[1]) * (y - c[1]));
-            if (x > a && x < b)
-              ends.push_back(x);
-          }
-    std::sort(ends.begin(), ends.end());
-
-    const auto arc_angle = [&](const double x) {
+    const std::vector<double> ends      = slice_ends(a, b, y0, y1, c, r);
+    const auto                arc_angle = [&](const double x) {
       return std::asin(std::clamp((x - c[0]) / r, -1.0, 1.0));
     };
     std::vector<Point<2>> points;
@@ -276,17 +292,22 @@ namespace liftoff
   }
 
 
+  template <class Patch>
+  PatchIntegrator::CoverOf
+  PatchIntegrator::covering(const Patch &patch) const
+  {
+    return [this, &patch](const DoFHandler<2>::active_cell_iterator &cell) {
+      return cover(cell, patch);
+    };
+  }
+
+
   void
   PatchIntegrator::add(const Density        &density,
                        const BoundingBox<2> &patch,
                        LA::MPI::Vector      &vector) const
   {
-    add_covered(
-      density,
-      [&](const DoFHandler<2>::active_cell_iterator &cell) {
-        return cover(cell, patch);
-      },
-      vector);
+    add_covered(density, covering(patch), vector);
   }
 
 
@@ -295,29 +316,20 @@ namespace liftoff
                        const Disc      &disc,
                        LA::MPI::Vector &vector) const
   {
-    add_covered(
-      density,
-      [&](const DoFHandler<2>::active_cell_iterator &cell) {
-        return cover(cell, disc);
-      },
-      vector);
+    add_covered(density, covering(disc), vector);
   }
 
 
   std::vector<Point<2>>
   PatchIntegrator::quadrature_points(const BoundingBox<2> &patch) const
   {
-    return covered_points([&](const DoFHandler<2>::active_cell_iterator &cell) {
-      return cover(cell, patch);
-    });
+    return covered_points(covering(patch));
   }
 
 
   std::vector<Point<2>>
   PatchIntegrator::quadrature_points(const Disc &disc) const
   {
-    return covered_points([&](const DoFHandler<2>::active_cell_iterator &cell) {
-      return cover(cell, disc);
-    });
+    return covered_points(covering(disc));
   }
 } // namespace liftoff

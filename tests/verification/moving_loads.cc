@@ -25,6 +25,7 @@
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/patch_integrator.h>
 
+#include "pressure_patches.h"
 #include "test_tools.h"
 
 #include <array>
@@ -36,26 +37,7 @@ namespace
 {
   using namespace dealii;
   using liftoff_tests::set;
-
-  /// x^i y^j in the w component, zero rotations.
-  class InWComponent : public Function<2>
-  {
-  public:
-    InWComponent(const unsigned int i, const unsigned int j)
-        : Function<2>(3)
-        , i(i)
-        , j(j)
-    {}
-
-    double
-    value(const Point<2> &p, const unsigned int component) const override
-    {
-      return component == 0 ? std::pow(p[0], i) * std::pow(p[1], j) : 0.0;
-    }
-
-  private:
-    const unsigned int i, j;
-  };
+  using pressure_patches::InWComponent;
 
   /// 7 x 5 cells of degree `degree` on the full plate of aspect ratio 0.8.
   std::string
@@ -67,23 +49,35 @@ namespace
            + set("Discretization/Polynomial degree", degree);
   }
 
+  /// The plate and mesh of a scene, its Loads entries declared.
+  struct Mesh
+  {
+    explicit Mesh(const std::string &scene)
+        : disc(MPI_COMM_WORLD)
+    {
+      liftoff::MindlinPlate::declare_parameters(prm);
+      liftoff::Discretization::declare_parameters(prm);
+      liftoff::LoadSet::declare_parameters(prm);
+      prm.parse_input_from_string(scene, "test scene");
+      plate.parse_parameters(prm);
+      disc.parse_parameters(prm, plate);
+      disc.setup();
+    }
+
+    ParameterHandler        prm;
+    liftoff::MindlinPlate   plate;
+    liftoff::Discretization disc;
+  };
+
   /// The scene's loads on its mesh: b(tau) . I(x^i y^j) for (i, j) = (0,
   /// 0), (1, 0), (0, 1), (1, 1).
   std::array<double, 4>
   load_moments(const std::string &scene, const double tau)
   {
-    ParameterHandler prm;
-    liftoff::MindlinPlate::declare_parameters(prm);
-    liftoff::Discretization::declare_parameters(prm);
-    liftoff::LoadSet::declare_parameters(prm);
-    prm.parse_input_from_string(scene, "test scene");
-    liftoff::MindlinPlate plate;
-    plate.parse_parameters(prm);
-    liftoff::Discretization disc(MPI_COMM_WORLD);
-    disc.parse_parameters(prm, plate);
-    disc.setup();
-    liftoff::LoadSet loads;
-    loads.parse_parameters(prm);
+    Mesh                           mesh_of_scene(scene);
+    const liftoff::Discretization &disc = mesh_of_scene.disc;
+    liftoff::LoadSet               loads;
+    loads.parse_parameters(mesh_of_scene.prm);
     loads.setup(disc);
     liftoff::LA::MPI::Vector b, g;
     disc.reinit_vector(b);
@@ -194,15 +188,8 @@ namespace
   void
   check_disc_rule(liftoff_tests::Checks &checks, const unsigned int degree)
   {
-    ParameterHandler prm;
-    liftoff::MindlinPlate::declare_parameters(prm);
-    liftoff::Discretization::declare_parameters(prm);
-    prm.parse_input_from_string(mesh(degree), "test scene");
-    liftoff::MindlinPlate plate;
-    plate.parse_parameters(prm);
-    liftoff::Discretization disc(MPI_COMM_WORLD);
-    disc.parse_parameters(prm, plate);
-    disc.setup();
+    const Mesh                     mesh_of_scene(mesh(degree));
+    const liftoff::Discretization &disc = mesh_of_scene.disc;
     const liftoff::PatchIntegrator usual(disc), fine(disc, 64);
     const auto                     unit = [](const Point<2> &) {
       return std::array<double, 3>{{1.0, 0.0, 0.0}};

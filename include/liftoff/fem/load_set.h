@@ -209,6 +209,15 @@ namespace liftoff
     /// if its Magnitude is not 0, with their track.
     void
     read_vehicle(ParameterHandler &prm, const std::string &section);
+    /// The parts of check_against(): every load on the plate (at some of
+    /// the step `times`, if it moves), and the mirror images on a reduced
+    /// model. Collective.
+    void
+    require_on_plate(const std::vector<double> &times,
+                     const BoundingBox<2>      &plate) const;
+    void
+    check_symmetry(const std::vector<double> &times,
+                   const Discretization      &disc) const;
     /// Refuse the path of `load` if it is not finite at one of `times` or
     /// never brings a load on it (a vehicle: one of its wheels) onto the
     /// plate.

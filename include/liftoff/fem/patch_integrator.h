@@ -115,6 +115,10 @@ namespace liftoff
     Cover
     cover(const DoFHandler<2>::active_cell_iterator &cell,
           const Disc                                &disc) const;
+    /// cover() of `patch` (a rectangle or a disc) for every cell.
+    template <class Patch>
+    CoverOf
+    covering(const Patch &patch) const;
 
     /// patch ∩ cell in the reference coordinates of a cell that the patch
     /// cuts: a sub-rectangle of the unit square.
