@@ -268,22 +268,73 @@ namespace liftoff
               continue;
             const std::string section = path.substr(0, path.rfind('/') + 1);
             const std::string name    = path.substr(section.size());
-            const double      unit =
-              section.rfind("Loads/Point load", 0) == 0 ? force
-                   : section.rfind("Loads/Pressure", 0) == 0 ? pressure
-                                                             : line;
+            const auto        is      = [&](const std::string &kind) {
+              return section.rfind("Loads/" + kind, 0) == 0;
+            };
+            const double unit = is("Point load") || is("Vehicle")    ? force
+                                : is("Pressure") || is("Patch load") ? pressure
+                                                                     : line;
             if (name == "Magnitude")
               set(path, value(path) / unit, path + " = " + entry.value);
             else if (name == "Time history" || name == "Intensity")
               set_expression(path);
             else if (name == "Position")
               set_positions(path);
+            else if (name == "Path" && !entry.value.empty())
+              path_in_metres(path);
+            else if (name == "Size" || name == "Wheel size")
+              set_entry(out,
+                        path,
+                        divided_list(entry.value, length),
+                        path + " = " + entry.value + " [m]");
+            else if (name == "Wheels")
+              wheels_in_metres(path);
             else if (name == "Region" && entry.value != "whole plate")
               set_entry(out,
                         path,
                         divided_list(entry.value, length),
                         path + " = " + entry.value + " [m]");
           }
+      }
+
+      // x(t); y(t) in metres and seconds: t becomes t0 tau, the position
+      // is divided by L.
+      void
+      path_in_metres(const std::string &path) const
+      {
+        const auto xy = Utilities::split_string_list(expression(path), ';');
+        AssertThrow(xy.size() == 2,
+                    ExcMessage(path + " = <" + entries.at(path).value
+                               + "> must be x(t); y(t), two muParser "
+                                 "expressions in t [s] separated by ';'."));
+        set_entry(out,
+                  path,
+                  "(" + xy[0] + ")/" + exact(length) + "; (" + xy[1] + ")/"
+                    + exact(length),
+                  path + " = <" + entries.at(path).value + ">");
+      }
+
+      // dx, dy, share; ... with the offsets in metres.
+      void
+      wheels_in_metres(const std::string &path) const
+      {
+        std::string result;
+        for (const std::string &wheel :
+             Utilities::split_string_list(entries.at(path).value, ';'))
+          {
+            const auto v = Utilities::split_string_list(wheel, ',');
+            AssertThrow(v.size() == 3 && Patterns::Double().match(v[0])
+                          && Patterns::Double().match(v[1]),
+                        ExcMessage(path + " = <" + entries.at(path).value
+                                   + "> must be dx, dy, share; ... with the "
+                                     "offsets in metres."));
+            result += (result.empty() ? "" : "; ")
+                      + divided_list(v[0] + ", " + v[1], length) + ", " + v[2];
+          }
+        set_entry(out,
+                  path,
+                  result,
+                  path + " = " + entries.at(path).value + " [m]");
       }
 
       void

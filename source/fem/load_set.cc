@@ -47,6 +47,73 @@ namespace liftoff
       {"Bottom", PlateGeometry::bottom_edge},
       {"Top", PlateGeometry::top_edge}};
 
+    // The shapes of a patch load and of a vehicle's wheels.
+    const Selection<LoadSet::Shape> patch_shapes = {
+      {"rectangle", LoadSet::Shape::rectangle},
+      {"disc", LoadSet::Shape::disc}};
+    const Selection<LoadSet::Shape> wheel_shapes = {
+      {"point", LoadSet::Shape::point},
+      {"rectangle", LoadSet::Shape::rectangle},
+      {"disc", LoadSet::Shape::disc}};
+
+    const char *path_documentation =
+      "x(tau); y(tau): two muParser expressions in tau separated by ';', "
+      "the position on the full plate at time tau (e.g. -0.7 + 0.5*tau; 0, "
+      "a constant speed 0.5 along y = 0). The load vector is built at the "
+      "current position at every step; whatever is off the plate carries "
+      "nothing, and a path that never brings the load onto the plate at a "
+      "step time is refused.";
+
+    // One or two widths; patch_size() decides how many the shape takes.
+    const Patterns::List size_pattern(Patterns::Double(0.0), 1, 2, ",");
+
+    void
+    declare_path(ParameterHandler &prm, const std::string &default_value)
+    {
+      prm.declare_entry("Path",
+                        default_value,
+                        Patterns::Anything(),
+                        path_documentation);
+    }
+
+    // "a, b" of a rectangle, "d" of a disc: both widths, or refused.
+    std::array<double, 2>
+    patch_size(const std::string   &text,
+               const LoadSet::Shape shape,
+               const std::string   &parameter)
+    {
+      const std::string message =
+        parameter + " = <" + text
+        + "> must be 'a, b' (widths along x and y, > 0) for a rectangle or "
+          "'d' (the diameter, > 0) for a disc.";
+      std::vector<double> v;
+      try
+        {
+          v = Utilities::string_to_double(
+            Utilities::split_string_list(text, ','));
+        }
+      catch (...)
+        {
+          AssertThrow(false, ExcMessage(message));
+        }
+      const unsigned int n = (shape == LoadSet::Shape::rectangle ? 2 : 1);
+      AssertThrow(v.size() == n && v[0] > 0 && v[n - 1] > 0
+                    && std::isfinite(v[0]) && std::isfinite(v[n - 1]),
+                  ExcMessage(message));
+      return {{v[0], v[n - 1]}};
+    }
+
+    // "Point load 2" -> "point_load_2", the prefix of history columns.
+    std::string
+    column_name(const std::string &section)
+    {
+      std::string name = Utilities::replace_in_string(section, " ", "_");
+      std::transform(name.begin(), name.end(), name.begin(), [](char c) {
+        return static_cast<char>(std::tolower(c));
+      });
+      return name;
+    }
+
     bool
     nearly_equal(const double a, const double b)
     {
@@ -100,6 +167,81 @@ namespace liftoff
       return (image_lo - b.get_boundary_points().first).norm() <= 1e-12
              && (image_hi - b.get_boundary_points().second).norm() <= 1e-12;
     }
+    // "dx, dy, share; ..." of a vehicle, or refused naming `parameter`.
+    std::vector<std::array<double, 3>>
+    parse_wheels(const std::string &text, const std::string &parameter)
+    {
+      const std::string message =
+        parameter + " = <" + abbreviated(text)
+        + "> must be 'dx, dy, share' per wheel, separated by ';' (finite "
+          "numbers).";
+      std::vector<std::array<double, 3>> wheels;
+      try
+        {
+          for (const auto &wheel : Utilities::split_string_list(text, ';'))
+            {
+              const std::vector<double> v = Utilities::string_to_double(
+                Utilities::split_string_list(wheel, ','));
+              AssertThrow(v.size() == 3, ExcMessage(message));
+              wheels.push_back({{v[0], v[1], v[2]}});
+            }
+        }
+      catch (...)
+        {
+          AssertThrow(false, ExcMessage(message));
+        }
+      AssertThrow(!wheels.empty(), ExcMessage(message));
+      for (const auto &wheel : wheels)
+        for (const double v : wheel)
+          AssertThrow(std::isfinite(v), ExcMessage(message));
+      return wheels;
+    }
+
+    // The i-th patch load and vehicle, whose entries only moving loads
+    // have.
+    void
+    declare_moving_loads(ParameterHandler &prm, const unsigned int i)
+    {
+      declare_load(prm,
+                   subsection_name("Patch load", i),
+                   "Uniform pressure in units of F0 / L^2",
+                   [&]() {
+                     prm.declare_entry("Shape",
+                                       "rectangle",
+                                       patch_shapes.pattern(),
+                                       "What the pressure covers (a tyre's "
+                                       "contact area), centred on the path.");
+                     prm.declare_entry("Size",
+                                       "0.1, 0.1",
+                                       size_pattern,
+                                       "'a, b', the widths along x and y of a "
+                                       "rectangle, or 'd', a disc's diameter.");
+                     declare_path(prm, "0; 0");
+                   });
+      declare_load(
+        prm,
+        subsection_name("Vehicle", i),
+        "Force in units of F0 that each wheel's share multiplies",
+        [&]() {
+          declare_path(prm, "0; 0");
+          prm.declare_entry(
+            "Wheels",
+            "0, 0, 1",
+            Patterns::Anything(),
+            "dx, dy, share; dx, dy, share; ...: each wheel's offset from the "
+            "path's point and its share of Magnitude; the wheels move "
+            "together.");
+          prm.declare_entry("Wheel shape",
+                            "point",
+                            wheel_shapes.pattern(),
+                            "A point load, or a patch load of the wheel's "
+                            "force spread over its area.");
+          prm.declare_entry("Wheel size",
+                            "0.1, 0.1",
+                            size_pattern,
+                            "As Size of a Patch load, for patch wheels.");
+        });
+    }
   } // namespace
 
 
@@ -108,6 +250,37 @@ namespace liftoff
   {
     intensity->set_time(tau);
     return intensity->value(p);
+  }
+
+
+  Point<2>
+  LoadSet::Load::position_at(const double tau) const
+  {
+    if (path == nullptr)
+      return position + offset;
+    return Point<2>(path->value(Point<1>(tau), 0),
+                    path->value(Point<1>(tau), 1))
+           + offset;
+  }
+
+
+  bool
+  LoadSet::Load::touches(const BoundingBox<2> &plate, const double tau) const
+  {
+    const Point<2> p = position_at(tau);
+    if (kind == Kind::point)
+      return plate.point_inside(p, 1e-12);
+    // Some area on the plate: the nearest point of the plate lies within
+    // the disc, or the rectangle overlaps the plate.
+    Point<2> nearest;
+    bool     overlaps = true;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        nearest[d] =
+          std::clamp(p[d], plate.lower_bound(d), plate.upper_bound(d));
+        overlaps = overlaps && std::abs(p[d] - nearest[d]) < size[d] / 2;
+      }
+    return shape == Shape::disc ? (p - nearest).norm() < size[0] / 2 : overlaps;
   }
 
 
@@ -142,8 +315,10 @@ namespace liftoff
                           "0, 0",
                           Patterns::List(Patterns::Double(), 2, 2, ","),
                           "x, y on the full plate (any point, not only "
-                          "nodes).");
+                          "nodes), if Path is empty.");
+        declare_path(prm, "");
       });
+    declare_moving_loads(prm, i);
     declare_load(prm,
                  subsection_name("Pressure", i),
                  "Pressure in units of F0 / L^2",
@@ -182,6 +357,35 @@ namespace liftoff
 
 
   LoadSet::Load
+  LoadSet::read_timed(ParameterHandler  &prm,
+                      const Kind         kind,
+                      const std::string &section)
+  {
+    Load load;
+    load.kind       = kind;
+    load.name       = "Loads/" + section;
+    load.path_owner = load.name;
+    load.magnitude  = prm.get_double("Magnitude");
+    // A load that is off (Magnitude 0) is checked all the same: a
+    // broken expression is an error whether or not it is used yet.
+    load.history_expression = prm.get("Time history");
+    load.history            = parse_expression<1>(
+      load.name + "/Time history", load.history_expression, 1, "tau", false);
+    if (kind == Kind::point || kind == Kind::patch)
+      {
+        load.path_expression = prm.get("Path");
+        if (!load.path_expression.empty())
+          {
+            load.path = parse_expression<1>(
+              load.name + "/Path", load.path_expression, 2, "tau", false);
+            load.moves = names_tau(load.path_expression);
+          }
+      }
+    return load;
+  }
+
+
+  LoadSet::Load
   LoadSet::read_load(ParameterHandler  &prm,
                      const Kind         kind,
                      const std::string &section) const
@@ -190,20 +394,20 @@ namespace liftoff
     // only their form.
     const BoundingBox<2> unbounded(
       std::make_pair(Point<2>(-1e300, -1e300), Point<2>(1e300, 1e300)));
-    Load load;
-    load.kind      = kind;
-    load.name      = "Loads/" + section;
-    load.magnitude = prm.get_double("Magnitude");
-    // A load that is off (Magnitude 0) is checked all the same: a
-    // broken expression is an error whether or not it is used yet.
-    load.history_expression = prm.get("Time history");
-    load.history            = parse_expression<1>(
-      load.name + "/Time history", load.history_expression, 1, "tau", false);
+    Load load = read_timed(prm, kind, section);
     if (kind == Kind::point)
       {
         const auto xy = Utilities::string_to_double(
           Utilities::split_string_list(prm.get("Position"), ','));
         load.position = Point<2>(xy[0], xy[1]);
+      }
+    else if (kind == Kind::patch)
+      {
+        AssertThrow(load.path != nullptr,
+                    ExcMessage(load.name + "/Path must not be empty."));
+        load.shape = patch_shapes.parse(prm.get("Shape"), load.name + "/Shape");
+        load.size =
+          patch_size(prm.get("Size"), load.shape, load.name + "/Size");
       }
     else
       {
@@ -229,14 +433,64 @@ namespace liftoff
 
 
   void
+  LoadSet::read_vehicle(ParameterHandler &prm, const std::string &section)
+  {
+    // The wheels are point or patch loads that share the vehicle's path
+    // and time history; a wheel's force spread over its area is a pressure.
+    Load              vehicle     = read_timed(prm, Kind::point, section);
+    const std::string wheels_text = prm.get("Wheels");
+    const Shape       shape =
+      wheel_shapes.parse(prm.get("Wheel shape"), vehicle.name + "/Wheel shape");
+    const std::array<double, 2> size =
+      (shape == Shape::point ? std::array<double, 2>{{0, 0}}
+                             : patch_size(prm.get("Wheel size"),
+                                          shape,
+                                          vehicle.name + "/Wheel size"));
+    AssertThrow(vehicle.path != nullptr,
+                ExcMessage(vehicle.name + "/Path must not be empty."));
+    const std::vector<std::array<double, 3>> wheels =
+      parse_wheels(wheels_text, vehicle.name + "/Wheels");
+    if (vehicle.magnitude == 0.0)
+      return;
+
+    const double area =
+      (shape == Shape::disc ? M_PI / 4 * size[0] * size[0] : size[0] * size[1]);
+    Track track{column_name(section), {}};
+    for (unsigned int k = 0; k < wheels.size(); ++k)
+      {
+        Load wheel;
+        wheel.kind  = (shape == Shape::point ? Kind::point : Kind::patch);
+        wheel.name  = vehicle.name + ", wheel " + std::to_string(k + 1);
+        wheel.shape = shape;
+        wheel.size  = size;
+        wheel.magnitude =
+          vehicle.magnitude * wheels[k][2] / (shape == Shape::point ? 1 : area);
+        wheel.history_expression = vehicle.history_expression;
+        wheel.history            = parse_expression<1>(
+          wheel.name, wheel.history_expression, 1, "tau", false);
+        wheel.path_expression = vehicle.path_expression;
+        wheel.path            = vehicle.path;
+        wheel.path_owner      = vehicle.name;
+        wheel.moves           = vehicle.moves;
+        wheel.offset          = Tensor<1, 2>({wheels[k][0], wheels[k][1]});
+        track.members.push_back(loads.size());
+        loads.push_back(std::move(wheel));
+      }
+    tracks.push_back(std::move(track));
+  }
+
+
+  void
   LoadSet::parse_parameters(ParameterHandler &prm)
   {
     loads.clear();
+    tracks.clear();
     prm.enter_subsection("Loads");
-    const std::array<std::pair<Kind, std::string>, 3> kinds = {
+    const std::array<std::pair<Kind, std::string>, 4> kinds = {
       {{Kind::point, "Point load"},
        {Kind::pressure, "Pressure"},
-       {Kind::line, "Line load"}}};
+       {Kind::line, "Line load"},
+       {Kind::patch, "Patch load"}}};
     for (const auto &[kind, kind_name] : kinds)
       for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
         {
@@ -244,9 +498,22 @@ namespace liftoff
           prm.enter_subsection(section);
           Load load = read_load(prm, kind, section);
           if (load.magnitude != 0.0)
-            loads.push_back(std::move(load));
+            {
+              // A moving load is followed in history.csv under its name.
+              if (load.moves)
+                tracks.push_back({column_name(section),
+                                  {static_cast<unsigned int>(loads.size())}});
+              loads.push_back(std::move(load));
+            }
           prm.leave_subsection();
         }
+    for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
+      {
+        const std::string section = subsection_name("Vehicle", i);
+        prm.enter_subsection(section);
+        read_vehicle(prm, section);
+        prm.leave_subsection();
+      }
     // The pattern refuses a negative, nan or infinite weight.
     const double self_weight = prm.get_double("Self weight");
     if (self_weight != 0.0)
@@ -298,11 +565,71 @@ namespace liftoff
   LoadSet::point_load_positions(const Discretization &disc) const
   {
     std::vector<Point<2>> positions;
+    // Moving loads have no place to keep fine.
     for (const auto &load : loads)
-      if (load.kind == Kind::point
-          && disc.geometry().modelled_box().point_inside(load.position, 1e-12))
-        positions.push_back(load.position);
+      if (load.kind == Kind::point && !load.moves
+          && disc.geometry().modelled_box().point_inside(load.position_at(0),
+                                                         1e-12))
+        positions.push_back(load.position_at(0));
     return positions;
+  }
+
+
+  std::vector<std::string>
+  LoadSet::moving_load_names() const
+  {
+    std::vector<std::string> names;
+    for (const Track &track : tracks)
+      names.push_back(track.name);
+    return names;
+  }
+
+
+  std::vector<double>
+  LoadSet::moving_load_positions(const double tau) const
+  {
+    const BoundingBox<2> plate = discretization->geometry().plate_box();
+    std::vector<double>  values;
+    for (const Track &track : tracks)
+      {
+        // The path's own point: a vehicle's wheels sit at offsets from it.
+        const Load    &first = loads[track.members.front()];
+        const Point<2> p     = first.position_at(tau) - first.offset;
+        unsigned int   on    = 0;
+        for (const unsigned int k : track.members)
+          on += loads[k].touches(plate, tau);
+        values.insert(values.end(), {p[0], p[1], double(on)});
+      }
+    return values;
+  }
+
+
+  void
+  LoadSet::require_path_on_plate(const Load                &load,
+                                 const std::vector<double> &times,
+                                 const BoundingBox<2>      &plate) const
+  {
+    // The loads on this path: one, or a vehicle's wheels, of which one on
+    // the plate is enough.
+    bool touches = false;
+    for (const double tau : times)
+      {
+        const Point<2> p = load.position_at(tau) - load.offset;
+        AssertThrow(std::isfinite(p[0]) && std::isfinite(p[1]),
+                    ExcMessage(load.path_owner + "/Path = <"
+                               + load.path_expression + "> is not finite at "
+                               + "tau = " + time_text(tau) + "."));
+        for (const Load &other : loads)
+          touches =
+            touches || (other.path == load.path && other.touches(plate, tau));
+      }
+    AssertThrow(touches,
+                ExcMessage(load.path_owner + "/Path = <"
+                           + abbreviated(load.path_expression)
+                           + "> keeps the load off the plate at every step "
+                             "time from tau = 0 to the End time: it would "
+                             "carry nothing. Move the path onto the plate "
+                             "[-1/2, 1/2] x [-mu/2, mu/2]."));
   }
 
 
@@ -345,9 +672,30 @@ namespace liftoff
                          const unsigned int    n_steps) const
   {
     const BoundingBox<2> plate = disc.geometry().plate_box();
+    std::vector<double>  times(n_steps + 1);
+    for (unsigned int k = 0; k <= n_steps; ++k)
+      times[k] = k * time_step;
+    require_on_plate(times, plate);
+    if (disc.geometry().symmetry() == Symmetry::full)
+      return;
+    check_symmetry(times, disc);
+  }
+
+
+  void
+  LoadSet::require_on_plate(const std::vector<double> &times,
+                            const BoundingBox<2>      &plate) const
+  {
     for (const auto &load : loads)
       {
-        if (load.kind == Kind::point)
+        // Once per path (a vehicle's wheels share theirs).
+        const auto first_on_path =
+          std::find_if(loads.begin(), loads.end(), [&](const Load &other) {
+            return other.path == load.path;
+          });
+        if (load.path != nullptr && &*first_on_path == &load)
+          require_path_on_plate(load, times, plate);
+        else if (load.kind == Kind::point)
           AssertThrow(plate.point_inside(load.position, 1e-12),
                       ExcMessage(load.name + "/Position = "
                                  + std::to_string(load.position[0]) + ", "
@@ -357,16 +705,18 @@ namespace liftoff
         if (load.kind == Kind::pressure)
           region_of(load, plate);
       }
-    if (disc.geometry().symmetry() == Symmetry::full)
-      return;
+  }
 
+
+  void
+  LoadSet::check_symmetry(const std::vector<double> &times,
+                          const Discretization      &disc) const
+  {
+    const BoundingBox<2> plate = disc.geometry().plate_box();
     // A reduced model is right only if what it integrates is symmetric: the
     // loads are compared where they are evaluated (every quadrature point of
     // the full plate's mesh) and when (every time the run visits), not at
     // samples, which a load can dodge.
-    std::vector<double> times(n_steps + 1);
-    for (unsigned int k = 0; k <= n_steps; ++k)
-      times[k] = k * time_step;
     const FullPlatePoints points = full_plate_points(disc);
     // NaN equals nothing, not even its mirror image: a load that is not
     // finite somewhere is named as such before the comparison blames the
@@ -475,8 +825,15 @@ namespace liftoff
     switch (load.kind)
       {
       case Kind::point:
-        if ((mirrored(load.position, axis) - other.position).norm() >= 1e-12)
+      case Kind::patch:
+        if (load.shape != other.shape || load.size != other.size)
           return false;
+        // A moving load's image follows the mirrored path at every time.
+        for (const double tau : times)
+          if ((mirrored(load.position_at(tau), axis) - other.position_at(tau))
+                .norm()
+              >= 1e-12)
+            return false;
         break;
       case Kind::pressure:
         if (!is_mirrored_rectangle(region_of(load, plate),
@@ -499,7 +856,7 @@ namespace liftoff
       if (!nearly_equal(load.history->value(Point<1>(tau)),
                         other.history->value(Point<1>(tau))))
         return false;
-    if (load.kind == Kind::point)
+    if (load.kind == Kind::point || load.kind == Kind::patch)
       return true;
     const auto [candidates, acts_at] = where_it_acts(load, plate, points, disc);
     return have_mirrored_intensities(
@@ -585,12 +942,12 @@ namespace liftoff
         const double h = load.history->value(Point<1>(tau));
         if (!std::isfinite(h))
           return non_finite_history(load, tau);
-        if (load.intensity_depends_on_time)
+        if (is_rebuilt_every_step(load))
           assemble_spatial_part(load, tau, scratch);
         else
           scratch = load.spatial_part;
         if (!is_finite(scratch))
-          return load.kind == Kind::point
+          return load.kind == Kind::point || load.kind == Kind::patch
                    ? load.name
                        + ": Magnitude = " + std::to_string(load.magnitude)
                        + " is too large to be represented."
@@ -616,7 +973,7 @@ namespace liftoff
     for (const double tau : times)
       AssertThrow(std::isfinite(load.history->value(Point<1>(tau))),
                   ExcMessage(non_finite_history(load, tau)));
-    if (load.kind == Kind::point)
+    if (load.kind == Kind::point || load.kind == Kind::patch)
       return;
     const auto [candidates, acts_at] = where_it_acts(load, plate, points, disc);
     const auto   n_times = load.intensity_depends_on_time ? times.size() : 1;
@@ -639,23 +996,16 @@ namespace liftoff
     for (auto &load : loads)
       {
         disc.reinit_vector(load.spatial_part);
-        if (load.kind == Kind::pressure || load.kind == Kind::line)
-          {
-            if (!load.intensity_depends_on_time)
-              assemble_spatial_part(load, 0.0, load.spatial_part);
-            continue;
-          }
-        // Point loads outside the meshed part are represented by their
-        // images inside it.
-        if (!disc.geometry().modelled_box().point_inside(load.position, 1e-12))
-          continue;
-        const PointFunctional functional(disc, load.position);
-        functional.add_to(
-          load.spatial_part,
-          load.magnitude * disc.geometry().share_of_point_load(load.position),
-          disc.constraints);
-        load.spatial_part.compress(VectorOperation::add);
+        if (!is_rebuilt_every_step(load))
+          assemble_spatial_part(load, 0.0, load.spatial_part);
       }
+  }
+
+
+  bool
+  LoadSet::is_rebuilt_every_step(const Load &load)
+  {
+    return load.intensity_depends_on_time || load.moves;
   }
 
 
@@ -669,13 +1019,71 @@ namespace liftoff
         {load.magnitude * load.intensity_at(x, tau), 0.0, 0.0}};
     };
     vector = 0;
-    if (load.kind == Kind::pressure)
-      PatchIntegrator(*discretization)
-        .add(density,
-             region_of(load, discretization->geometry().plate_box()),
-             vector);
-    else
-      integrate_along_edge(density, load.edge, vector);
+    switch (load.kind)
+      {
+      case Kind::point:
+        add_point_load(load, tau, vector);
+        break;
+      case Kind::pressure:
+        PatchIntegrator(*discretization)
+          .add(density,
+               region_of(load, discretization->geometry().plate_box()),
+               vector);
+        break;
+      case Kind::line:
+        integrate_along_edge(density, load.edge, vector);
+        break;
+      case Kind::patch:
+        add_patch(load, tau, vector);
+        break;
+      }
+  }
+
+
+  void
+  LoadSet::add_point_load(const Load      &load,
+                          const double     tau,
+                          LA::MPI::Vector &vector) const
+  {
+    // A point load outside the meshed part is represented by its image
+    // inside it, or is off the plate and carries nothing. Its vector is
+    // the shape functions at the point, exact wherever it lies in a cell.
+    const Discretization &disc = *discretization;
+    const Point<2>        p    = load.position_at(tau);
+    if (!disc.geometry().modelled_box().point_inside(p, 1e-12))
+      return;
+    const PointFunctional functional(disc, p);
+    functional.add_to(vector,
+                      load.magnitude * disc.geometry().share_of_point_load(p),
+                      disc.constraints);
+    vector.compress(VectorOperation::add);
+  }
+
+
+  void
+  LoadSet::add_patch(const Load      &load,
+                     const double     tau,
+                     LA::MPI::Vector &vector) const
+  {
+    // The meshed part's cells clip the patch: whatever lies off the plate
+    // or beyond a symmetry plane (the mirror image's share) is not
+    // integrated.
+    const PatchIntegrator integrator(*discretization);
+    const auto            pressure = [&](const Point<2> &) {
+      return std::array<double, 3>{{load.magnitude, 0.0, 0.0}};
+    };
+    const Point<2> centre = load.position_at(tau);
+    if (load.shape == Shape::disc)
+      {
+        integrator.add(pressure,
+                       PatchIntegrator::Disc{centre, load.size[0] / 2},
+                       vector);
+        return;
+      }
+    const Tensor<1, 2> half({load.size[0] / 2, load.size[1] / 2});
+    integrator.add(pressure,
+                   BoundingBox<2>(std::make_pair(centre - half, centre + half)),
+                   vector);
   }
 
 
@@ -748,7 +1156,7 @@ namespace liftoff
         if (!selected(load))
           continue;
         const double h = load.history->value(Point<1>(tau));
-        if (load.intensity_depends_on_time)
+        if (is_rebuilt_every_step(load))
           {
             if (scratch.size() == 0)
               discretization->reinit_vector(scratch);

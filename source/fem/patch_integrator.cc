@@ -57,13 +57,40 @@ namespace liftoff
         }
       return Quadrature<1>(points, weights);
     }
+    /// The ends in x of the slices of disc ∩ cell (cell [x0, x1] x [y0,
+    /// y1], [a, b] its x-range inside the disc): a, b and where the circle
+    /// crosses y = y0 or y = y1 between them. Inside a slice each bound of
+    /// y is either a cell edge or the circle, smoothly.
+    std::vector<double>
+    slice_ends(const double    a,
+               const double    b,
+               const double    y0,
+               const double    y1,
+               const Point<2> &c,
+               const double    r)
+    {
+      std::vector<double> ends = {a, b};
+      for (const double y : {y0, y1})
+        if (std::abs(y - c[1]) < r)
+          for (const double sign : {-1.0, 1.0})
+            {
+              const double x =
+                c[0] + sign * std::sqrt(r * r - (y - c[1]) * (y - c[1]));
+              if (x > a && x < b)
+                ends.push_back(x);
+            }
+      std::sort(ends.begin(), ends.end());
+      return ends;
+    }
   } // namespace
 
 
-  PatchIntegrator::PatchIntegrator(const Discretization &discretization)
+  PatchIntegrator::PatchIntegrator(const Discretization &discretization,
+                                   const unsigned int    n_arc_points)
       : discretization(discretization)
       , cell_rule(discretization.dof_handler.get_fe().degree + 2)
       , line_rule(discretization.dof_handler.get_fe().degree + 2)
+      , arc_rule(n_arc_points > 0 ? n_arc_points : default_arc_points)
   {}
 
 
@@ -90,9 +117,103 @@ namespace liftoff
   }
 
 
+  PatchIntegrator::Cover
+  PatchIntegrator::cover(const DoFHandler<2>::active_cell_iterator &cell,
+                         const BoundingBox<2>                      &patch) const
+  {
+    // Cells inside the patch or away from it are decided on their
+    // bounding boxes, whatever their shape: only the cut cells need
+    // the clipping (and rectangles).
+    const BoundingBox<2> box       = cell->bounding_box();
+    const double         tolerance = 1e-12 * cell->diameter();
+    bool                 inside = true, away = false;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        inside = inside
+                 && box.lower_bound(d) >= patch.lower_bound(d) - tolerance
+                 && box.upper_bound(d) <= patch.upper_bound(d) + tolerance;
+        away = away || box.lower_bound(d) >= patch.upper_bound(d) - tolerance
+               || box.upper_bound(d) <= patch.lower_bound(d) + tolerance;
+      }
+    Cover result;
+    if (away)
+      return result;
+    result.whole = inside;
+    if (!inside)
+      {
+        const BoundingBox<2> part = reference_part(cell, patch);
+        result.part               = Quadrature<2>(
+          on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
+          on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
+      }
+    return result;
+  }
+
+
+  PatchIntegrator::Cover
+  PatchIntegrator::cover(const DoFHandler<2>::active_cell_iterator &cell,
+                         const Disc                                &disc) const
+  {
+    const BoundingBox<2> box = cell->bounding_box();
+    const Point<2>      &c   = disc.centre;
+    const double         r   = disc.radius;
+    Cover                result;
+    // Most cells are away from the disc: its bounding box tells them.
+    for (unsigned int d = 0; d < 2; ++d)
+      if (box.lower_bound(d) >= c[d] + r || box.upper_bound(d) <= c[d] - r)
+        return result;
+    bool inside = true;
+    for (const unsigned int v : cell->vertex_indices())
+      inside = inside && (cell->vertex(v) - c).norm() <= r;
+    result.whole = inside;
+    if (inside)
+      return result;
+
+    const BoundingBox<2> cell_box = rectangle_of(cell);
+    const double x0 = cell_box.lower_bound(0), x1 = cell_box.upper_bound(0),
+                 y0 = cell_box.lower_bound(1), y1 = cell_box.upper_bound(1);
+    const double a = std::max(x0, c[0] - r), b = std::min(x1, c[0] + r);
+    if (b - a <= 1e-12 * cell->diameter())
+      return result;
+    const std::vector<double> ends      = slice_ends(a, b, y0, y1, c, r);
+    const auto                arc_angle = [&](const double x) {
+      return std::asin(std::clamp((x - c[0]) / r, -1.0, 1.0));
+    };
+    std::vector<Point<2>> points;
+    std::vector<double>   weights;
+    const double          area = box.volume();
+    for (unsigned int k = 0; k + 1 < ends.size(); ++k)
+      {
+        const Quadrature<1> in_t =
+          on_interval(arc_rule, arc_angle(ends[k]), arc_angle(ends[k + 1]));
+        for (unsigned int q = 0; q < in_t.size(); ++q)
+          {
+            const double t    = in_t.point(q)[0];
+            const double x    = c[0] + r * std::sin(t);
+            const double half = r * std::cos(t);
+            const double lo   = std::max(y0, c[1] - half),
+                         hi   = std::min(y1, c[1] + half);
+            if (hi <= lo)
+              continue;
+            const Quadrature<1> in_y = on_interval(line_rule, lo, hi);
+            for (unsigned int j = 0; j < in_y.size(); ++j)
+              {
+                // Reference coordinates of a rectangle; dx = r cos(t) dt.
+                points.emplace_back((x - x0) / (x1 - x0),
+                                    (in_y.point(j)[0] - y0) / (y1 - y0));
+                weights.push_back(in_t.weight(q) * half * in_y.weight(j)
+                                  / area);
+              }
+          }
+      }
+    result.part = Quadrature<2>(points, weights);
+    return result;
+  }
+
+
   void
   PatchIntegrator::for_each_covered_cell(
-    const BoundingBox<2>                           &patch,
+    const CoverOf                                  &cover_of,
     const UpdateFlags                               flags,
     const std::function<void(const DoFHandler<2>::active_cell_iterator &,
                              const FEValues<2> &)> &work) const
@@ -104,56 +225,38 @@ namespace liftoff
                            flags);
     for (const auto &cell : disc.locally_owned_cells())
       {
-        // Cells inside the patch or away from it are decided on their
-        // bounding boxes, whatever their shape: only the cut cells need
-        // the clipping (and rectangles).
-        const BoundingBox<2> box       = cell->bounding_box();
-        const double         tolerance = 1e-12 * cell->diameter();
-        bool                 inside = true, away = false;
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            inside = inside
-                     && box.lower_bound(d) >= patch.lower_bound(d) - tolerance
-                     && box.upper_bound(d) <= patch.upper_bound(d) + tolerance;
-            away = away
-                   || box.lower_bound(d) >= patch.upper_bound(d) - tolerance
-                   || box.upper_bound(d) <= patch.lower_bound(d) + tolerance;
-          }
-        if (away)
-          continue;
-        if (inside)
+        const Cover covered = cover_of(cell);
+        if (covered.whole)
           {
             whole_cell.reinit(cell);
             work(cell, whole_cell);
-            continue;
           }
-        // A cut cell: the rule differs from cell to cell, and so do the
-        // shape values at its points.
-        const BoundingBox<2> part = reference_part(cell, patch);
-        const Quadrature<2>  rule(
-          on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
-          on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
-        FEValues<2> cut_cell(disc.mapping,
-                             disc.dof_handler.get_fe(),
-                             rule,
-                             flags);
-        cut_cell.reinit(cell);
-        work(cell, cut_cell);
+        else if (covered.part.size() > 0)
+          {
+            // A cut cell: the rule differs from cell to cell, and so do the
+            // shape values at its points.
+            FEValues<2> cut_cell(disc.mapping,
+                                 disc.dof_handler.get_fe(),
+                                 covered.part,
+                                 flags);
+            cut_cell.reinit(cell);
+            work(cell, cut_cell);
+          }
       }
   }
 
 
   void
-  PatchIntegrator::add(const Density        &density,
-                       const BoundingBox<2> &patch,
-                       LA::MPI::Vector      &vector) const
+  PatchIntegrator::add_covered(const Density   &density,
+                               const CoverOf   &cover_of,
+                               LA::MPI::Vector &vector) const
   {
     const auto        &fe     = discretization.dof_handler.get_fe();
     const unsigned int n_dofs = fe.n_dofs_per_cell();
     Vector<double>     cell_rhs(n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
     for_each_covered_cell(
-      patch,
+      cover_of,
       update_values | update_quadrature_points | update_JxW_values,
       [&](const DoFHandler<2>::active_cell_iterator &cell,
           const FEValues<2>                         &values) {
@@ -175,10 +278,10 @@ namespace liftoff
 
 
   std::vector<Point<2>>
-  PatchIntegrator::quadrature_points(const BoundingBox<2> &patch) const
+  PatchIntegrator::covered_points(const CoverOf &cover_of) const
   {
     std::vector<Point<2>> points;
-    for_each_covered_cell(patch,
+    for_each_covered_cell(cover_of,
                           update_quadrature_points,
                           [&](const DoFHandler<2>::active_cell_iterator &,
                               const FEValues<2> &values) {
@@ -186,5 +289,47 @@ namespace liftoff
                               points.push_back(p);
                           });
     return points;
+  }
+
+
+  template <class Patch>
+  PatchIntegrator::CoverOf
+  PatchIntegrator::covering(const Patch &patch) const
+  {
+    return [this, &patch](const DoFHandler<2>::active_cell_iterator &cell) {
+      return cover(cell, patch);
+    };
+  }
+
+
+  void
+  PatchIntegrator::add(const Density        &density,
+                       const BoundingBox<2> &patch,
+                       LA::MPI::Vector      &vector) const
+  {
+    add_covered(density, covering(patch), vector);
+  }
+
+
+  void
+  PatchIntegrator::add(const Density   &density,
+                       const Disc      &disc,
+                       LA::MPI::Vector &vector) const
+  {
+    add_covered(density, covering(disc), vector);
+  }
+
+
+  std::vector<Point<2>>
+  PatchIntegrator::quadrature_points(const BoundingBox<2> &patch) const
+  {
+    return covered_points(covering(patch));
+  }
+
+
+  std::vector<Point<2>>
+  PatchIntegrator::quadrature_points(const Disc &disc) const
+  {
+    return covered_points(covering(disc));
   }
 } // namespace liftoff

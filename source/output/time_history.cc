@@ -12,6 +12,7 @@
 #include <liftoff/output/time_history.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 
 #include <iomanip>
@@ -246,6 +247,17 @@ namespace liftoff
 
 
   void
+  TimeHistory::follow(
+    const std::vector<std::string>                         &names,
+    const std::function<std::vector<double>(const double)> &positions)
+  {
+    moving_load_names     = names;
+    moving_load_positions = positions;
+    make_columns();
+  }
+
+
+  void
   TimeHistory::show_dissipated_energy(const bool show)
   {
     write_dissipated = show;
@@ -339,6 +351,11 @@ namespace liftoff
              {"max_Q_x", &Row::max_q_x, Quantity::length},
              {"max_Q_y", &Row::max_q_y, Quantity::length}})
         add_member(name, member, quantity);
+    for (unsigned int k = 0; k < 3 * moving_load_names.size(); ++k)
+      add(
+        moving_load_names[k / 3] + std::array{"_x", "_y", "_on"}[k % 3],
+        [k](const Row &r) { return r.moving_loads[k]; },
+        k % 3 == 2 ? Quantity::number : Quantity::length);
   }
 
 
@@ -472,6 +489,8 @@ namespace liftoff
     row.n_dofs     = step.discretization.dof_handler.n_dofs();
     row.energies   = step.state.energies;
     row.balance_error = row.energies.error(step.state.initial_energies);
+    if (moving_load_positions)
+      row.moving_loads = moving_load_positions(row.tau);
     if (write_resultant)
       {
         const auto r =

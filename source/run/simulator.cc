@@ -79,6 +79,10 @@ namespace liftoff
     envelopes.parse_parameters(scene);
     scene.leave_subsection();
     time_history.show_dissipated_energy(parts.foundation.has_damping());
+    time_history.follow(parts.loads.moving_load_names(),
+                        [this](const double tau) {
+                          return parts.loads.moving_load_positions(tau);
+                        });
     for (Output *output : outputs)
       output->write_in_units_of(units);
     checkpoint.parse_parameters(scene);

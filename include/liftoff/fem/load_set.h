@@ -19,9 +19,17 @@ namespace liftoff
 
   /**
    * The loads of a scene: concentrated forces at arbitrary points, pressures
-   * on rectangles and line loads along edges, any number of each up to
+   * on rectangles, line loads along edges, uniform patch loads (a rectangle
+   * or a disc, a tyre's contact area) and vehicles (groups of point or
+   * patch loads at fixed offsets from one path), any number of each up to
    * max_loads_per_kind, each scaled by its own time history h(tau).
    * Positive loads press the plate into the foundation (w > 0).
+   *
+   * Point loads, patch loads and vehicles may move: their position is a
+   * path (x(tau), y(tau)), and their vector is built anew at every step
+   * at the current position (a point load by the shape functions at the
+   * point, a patch by PatchIntegrator over the part of each cell it
+   * covers). The part of a load off the plate carries nothing.
    *
    * The scene describes the full plate. On a half or quarter model only the
    * part of each load that falls on the meshed part is applied; a point on
@@ -36,6 +44,14 @@ namespace liftoff
   {
   public:
     static constexpr unsigned int max_loads_per_kind = 8;
+
+    /// What a patch load or a vehicle's wheel covers.
+    enum class Shape
+    {
+      point,
+      rectangle,
+      disc
+    };
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -60,6 +76,16 @@ namespace liftoff
     /// their cells fine).
     std::vector<Point<2>>
     point_load_positions(const Discretization &discretization) const;
+
+    /// The moving loads (and vehicles) that history.csv follows: for each
+    /// a name (`point_load_2`, `patch_load_1`, `vehicle_1`) ...
+    std::vector<std::string>
+    moving_load_names() const;
+    /// ... and, in that order, x and y of its path at tau and how many of
+    /// its loads touch the plate (0 or 1; a vehicle: its wheels). After
+    /// setup().
+    std::vector<double>
+    moving_load_positions(const double tau) const;
 
     /// Loads inside the plate, and symmetric where the model relies on it:
     /// on a half or quarter model every load must have a mirror image whose
@@ -100,7 +126,8 @@ namespace liftoff
     {
       point,
       pressure,
-      line
+      line,
+      patch
     };
 
     struct Load
@@ -110,21 +137,47 @@ namespace liftoff
       double       magnitude = 0;
       std::string  history_expression;
       std::string  intensity_expression;
-      Point<2>     position;                        // point loads
+      Point<2>     position;                        // fixed point loads
       std::string  region;                          // pressures
       unsigned int edge = 0;                        // line loads
       std::unique_ptr<FunctionParser<1>> history;   // h(tau)
       std::unique_ptr<FunctionParser<2>> intensity; // f(x, y, tau)
       bool                               intensity_depends_on_time = false;
+      /// (x, y)(tau) of point loads, patches and vehicles (one path for
+      /// all the wheels of a vehicle); none: the point load stands at
+      /// `position`.
+      std::string path_expression;
+      std::string path_owner; // the subsection of Path, for messages
+      std::shared_ptr<FunctionParser<1>> path;
+      bool                               moves = false; // the path names tau
+      Tensor<1, 2>                       offset; // a wheel's, from the path
+      Shape                              shape = Shape::rectangle; // patches
+      /// Patches: width along x and y (a disc: its diameter twice).
+      std::array<double, 2> size = {{0, 0}};
       /// Acts from before tau = 0 with h = 1 (the self-weight).
       bool            is_permanent = false;
       LA::MPI::Vector spatial_part; // b_k
 
       double
       intensity_at(const Point<2> &p, const double tau) const;
+      /// Where the point load or the patch's centre is at tau.
+      Point<2>
+      position_at(const double tau) const;
+      /// Whether some of it acts on `plate` at tau.
+      bool
+      touches(const BoundingBox<2> &plate, const double tau) const;
+    };
+
+    /// A moving load or a vehicle as history.csv reports it: the loads
+    /// (indices into `loads`) that share its path.
+    struct Track
+    {
+      std::string               name;
+      std::vector<unsigned int> members;
     };
 
     std::vector<Load>     loads;
+    std::vector<Track>    tracks;
     const Discretization *discretization = nullptr;
     Function<2>          *body_force     = nullptr;
 
@@ -141,17 +194,56 @@ namespace liftoff
     /// Rectangle of a pressure, in full plate coordinates.
     static BoundingBox<2>
     region_of(const Load &load, const BoundingBox<2> &plate);
+    /// Name, Magnitude, Time history and (point and patch loads) Path of
+    /// subsection `section` of Loads, for every kind and the vehicles.
+    static Load
+    read_timed(ParameterHandler  &prm,
+               const Kind         kind,
+               const std::string &section);
     /// The load of subsection `section` of Loads, its expressions parsed.
     Load
     read_load(ParameterHandler  &prm,
               const Kind         kind,
               const std::string &section) const;
+    /// The wheels of subsection `section` (a vehicle), added to `loads`
+    /// if its Magnitude is not 0, with their track.
+    void
+    read_vehicle(ParameterHandler &prm, const std::string &section);
+    /// The parts of check_against(): every load on the plate (at some of
+    /// the step `times`, if it moves), and the mirror images on a reduced
+    /// model. Collective.
+    void
+    require_on_plate(const std::vector<double> &times,
+                     const BoundingBox<2>      &plate) const;
+    void
+    check_symmetry(const std::vector<double> &times,
+                   const Discretization      &disc) const;
+    /// Refuse the path of `load` if it is not finite at one of `times` or
+    /// never brings a load on it (a vehicle: one of its wheels) onto the
+    /// plate.
+    void
+    require_path_on_plate(const Load                &load,
+                          const std::vector<double> &times,
+                          const BoundingBox<2>      &plate) const;
 
     /// b_k(tau) = magnitude * int f(x, y, tau) phi_i (without h).
     void
     assemble_spatial_part(const Load      &load,
                           const double     tau,
                           LA::MPI::Vector &vector) const;
+    /// Moving loads and intensities that name tau; the others' b_k is
+    /// built once.
+    static bool
+    is_rebuilt_every_step(const Load &load);
+    /// vector += b_k(tau) of a point load, and of a patch load.
+    void
+    add_point_load(const Load      &load,
+                   const double     tau,
+                   LA::MPI::Vector &vector) const;
+    void
+    add_patch(const Load      &load,
+              const double     tau,
+              LA::MPI::Vector &vector) const;
 
     /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) along one plate
     /// edge (areas: PatchIntegrator).

@@ -78,6 +78,8 @@ namespace liftoff
       double max_q     = 0;
       double max_q_x   = 0;
       double max_q_y   = 0;
+      /// x, y and the loads on the plate of each moving load (follow()).
+      std::vector<double> moving_loads;
 
       /// The members serialize() archives, in its order: a checkpoint
       /// keeps them, and one of another layout is refused by name before
@@ -111,7 +113,8 @@ namespace liftoff
                 "min_m_2_y",
                 "max_q",
                 "max_q_x",
-                "max_q_y"};
+                "max_q_y",
+                "moving_loads"};
       }
 
       template <class Archive>
@@ -119,10 +122,11 @@ namespace liftoff
       serialize(Archive &archive, const unsigned int)
       {
         archive &tau &iterations &cycle_length &contact_fraction &max_uplift
-          &n_cells &n_dofs &probe_w &energies &balance_error &resultant &
-            resultant_x &resultant_y &contact_area &max_pressure &max_pressure_x
-              &max_pressure_y &probe_quantities &max_m_1 &max_m_1_x &max_m_1_y
-                &min_m_2 &min_m_2_x &min_m_2_y &max_q &max_q_x &max_q_y;
+          &n_cells &n_dofs &probe_w &energies &balance_error &resultant
+            &resultant_x &resultant_y &contact_area &max_pressure
+              &max_pressure_x &max_pressure_y &probe_quantities &max_m_1
+                &max_m_1_x &max_m_1_y &min_m_2 &min_m_2_x &min_m_2_y &max_q
+                  &max_q_x &max_q_y &moving_loads;
       }
     };
 
@@ -138,6 +142,11 @@ namespace liftoff
 
     bool
     wants_energies() const;
+    /// Columns <name>_x, <name>_y, <name>_on per moving load, their values
+    /// at tau in that order from `positions` (LoadSet's moving loads).
+    void
+    follow(const std::vector<std::string>                         &names,
+           const std::function<std::vector<double>(const double)> &positions);
 
     /// Write the dashpots' dissipated energy (a column `dissipated_energy`
     /// after `work`, with the energies): only a scene with dashpots has it.
@@ -230,6 +239,8 @@ namespace liftoff
     bool                         write_moment_extremes = false;
     MindlinPlate                 plate;
     std::vector<PointFunctional> probes;
+    std::vector<std::string>     moving_load_names;
+    std::function<std::vector<double>(const double)> moving_load_positions;
     /// This rank's degrees of freedom of w.
     IndexSet w_dofs;
     /// The initial gap at them, in the order of w_dofs (filled at the first
