@@ -5,6 +5,7 @@
 #include <liftoff/base/archives.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
@@ -85,16 +86,20 @@ namespace liftoff
 
 
   void
-  Envelopes::write_in_units_of(const PhysicalUnits &scene_units)
+  Envelopes::check_against(const MeshRefinement &mesh_refinement) const
   {
-    units = scene_units;
+    AssertThrow(!enabled || !mesh_refinement.is_enabled(),
+                ExcMessage("Output/Write envelopes = true keeps one value per "
+                           "output point of a mesh that does not change: it "
+                           "cannot be used with Mesh refinement/Adaptive "
+                           "(not yet implemented). Switch one of them off."));
   }
 
 
-  bool
-  Envelopes::is_enabled() const
+  void
+  Envelopes::write_in_units_of(const PhysicalUnits &scene_units)
   {
-    return enabled;
+    units = scene_units;
   }
 
 

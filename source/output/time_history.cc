@@ -270,60 +270,99 @@ namespace liftoff
   {
     using Quantity = PhysicalUnits::Quantity;
     columns.clear();
-    const auto add = [this](const std::string                 &name,
-                            std::function<double(const Row &)> value,
-                            const Quantity quantity = Quantity::number) {
-      add_column(name, std::move(value), quantity);
-    };
-    const auto add_member = [&add](const std::string &name,
-                                   double Row::*const member,
-                                   const Quantity     quantity) {
-      add(
-        name, [member](const Row &r) { return r.*member; }, quantity);
-    };
-    const auto add_energy = [&add](const std::string &name,
-                                   double EnergyBalance::*const member) {
-      add(
-        name,
-        [member](const Row &r) { return r.energies.*member; },
-        Quantity::energy);
-    };
-    add_member(units.is_physical() ? "t" : "tau", &Row::tau, Quantity::time);
-    const std::vector<std::string> probe_names =
+    add_members(
+      {{units.is_physical() ? "t" : "tau", &Row::tau, Quantity::time}});
+    add_probe_columns();
+    add_column(
+      "contact_fraction",
+      [](const Row &r) { return r.contact_fraction; },
+      Quantity::number);
+    add_members({{"max_uplift", &Row::max_uplift, Quantity::deflection}});
+    for (const auto &[name, value] :
+         std::vector<std::pair<std::string, double (*)(const Row &)>>{
+           {"active_set_iterations",
+            [](const Row &r) -> double { return r.iterations; }},
+           {"active_set_cycle",
+            [](const Row &r) -> double { return r.cycle_length; }},
+           {"cells", [](const Row &r) -> double { return r.n_cells; }},
+           {"dofs", [](const Row &r) -> double { return r.n_dofs; }}})
+      add_column(name, value, Quantity::number);
+    if (write_energies)
+      add_energy_columns();
+    if (write_resultant)
+      add_members({{"resultant", &Row::resultant, Quantity::force},
+                   {"resultant_x", &Row::resultant_x, Quantity::length},
+                   {"resultant_y", &Row::resultant_y, Quantity::length},
+                   {"contact_area", &Row::contact_area, Quantity::area},
+                   {"max_pressure", &Row::max_pressure, Quantity::pressure},
+                   {"max_pressure_x", &Row::max_pressure_x, Quantity::length},
+                   {"max_pressure_y", &Row::max_pressure_y, Quantity::length}});
+    add_quantity_probe_columns();
+    if (write_moment_extremes)
+      add_members({{"max_M_1", &Row::max_m_1, Quantity::moment},
+                   {"max_M_1_x", &Row::max_m_1_x, Quantity::length},
+                   {"max_M_1_y", &Row::max_m_1_y, Quantity::length},
+                   {"min_M_2", &Row::min_m_2, Quantity::moment},
+                   {"min_M_2_x", &Row::min_m_2_x, Quantity::length},
+                   {"min_M_2_y", &Row::min_m_2_y, Quantity::length},
+                   {"max_Q", &Row::max_q, Quantity::shear_force},
+                   {"max_Q_x", &Row::max_q_x, Quantity::length},
+                   {"max_Q_y", &Row::max_q_y, Quantity::length}});
+    for (unsigned int k = 0; k < 3 * moving_load_names.size(); ++k)
+      add_column(
+        moving_load_names[k / 3] + std::array{"_x", "_y", "_on"}[k % 3],
+        [k](const Row &r) { return r.moving_loads[k]; },
+        k % 3 == 2 ? Quantity::number : Quantity::length);
+  }
+
+
+  void
+  TimeHistory::add_members(const std::vector<Member> &members)
+  {
+    for (const auto &[name, member, quantity] : members)
+      add_column(
+        name, [member = member](const Row &r) { return r.*member; }, quantity);
+  }
+
+
+  void
+  TimeHistory::add_probe_columns()
+  {
+    const std::vector<std::string> names =
       probe_column_names(std::vector<std::string>(probe_points.size(), "w"),
                          probe_points);
-    for (unsigned int k = 0; k < probe_names.size(); ++k)
-      add(
-        probe_names[k],
+    for (unsigned int k = 0; k < names.size(); ++k)
+      add_column(
+        names[k],
         [k](const Row &r) { return r.probe_w[k]; },
-        Quantity::deflection);
-    add("contact_fraction", [](const Row &r) { return r.contact_fraction; });
-    add_member("max_uplift", &Row::max_uplift, Quantity::deflection);
-    add("active_set_iterations", [](const Row &r) { return r.iterations; });
-    add("active_set_cycle", [](const Row &r) { return r.cycle_length; });
-    add("cells", [](const Row &r) { return r.n_cells; });
-    add("dofs", [](const Row &r) { return r.n_dofs; });
-    if (write_energies)
-      {
-        add_energy("kinetic", &EnergyBalance::kinetic);
-        add_energy("strain", &EnergyBalance::strain);
-        add_energy("foundation", &EnergyBalance::foundation);
-        add_energy("work", &EnergyBalance::work);
-        if (write_dissipated)
-          add_energy("dissipated_energy", &EnergyBalance::dissipated);
-        add_member("balance_error", &Row::balance_error, Quantity::energy);
-      }
-    if (write_resultant)
-      for (const auto &[name, member, quantity] :
-           std::vector<std::tuple<std::string, double Row::*, Quantity>>{
-             {"resultant", &Row::resultant, Quantity::force},
-             {"resultant_x", &Row::resultant_x, Quantity::length},
-             {"resultant_y", &Row::resultant_y, Quantity::length},
-             {"contact_area", &Row::contact_area, Quantity::area},
-             {"max_pressure", &Row::max_pressure, Quantity::pressure},
-             {"max_pressure_x", &Row::max_pressure_x, Quantity::length},
-             {"max_pressure_y", &Row::max_pressure_y, Quantity::length}})
-        add_member(name, member, quantity);
+        PhysicalUnits::Quantity::deflection);
+  }
+
+
+  void
+  TimeHistory::add_energy_columns()
+  {
+    std::vector<std::pair<std::string, double EnergyBalance::*>> energies = {
+      {"kinetic", &EnergyBalance::kinetic},
+      {"strain", &EnergyBalance::strain},
+      {"foundation", &EnergyBalance::foundation},
+      {"work", &EnergyBalance::work}};
+    if (write_dissipated)
+      energies.emplace_back("dissipated_energy", &EnergyBalance::dissipated);
+    for (const auto &[name, member] : energies)
+      add_column(
+        name,
+        [member = member](const Row &r) { return r.energies.*member; },
+        PhysicalUnits::Quantity::energy);
+    add_members({{"balance_error",
+                  &Row::balance_error,
+                  PhysicalUnits::Quantity::energy}});
+  }
+
+
+  void
+  TimeHistory::add_quantity_probe_columns()
+  {
     std::vector<std::string> quantities;
     std::vector<Point<2>>    points;
     for (const auto &probe : quantity_probes)
@@ -331,31 +370,13 @@ namespace liftoff
         quantities.push_back(probe.quantity);
         points.push_back(probe.point);
       }
-    const std::vector<std::string> quantity_names =
+    const std::vector<std::string> names =
       probe_column_names(quantities, points);
-    for (unsigned int k = 0; k < quantity_names.size(); ++k)
-      add(
-        quantity_names[k],
+    for (unsigned int k = 0; k < names.size(); ++k)
+      add_column(
+        names[k],
         [k](const Row &r) { return r.probe_quantities[k]; },
         quantity_of(quantity_probes[k].quantity));
-    if (write_moment_extremes)
-      for (const auto &[name, member, quantity] :
-           std::vector<std::tuple<std::string, double Row::*, Quantity>>{
-             {"max_M_1", &Row::max_m_1, Quantity::moment},
-             {"max_M_1_x", &Row::max_m_1_x, Quantity::length},
-             {"max_M_1_y", &Row::max_m_1_y, Quantity::length},
-             {"min_M_2", &Row::min_m_2, Quantity::moment},
-             {"min_M_2_x", &Row::min_m_2_x, Quantity::length},
-             {"min_M_2_y", &Row::min_m_2_y, Quantity::length},
-             {"max_Q", &Row::max_q, Quantity::shear_force},
-             {"max_Q_x", &Row::max_q_x, Quantity::length},
-             {"max_Q_y", &Row::max_q_y, Quantity::length}})
-        add_member(name, member, quantity);
-    for (unsigned int k = 0; k < 3 * moving_load_names.size(); ++k)
-      add(
-        moving_load_names[k / 3] + std::array{"_x", "_y", "_on"}[k % 3],
-        [k](const Row &r) { return r.moving_loads[k]; },
-        k % 3 == 2 ? Quantity::number : Quantity::length);
   }
 
 

@@ -97,11 +97,7 @@ namespace liftoff
     parts.check();
     time_history.check_against(parts.discretization);
     profile_output.check_against(parts.discretization);
-    AssertThrow(!envelopes.is_enabled() || !parts.mesh_refinement.is_enabled(),
-                ExcMessage("Output/Write envelopes = true keeps one value per "
-                           "output point of a mesh that does not change: it "
-                           "cannot be used with Mesh refinement/Adaptive "
-                           "(not yet implemented). Switch one of them off."));
+    envelopes.check_against(parts.mesh_refinement);
     if (parts.is_dynamic())
       profile_output.warn_of_times_not_reached(parts.newmark.end_time,
                                                parts.newmark.time_step,

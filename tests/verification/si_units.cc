@@ -111,7 +111,8 @@ namespace
       set("Analysis/Type", analysis) + set("Discretization/Cells along x", 8)
       + set("Discretization/Cells along y", 8)
       + set("Discretization/Polynomial degree", 2)
-      + set("Output/Write foundation resultant", "true");
+      + set("Output/Write foundation resultant", "true")
+      + set("Output/Write moment extremes", "true");
     const std::string si =
       shared + si_slab(L, H, g) + set("Loads/Point load 1/Magnitude", P)
       + set("Loads/Point load 1/Position", "1, 0.5")
@@ -120,6 +121,7 @@ namespace
       + set("Loads/Pressure 1/Region", "-2, -1, -2, -0.5")
       + set("Loads/Pressure 1/Intensity", "1 + 0.2 * x - 0.1 * y")
       + set("Output/Probe points", "0, 0; 1, 0.5; 2.5, 2.5; -1.5, -1")
+      + set("Output/Probe quantities", "M_xx(1; 0.5), Q_y(-1.5; -1)")
       + set("Time integration/Time step", dt)
       + set("Time integration/End time", end);
     std::ostringstream x_m, y_m, history;
@@ -140,6 +142,7 @@ namespace
       + set("Loads/Pressure 1/Intensity",
             "1 + 0.2 * " + x_m.str() + " - 0.1 * " + y_m.str())
       + set("Output/Probe points", "0, 0; 0.2, 0.1; 0.5, 0.5; -0.3, -0.2")
+      + set("Output/Probe quantities", "M_xx(0.2; 0.1), Q_y(-0.3; -0.2)")
       + set("Time integration/Time step", dt / t0)
       + set("Time integration/End time", end / t0);
 
@@ -182,7 +185,19 @@ namespace
            {"work [J]",
             [](const Row &r) { return r.energies.work; },
             F0 * w_unit,
-            "F0^2 L^2 / D"}})
+            "F0^2 L^2 / D"},
+           {"M_xx(1;0.5) [N m/m]",
+            [](const Row &r) { return r.probe_quantities[0]; },
+            F0,
+            "F0"},
+           {"Q_y(-1.5;-1) [N/m]",
+            [](const Row &r) { return r.probe_quantities[1]; },
+            F0 / L,
+            "F0 / L"},
+           {"max_M_1 [N m/m]",
+            [](const Row &r) { return r.max_m_1; },
+            F0,
+            "F0"}})
       checks.less(analysis + ": " + column + " vs the twin's times " + unit,
                   difference(columns[column], rows, twin_value, scale),
                   1e-9);

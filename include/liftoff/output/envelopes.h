@@ -14,6 +14,7 @@ namespace liftoff
 {
   using namespace dealii;
 
+  class MeshRefinement;
   class RunSummary;
 
   /**
@@ -38,8 +39,9 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
-    bool
-    is_enabled() const;
+    /// Refuses envelopes on a mesh that adapts.
+    void
+    check_against(const MeshRefinement &mesh_refinement) const;
 
     /// The summary's extremes in the scene's units; envelope.pvtu stays in
     /// the solver's, as the field files do.

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace liftoff
@@ -220,6 +221,17 @@ namespace liftoff
     /// The columns of this run, in the file's order; made anew whenever a
     /// parameter that chooses them is set.
     std::vector<Column> columns;
+    using Member =
+      std::tuple<std::string, double Row::*, PhysicalUnits::Quantity>;
+    /// The columns of `members`, in their order.
+    void
+    add_members(const std::vector<Member> &members);
+    void
+    add_probe_columns();
+    void
+    add_energy_columns();
+    void
+    add_quantity_probe_columns();
     void
     make_columns();
     /// Appends the column `name` of `value`, a `quantity` of the solver,
