@@ -85,7 +85,7 @@ namespace liftoff
   UpdateFlags
   StressResultants::get_needed_update_flags() const
   {
-    return update_gradients | update_quadrature_points;
+    return update_values | update_gradients | update_quadrature_points;
   }
 
 
@@ -133,7 +133,11 @@ namespace liftoff
     for (unsigned int q = 0; q < points.size(); ++q)
       unit_points[q] = GeometryInfo<2>::project_to_unit_cell(
         mapping.transform_real_to_unit_cell(cell, points[q]));
-    compute(cell, unit_points, inputs.solution_gradients, computed);
+    compute(cell,
+            unit_points,
+            inputs.solution_values,
+            inputs.solution_gradients,
+            computed);
   }
 
 
@@ -141,10 +145,19 @@ namespace liftoff
   StressResultants::compute(
     const DoFHandler<2>::cell_iterator           &cell,
     const std::vector<Point<2>>                  &unit_points,
+    const std::vector<Vector<double>>            &value,
     const std::vector<std::vector<Tensor<1, 2>>> &gradient,
     std::vector<Vector<double>>                  &computed) const
   {
-    const std::vector<Tensor<1, 2>> gamma = shear_strains(cell, unit_points);
+    // Full and reduced integration use grad w - psi itself: only the
+    // assumed strain needs the element's tying points.
+    std::vector<Tensor<1, 2>> gamma(unit_points.size());
+    if (treatment == TransverseShearStrain::Treatment::mitc)
+      gamma = shear_strains(cell, unit_points);
+    else
+      for (unsigned int q = 0; q < unit_points.size(); ++q)
+        for (unsigned int d = 0; d < 2; ++d)
+          gamma[q][d] = gradient[q][0][d] - value[q][1 + d];
 
     const double nu = plate.poisson_ratio;
     // 6 / Delta^2: the face stress 6 M / H^2 in units of F0 / L^2.
@@ -193,11 +206,17 @@ namespace liftoff
                              std::vector<Vector<double>>        &computed) const
   {
     const unsigned int                     n = values.n_quadrature_points;
+    std::vector<Vector<double>>            point_values(n, Vector<double>(3));
     std::vector<std::vector<Tensor<1, 2>>> gradients(
       n, std::vector<Tensor<1, 2>>(3));
+    values.get_function_values(solution, point_values);
     values.get_function_gradients(solution, gradients);
     computed.resize(n, Vector<double>(names.size()));
-    compute(cell, values.get_quadrature().get_points(), gradients, computed);
+    compute(cell,
+            values.get_quadrature().get_points(),
+            point_values,
+            gradients,
+            computed);
   }
 
 

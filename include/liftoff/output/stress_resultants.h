@@ -95,10 +95,11 @@ namespace liftoff
 
     /// The cell's assumed (or raw) shear strain at `unit_points`.
     /// The fields at points of `cell` given in its unit coordinates, from
-    /// the solution's gradients there.
+    /// the solution's values and gradients there.
     void
     compute(const DoFHandler<2>::cell_iterator           &cell,
             const std::vector<Point<2>>                  &unit_points,
+            const std::vector<Vector<double>>            &values,
             const std::vector<std::vector<Tensor<1, 2>>> &gradients,
             std::vector<Vector<double>>                  &computed) const;
 
