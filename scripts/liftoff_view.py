@@ -5,13 +5,15 @@
 
 (scripts/liftoff-view runs this file with ParaView's pvpython, under
 xvfb-run when there is no display.) Reads OUTPUT_DIRECTORY/solution.pvd and
-used_parameters.prm, reflects a half or quarter model into the whole plate,
+used_parameters.prm (a run of a scene in SI units has its files in m, s,
+Pa, ...: the colour bar names the field's unit, the label the time in s),
+reflects a half or quarter model into the whole plate,
 warps it by the deflection (w > 0 is into the foundation, drawn downwards)
 and colours it by the contact status (the fraction of each cell's Gauss
 points in contact: 1 in contact, 0 lifted off). Writes
 FOLDER/view_NNNNN.png (default OUTPUT_DIRECTORY/pictures), one per output
 time, and view.csv there: per picture tau, the largest w, the bounds of
-the warped plate and the range of the field, which
+the warped plate, the range of the field and its unit, which
 tests/command_line/liftoff_view.sh checks. `--field` colours by any field
 of the files (M_xx, sigma_max, ...); fields that change sign under a
 reflection (Q_x, Q_y, M_xy, sigma_xy, M_1_angle) get that sign on the
@@ -20,6 +22,7 @@ reflected parts.
 
 import argparse
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -59,6 +62,19 @@ def with_reflection_signs(plate, field, symmetry):
                          Function="%s*%s" % (field, factor)), name
 
 
+def field_unit(directory, field):
+    """The unit the files give `field` (their `units` attribute: "m" in a
+    scene in SI units, "F0*L^2/D" in a dimensionless one), or ""."""
+    pvd = open(os.path.join(directory, "solution.pvd")).read()
+    first = re.search(r'file="([^"]+)"', pvd)
+    if not first:
+        return ""
+    record = open(os.path.join(directory, first.group(1))).read()
+    unit = re.search(r'Name="%s"[^>]*units="([^"]*)"' % re.escape(field),
+                     record)
+    return unit.group(1) if unit else ""
+
+
 def largest_deflection(source, times):
     """max |w| over every output time."""
     largest = 0.0
@@ -76,7 +92,8 @@ def main():
                         "(default: DIRECTORY/pictures)")
     parser.add_argument("--scale", type=float,
                         help="drawn z per unit of w (default: the largest "
-                        "|w| over the run drawn as 0.15 L)")
+                        "|w| over the run drawn as 0.15 of the plate's "
+                        "length)")
     parser.add_argument("--size", default="1000,600",
                         help="picture size in pixels, width,height")
     parser.add_argument("--field", default="contact_status",
@@ -101,7 +118,12 @@ def main():
                  "field; they have %s" % (args.field, ", ".join(fields)))
     plate = whole_plate(reader, symmetry)
     largest = largest_deflection(plate, times)
-    scale = args.scale or (0.15 / largest if largest > 0 else 1.0)
+    # The plate's length is 1 in a dimensionless scene, metres in SI.
+    plate.UpdatePipeline(times[0])
+    x_min, x_max = plate.GetDataInformation().GetBounds()[0:2]
+    scale = args.scale or (0.15 * (x_max - x_min) / largest if largest > 0
+                           else 1.0)
+    si = used.get("Units/System") == "SI"
     # z = -scale w: w > 0 is into the foundation, which lies below the
     # plate. Outputs of liftoff before the displacement vector are warped
     # by one made from w.
@@ -141,8 +163,10 @@ def main():
             a, b = plate.PointData[field].GetRange()
             low, high = min(low, a), max(high, b)
         lut.RescaleTransferFunction(low, high if high > low else low + 1)
-        # ParaView adds the unit the files state, as "(F0)".
         titles = field
+    unit = field_unit(args.directory, args.field)
+    if args.field != "contact_status" and unit:
+        titles += " [%s]" % unit
     lut.AutomaticRescaleRangeMode = "Never"
     bar = pv.GetScalarBar(lut, view)
     bar.Title = titles
@@ -158,13 +182,15 @@ def main():
     view.CameraFocalPoint = [0, 0, 0]
     view.CameraViewUp = [0, 0, 1]
     rows = ["picture,tau,max_w,x_min,x_max,y_min,y_max,z_min,z_max,"
-            "field_min,field_max"]
+            "field_min,field_max,field_unit"]
     for k, t in enumerate(times):
         view.ViewTime = t
         warped.UpdatePipeline(t)
-        label.Text = ("%s   tau = %.5g   w drawn x %.3g (down: into the "
+        label.Text = ("%s   %s = %.5g%s   w drawn x %.3g (down: into the "
                       "foundation)" % (os.path.basename(
-                          os.path.normpath(args.directory)), t, scale))
+                          os.path.normpath(args.directory)),
+                          "t" if si else "tau", t, " s" if si else "",
+                          scale))
         if k == 0:
             view.ResetCamera()
         name = "view_%05d.png" % k
@@ -173,8 +199,9 @@ def main():
         bounds = warped.GetDataInformation().GetBounds()
         plate.UpdatePipeline(t)
         max_w = plate.PointData["w"].GetRange()[1]
-        rows.append("%s,%.17g,%.17g,%s" % (name, t, max_w, ",".join(
-            "%.17g" % b for b in bounds + plate.PointData[field].GetRange())))
+        rows.append("%s,%.17g,%.17g,%s,%s" % (name, t, max_w, ",".join(
+            "%.17g" % b for b in bounds + plate.PointData[field].GetRange()),
+            unit))
     with open(os.path.join(pictures, "view.csv"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("liftoff-view: %d picture(s) in %s, warped by %s"

@@ -683,32 +683,43 @@ namespace liftoff
   }
 
 
-  std::pair<double, std::string>
-  PhysicalUnits::si_measure(const Quantity quantity) const
+  PhysicalUnits::Measure
+  PhysicalUnits::measure(const Quantity quantity) const
   {
+    // With F0 = D / L the deflection scale F0 L^2 / D is L and rotations
+    // are in radians; the products are kept so that the table reads as
+    // doc/model.md's units.
     const double w = f0 * length * length / bending_stiffness;
     switch (quantity)
       {
       case Quantity::length:
-        return {length, " [m]"};
+        return {length, "m", "L"};
       case Quantity::deflection:
-        return {w, " [m]"};
+        return {w, "m", "F0*L^2/D"};
       case Quantity::time:
-        return {t0, " [s]"};
+        return {t0, "s", "t0"};
       case Quantity::force:
-        return {f0, " [N]"};
+        return {f0, "N", "F0"};
       case Quantity::pressure:
-        return {f0 / (length * length), " [Pa]"};
+        return {f0 / (length * length), "Pa", "F0/L^2"};
       case Quantity::area:
-        return {length * length, " [m^2]"};
+        return {length * length, "m^2", "L^2"};
       case Quantity::energy:
-        return {f0 * w, " [J]"};
+        return {f0 * w, "J", "F0^2*L^2/D"};
       case Quantity::moment:
-        return {f0, " [N m/m]"};
+        return {f0, "N m/m", "F0"};
       case Quantity::shear_force:
-        return {f0 / length, " [N/m]"};
+        return {f0 / length, "N/m", "F0/L"};
+      case Quantity::rotation:
+        return {w / length, "rad", "F0*L/D"};
+      case Quantity::velocity:
+        return {w / t0, "m/s", "F0*L^2/(D*t0)"};
+      case Quantity::angular_velocity:
+        return {w / (length * t0), "rad/s", "F0*L/(D*t0)"};
+      case Quantity::angle_degrees:
+        return {1, "degree", "degree"};
       default:
-        return {1, ""};
+        return {1, "1", "1"};
       }
   }
 
@@ -716,13 +727,22 @@ namespace liftoff
   double
   PhysicalUnits::scale(const Quantity quantity) const
   {
-    return is_physical() ? si_measure(quantity).first : 1;
+    return is_physical() ? measure(quantity).si_scale : 1;
   }
 
 
   std::string
   PhysicalUnits::unit(const Quantity quantity) const
   {
-    return is_physical() ? si_measure(quantity).second : "";
+    const std::string symbol = measure(quantity).si_symbol;
+    return is_physical() && symbol != "1" ? " [" + symbol + "]" : "";
+  }
+
+
+  std::string
+  PhysicalUnits::unit_symbol(const Quantity quantity) const
+  {
+    const Measure m = measure(quantity);
+    return is_physical() ? m.si_symbol : m.scales;
   }
 } // namespace liftoff

@@ -20,13 +20,12 @@ namespace liftoff
   {
     /// An envelope's quantity: its name in the files, the sign that makes
     /// its extreme a largest value (-1 for a smallest one), the value at a
-    /// point and its unit (doc/model.md).
+    /// point and what it is, for its unit (doc/model.md).
     struct Kind
     {
       const char *name;
       double      sign;
       double (*value)(const ResultantSweep::Values &);
-      const char             *unit;
       PhysicalUnits::Quantity quantity;
     };
 
@@ -34,27 +33,22 @@ namespace liftoff
       {{"w_max",
         1,
         [](const ResultantSweep::Values &v) { return v.w; },
-        "F0*L^2/D",
         PhysicalUnits::Quantity::deflection},
        {"w_min",
         -1,
         [](const ResultantSweep::Values &v) { return v.w; },
-        "F0*L^2/D",
         PhysicalUnits::Quantity::deflection},
        {"foundation_pressure_max",
         1,
         [](const ResultantSweep::Values &v) { return v.pressure; },
-        "F0/L^2",
         PhysicalUnits::Quantity::pressure},
        {"M_1_max",
         1,
         [](const ResultantSweep::Values &v) { return v.m_1; },
-        "F0",
         PhysicalUnits::Quantity::moment},
        {"M_2_min",
         -1,
         [](const ResultantSweep::Values &v) { return v.m_2; },
-        "F0",
         PhysicalUnits::Quantity::moment}}};
   } // namespace
 
@@ -182,8 +176,8 @@ namespace liftoff
               ++i;
             }
         }
-    DataOut<2>                         data_out;
-    std::map<std::string, std::string> units;
+    FieldDataOut                                   data_out;
+    std::map<std::string, PhysicalUnits::Quantity> quantities;
     data_out.attach_dof_handler(point_dofs);
     for (unsigned int e = 0; e < kinds.size(); ++e)
       {
@@ -192,17 +186,18 @@ namespace liftoff
         const std::string name = kinds[e].name;
         data_out.add_data_vector(fields[2 * e], name);
         data_out.add_data_vector(fields[2 * e + 1], name + "_time");
-        units[name]           = kinds[e].unit;
-        units[name + "_time"] = "t0";
+        quantities[name]           = kinds[e].quantity;
+        quantities[name + "_time"] = PhysicalUnits::Quantity::time;
       }
     data_out.build_patches(disc.mapping, element.degree);
+    const double time = units.scale(PhysicalUnits::Quantity::time) * last_time;
     DataOutBase::VtkFlags flags;
-    flags.time              = last_time;
-    flags.physical_units    = units;
+    flags.time              = time;
+    flags.physical_units    = data_out.put_in_units_of(units, quantities);
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
     write_vtu_pieces(
-      directory, data_out, disc.mpi_communicator, last_time, "envelope", true);
+      directory, data_out, disc.mpi_communicator, time, "envelope", true);
   }
 
 

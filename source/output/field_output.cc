@@ -67,18 +67,7 @@ namespace liftoff
     };
 
 
-    /// DataOut with its patches, names and vector ranges public, for
-    /// PlateFields.
-    class PlaneDataOut : public DataOut<2>
-    {
-    public:
-      using DataOut<2>::get_dataset_names;
-      using DataOut<2>::get_nonscalar_data_ranges;
-      using DataOut<2>::get_patches;
-    };
-
-
-    /// The fields of a PlaneDataOut with the plate placed at z = 0 in
+    /// The fields of a FieldDataOut with the plate placed at z = 0 in
     /// three dimensions, and two vectors added for ParaView (Glyph,
     /// WarpByVector): the rotation (psi_x, psi_y, 0) and the displacement
     /// (0, 0, w), w > 0 into the foundation. deal.II takes a vector of a 2d
@@ -88,7 +77,7 @@ namespace liftoff
     class PlateFields : public DataOutInterface<2, 3>
     {
     public:
-      explicit PlateFields(const PlaneDataOut &plane)
+      explicit PlateFields(const FieldDataOut &plane)
           : names(plane.get_dataset_names())
           , ranges(plane.get_nonscalar_data_ranges())
       {
@@ -175,34 +164,32 @@ namespace liftoff
     };
 
 
-    /// The units of the fields, in the dimensionless variables of
-    /// doc/model.md (F0 the load scale, L the length, D the bending
-    /// stiffness, t0 the time scale); those of the moment fields are
-    /// StressResultants::units().
-    const std::map<std::string, std::string> state_units = {
-      {"w", "F0*L^2/D"},
-      {"psi_x", "F0*L/D"},
-      {"psi_y", "F0*L/D"},
-      {"w_dot", "F0*L^2/(D*t0)"},
-      {"psi_x_dot", "F0*L/(D*t0)"},
-      {"psi_y_dot", "F0*L/(D*t0)"},
-      {"rotation", "F0*L/D"},
-      {"displacement", "F0*L^2/D"},
-      {"foundation_pressure", "F0/L^2"},
-      {"uplift", "F0*L^2/D"},
-      {"contact_status", "1"}};
-
-
-    std::map<std::string, std::string>
-    all_field_units()
+    /// What each field is, for its unit and scale: the state's and the
+    /// foundation's here, the moments' in StressResultants; rotation and
+    /// displacement are PlateFields' vectors.
+    std::map<std::string, PhysicalUnits::Quantity>
+    all_field_quantities()
     {
-      std::map<std::string, std::string> units = state_units;
-      units.insert(StressResultants::units().begin(),
-                   StressResultants::units().end());
-      return units;
+      using Quantity                             = PhysicalUnits::Quantity;
+      std::map<std::string, Quantity> quantities = {
+        {"w", Quantity::deflection},
+        {"psi_x", Quantity::rotation},
+        {"psi_y", Quantity::rotation},
+        {"w_dot", Quantity::velocity},
+        {"psi_x_dot", Quantity::angular_velocity},
+        {"psi_y_dot", Quantity::angular_velocity},
+        {"rotation", Quantity::rotation},
+        {"displacement", Quantity::deflection},
+        {"foundation_pressure", Quantity::pressure},
+        {"uplift", Quantity::deflection},
+        {"contact_status", Quantity::number}};
+      quantities.insert(StressResultants::quantities().begin(),
+                        StressResultants::quantities().end());
+      return quantities;
     }
 
-    const std::map<std::string, std::string> field_units = all_field_units();
+    const std::map<std::string, PhysicalUnits::Quantity> field_quantities =
+      all_field_quantities();
 
 
     /// Whether `filter` holds the data set `name`.
@@ -225,28 +212,33 @@ namespace liftoff
     void
     add_hdf5_metadata(const std::string                &path,
                       const DataOutBase::DataOutFilter &filter,
+                      const PhysicalUnits              &units,
                       const double                      time,
                       const unsigned int                step)
     {
+      using Quantity = PhysicalUnits::Quantity;
       HDF5::File file(path, HDF5::File::FileAccessMode::open);
       file.set_attribute("time", time);
-      file.set_attribute("time_units", std::string("t0"));
+      file.set_attribute("time_units", units.unit_symbol(Quantity::time));
       file.set_attribute("step", step);
-      file.set_attribute("scales",
-                         std::string(
-                           "L the plate's length along x, F0 the "
-                           "load scale, D the bending stiffness, "
-                           "t0 = L^2 sqrt(rho H / D) (doc/model.md)"));
+      if (!units.is_physical())
+        file.set_attribute("scales",
+                           std::string(
+                             "L the plate's length along x, F0 the "
+                             "load scale, D the bending stiffness, "
+                             "t0 = L^2 sqrt(rho H / D) (doc/model.md)"));
       file.set_attribute("liftoff", written_by);
       if (filter_has(filter, "M_xx"))
         file.set_attribute("moment_sign_convention",
                            StressResultants::sign_convention);
-      file.open_dataset("nodes").set_attribute("units", std::string("L"));
+      file.open_dataset("nodes").set_attribute(
+        "units", units.unit_symbol(Quantity::length));
       for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
         {
-          const auto unit = field_units.find(filter.get_data_set_name(i));
-          if (unit != field_units.end())
-            file.open_dataset(unit->first).set_attribute("units", unit->second);
+          const auto q = field_quantities.find(filter.get_data_set_name(i));
+          if (q != field_quantities.end())
+            file.open_dataset(q->first).set_attribute(
+              "units", units.unit_symbol(q->second));
         }
     }
 
@@ -292,6 +284,7 @@ namespace liftoff
     void
     write_hdf5(const std::string                                 &directory,
                const DataOutInterface<2, 3>                      &data_out,
+               const PhysicalUnits                               &units,
                const MPI_Comm                                     comm,
                const double                                       time,
                const unsigned int                                 step,
@@ -316,7 +309,7 @@ namespace liftoff
       collective_attempt(comm, "Writing " + name + " failed", [&]() {
         if (rank != 0)
           return;
-        add_hdf5_metadata(path + ".tmp", filter, time, step);
+        add_hdf5_metadata(path + ".tmp", filter, units, time, step);
         if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
           throw std::runtime_error("cannot rename " + path + ".tmp");
         // After a resume rank 0, which alone writes solution.xdmf, first
@@ -425,15 +418,16 @@ namespace liftoff
   namespace
   {
     DataOutBase::VtkFlags
-    vtk_flags(const double       time,
-              const unsigned int step,
-              const bool         higher_order_cells)
+    vtk_flags(const double                              time,
+              const unsigned int                        step,
+              const bool                                higher_order_cells,
+              const std::map<std::string, std::string> &units)
     {
       DataOutBase::VtkFlags flags;
       flags.time                     = time;
       flags.cycle                    = step;
       flags.write_higher_order_cells = higher_order_cells;
-      flags.physical_units           = field_units;
+      flags.physical_units           = units;
       // zlib's fastest level: its best compression took 40 % of the field
       // output's time (Example 2 pulse, 100 files) for files 6 % smaller.
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
@@ -465,7 +459,7 @@ namespace liftoff
                      const double                        time,
                      const unsigned int                  step)
   {
-    PlaneDataOut plane;
+    FieldDataOut plane;
     plane.attach_dof_handler(disc.dof_handler);
     plane.add_data_vector(solution,
                           std::vector<std::string>{"w", "psi_x", "psi_y"});
@@ -496,17 +490,28 @@ namespace liftoff
     plane.build_patches(disc.mapping,
                         subdivisions > 0 ? subdivisions
                                          : disc.element().degree());
+    std::map<std::string, std::string> symbols =
+      plane.put_in_units_of(units, field_quantities);
+    for (const std::string vector : {"rotation", "displacement"})
+      symbols[vector] = units.unit_symbol(field_quantities.at(vector));
     PlateFields data_out(plane);
 
-    data_out.set_flags(vtk_flags(time, step, higher_order_cells));
+    data_out.set_flags(vtk_flags(time, step, higher_order_cells, symbols));
 
     const MPI_Comm    comm = disc.mpi_communicator;
     const std::string stem = "solution_" + Utilities::int_to_string(step, 5);
     const std::string master =
       write_vtu_pieces(directory, data_out, comm, time, stem, writes_moments);
     if (writes_hdf5)
-      write_hdf5(
-        directory, data_out, comm, time, step, stem, records, xdmf_entries);
+      write_hdf5(directory,
+                 data_out,
+                 units,
+                 comm,
+                 time,
+                 step,
+                 stem,
+                 records,
+                 xdmf_entries);
     records.emplace_back(time, master);
     write_record(directory,
                  comm,
@@ -539,6 +544,13 @@ namespace liftoff
 
 
   void
+  FieldOutput::write_in_units_of(const PhysicalUnits &scene_units)
+  {
+    units = scene_units;
+  }
+
+
+  void
   FieldOutput::setup(const Discretization &disc, const std::string &folder)
   {
     directory = folder;
@@ -565,7 +577,7 @@ namespace liftoff
           step.foundation,
           step.state.ghosted_u,
           ghosted_velocity,
-          step.state.tau,
+          units.scale(PhysicalUnits::Quantity::time) * step.state.tau,
           step.state.step);
   }
 

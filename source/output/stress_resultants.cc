@@ -48,22 +48,23 @@ namespace liftoff
   {}
 
 
-  const std::map<std::string, std::string> &
-  StressResultants::units()
+  const std::map<std::string, PhysicalUnits::Quantity> &
+  StressResultants::quantities()
   {
-    static const std::map<std::string, std::string> table = {
-      {"M_xx", "F0"},
-      {"M_yy", "F0"},
-      {"M_xy", "F0"},
-      {"Q_x", "F0/L"},
-      {"Q_y", "F0/L"},
-      {"M_1", "F0"},
-      {"M_2", "F0"},
-      {"M_1_angle", "degree"},
-      {"sigma_xx", "F0/L^2"},
-      {"sigma_yy", "F0/L^2"},
-      {"sigma_xy", "F0/L^2"},
-      {"sigma_max", "F0/L^2"}};
+    using Quantity = PhysicalUnits::Quantity;
+    static const std::map<std::string, Quantity> table = {
+      {"M_xx", Quantity::moment},
+      {"M_yy", Quantity::moment},
+      {"M_xy", Quantity::moment},
+      {"Q_x", Quantity::shear_force},
+      {"Q_y", Quantity::shear_force},
+      {"M_1", Quantity::moment},
+      {"M_2", Quantity::moment},
+      {"M_1_angle", Quantity::angle_degrees},
+      {"sigma_xx", Quantity::pressure},
+      {"sigma_yy", Quantity::pressure},
+      {"sigma_xy", Quantity::pressure},
+      {"sigma_max", Quantity::pressure}};
     return table;
   }
 

@@ -49,19 +49,6 @@ namespace liftoff
     }
 
 
-    /// The kind of a stress resultant's unit.
-    PhysicalUnits::Quantity
-    quantity_of(const std::string &field)
-    {
-      using Quantity = PhysicalUnits::Quantity;
-      if (field == "M_1_angle")
-        return Quantity::number;
-      return field[0] == 'M'   ? Quantity::moment
-             : field[0] == 'Q' ? Quantity::shear_force
-                               : Quantity::pressure;
-    }
-
-
     /// "M_xx(0.25; 0), Q_x(0.5; 0)" as the quantities and points it names.
     std::vector<std::pair<std::string, Point<2>>>
     parse_quantity_list(const std::string &text)
@@ -376,7 +363,7 @@ namespace liftoff
       add_column(
         names[k],
         [k](const Row &r) { return r.probe_quantities[k]; },
-        quantity_of(quantity_probes[k].quantity));
+        StressResultants::quantities().at(quantity_probes[k].quantity));
   }
 
 

@@ -56,6 +56,41 @@ namespace liftoff
   } // namespace
 
 
+  std::map<std::string, std::string>
+  FieldDataOut::put_in_units_of(
+    const PhysicalUnits                                  &units,
+    const std::map<std::string, PhysicalUnits::Quantity> &quantities)
+  {
+    using Quantity                           = PhysicalUnits::Quantity;
+    const std::vector<std::string>     names = get_dataset_names();
+    std::map<std::string, std::string> symbols;
+    std::vector<double>                row_scales(names.size(), 1.0);
+    for (unsigned int r = 0; r < names.size(); ++r)
+      if (const auto q = quantities.find(names[r]); q != quantities.end())
+        {
+          symbols[names[r]] = units.unit_symbol(q->second);
+          row_scales[r]     = units.scale(q->second);
+        }
+    if (!units.is_physical())
+      return symbols;
+    const double length = units.scale(Quantity::length);
+    for (auto &patch : patches)
+      {
+        for (auto &vertex : patch.vertices)
+          vertex *= length;
+        // The rows: the data sets, then (where the mapping gave them) the
+        // coordinates of the points.
+        for (unsigned int r = 0; r < patch.data.n_rows(); ++r)
+          {
+            const double scale = r < names.size() ? row_scales[r] : length;
+            for (unsigned int k = 0; k < patch.data.n_cols(); ++k)
+              patch.data(r, k) *= scale;
+          }
+      }
+    return symbols;
+  }
+
+
   // Every file goes to a temporary name first and is renamed when
   // complete, and the record naming the pieces is written only after every
   // rank has renamed its piece: a viewer never finds a half-written file.

@@ -34,16 +34,20 @@ namespace liftoff
     /// What an output value is, for its scale and unit.
     enum class Quantity
     {
-      number,      ///< dimensionless in both systems (nu, fractions)
-      length,      ///< positions: L
-      deflection,  ///< w, gaps: F0 L^2 / D
-      time,        ///< t0
-      force,       ///< F0
-      pressure,    ///< F0 / L^2
-      area,        ///< L^2
-      energy,      ///< F0^2 L^2 / D
-      moment,      ///< a moment per unit length, F0
-      shear_force, ///< a force per unit length, F0 / L
+      number,           ///< dimensionless in both systems (nu, fractions)
+      length,           ///< positions: L
+      deflection,       ///< w, gaps: F0 L^2 / D
+      time,             ///< t0
+      force,            ///< F0
+      pressure,         ///< F0 / L^2
+      area,             ///< L^2
+      energy,           ///< F0^2 L^2 / D
+      moment,           ///< a moment per unit length, F0
+      shear_force,      ///< a force per unit length, F0 / L
+      rotation,         ///< psi, F0 L / D (radians)
+      velocity,         ///< of w, F0 L^2 / (D t0)
+      angular_velocity, ///< of psi, F0 L / (D t0)
+      angle_degrees,    ///< degrees in both systems
     };
 
     /// The subsection `Units`; declared after the groups an SI scene
@@ -97,6 +101,12 @@ namespace liftoff
     std::string
     unit(const Quantity quantity) const;
 
+    /// The unit of `quantity` as the field files' metadata name it: "m",
+    /// "Pa", ... in an SI scene; the dimensionless scales it is made of
+    /// ("F0*L^2/D", doc/model.md) in a dimensionless one.
+    std::string
+    unit_symbol(const Quantity quantity) const;
+
   private:
     System system = System::dimensionless;
 
@@ -116,9 +126,16 @@ namespace liftoff
     void
     check_physical_values(ParameterHandler &scene) const;
 
-    /// One unit of the solver's `quantity` in SI, and its unit's name.
-    std::pair<double, std::string>
-    si_measure(const Quantity quantity) const;
+    /// One unit of the solver's `quantity`: its value in SI, the SI
+    /// unit's symbol, and the dimensionless scales it is made of.
+    struct Measure
+    {
+      double      si_scale;
+      const char *si_symbol;
+      const char *scales;
+    };
+    Measure
+    measure(const Quantity quantity) const;
 
     /// Sets every entry of `dimensionless` (declared as `scene` is) to the
     /// SI scene's value, converted; its Units are left at their defaults.

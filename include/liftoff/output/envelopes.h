@@ -43,8 +43,7 @@ namespace liftoff
     void
     check_against(const MeshRefinement &mesh_refinement) const;
 
-    /// The summary's extremes in the scene's units; envelope.pvtu stays in
-    /// the solver's, as the field files do.
+    /// The summary's extremes and envelope.pvtu in the scene's units.
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <liftoff/base/archive_types.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
@@ -44,6 +45,8 @@ namespace liftoff
     bool
     is_due(const unsigned int step, const bool is_last_step) const;
 
+    /// The fields of the state, in the scene's units (write_in_units_of())
+    /// at `time`, given in them.
     void
     write(const std::string                  &directory,
           const Discretization               &discretization,
@@ -60,6 +63,12 @@ namespace liftoff
     write_record(const std::string &directory,
                  const MPI_Comm     comm,
                  const bool         is_due);
+
+    /// An SI scene's files hold SI values, coordinates in metres and
+    /// times in seconds, each field with its unit (VTU `units`, HDF5
+    /// attributes).
+    void
+    write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
     setup(const Discretization &discretization,
@@ -86,6 +95,7 @@ namespace liftoff
     bool                                        writes_hdf5        = false;
     bool                                        writes_moments     = true;
     MindlinPlate                                plate;
+    PhysicalUnits                               units;
     std::vector<std::pair<double, std::string>> records;
     std::string                                 directory;
     const Discretization                       *discretization = nullptr;

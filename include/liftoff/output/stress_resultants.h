@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <liftoff/base/linear_algebra.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/transverse_shear_strain.h>
 
@@ -42,9 +43,9 @@ namespace liftoff
                      const TransverseShearStrain::Treatment treatment,
                      const LA::MPI::Vector                 &solution);
 
-    /// Field name -> unit, in the dimensionless variables of doc/model.md.
-    static const std::map<std::string, std::string> &
-    units();
+    /// Field name -> what it is, for its unit and scale.
+    static const std::map<std::string, PhysicalUnits::Quantity> &
+    quantities();
     /// Which face a positive moment puts in tension, for the files.
     static const std::string sign_convention;
 

@@ -1,9 +1,13 @@
 #pragma once
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <liftoff/base/physical_units.h>
 
 #include <mpi.h>
 
+#include <map>
 #include <string>
 
 namespace liftoff
@@ -12,6 +16,30 @@ namespace liftoff
 
   /// The liftoff that writes the files, as `liftoff --version` names it.
   extern const std::string written_by;
+
+  /**
+   * DataOut whose patches are put in a scene's units after
+   * build_patches(), so that an SI run's field files hold metres, pascals,
+   * seconds as its history does; and whose patches, names and vector ranges
+   * are public, for outputs that build other patches from them.
+   */
+  class FieldDataOut : public DataOut<2>
+  {
+  public:
+    using DataOut<2>::get_dataset_names;
+    using DataOut<2>::get_nonscalar_data_ranges;
+    using DataOut<2>::get_patches;
+
+    /// Scales the coordinates and the data sets that `quantities` names
+    /// (others are numbers: ranks, levels) to `units`, and returns every
+    /// named data set's unit for DataOutBase::VtkFlags::physical_units. A
+    /// dimensionless scene's patches stay as they are, bit for bit.
+    std::map<std::string, std::string>
+    put_in_units_of(
+      const PhysicalUnits                                  &units,
+      const std::map<std::string, PhysicalUnits::Quantity> &quantities);
+  };
+
 
   /// The pieces of one output (stem.NNNN.vtu, one per rank) and the .pvtu
   /// that names them, each written atomically and with liftoff's metadata
