@@ -228,6 +228,25 @@ namespace liftoff
                   path + " = <" + entries.at(path).value + ">");
       }
 
+      // A point the scene gives in metres from the plate's centre is
+      // refused in metres if it lies outside the plate.
+      void
+      check_on_plate(const std::string &path,
+                     const std::string &point,
+                     const double       x,
+                     const double       y) const
+      {
+        AssertThrow(std::abs(x) <= length / 2 * (1 + 1e-12)
+                      && std::abs(y) <= width / 2 * (1 + 1e-12),
+                    ExcMessage(path + ": the point " + point
+                               + " [m] lies outside the plate, [-"
+                               + format_number(length / 2) + ", "
+                               + format_number(length / 2) + "] x [-"
+                               + format_number(width / 2) + ", "
+                               + format_number(width / 2)
+                               + "] m with its centre at the origin."));
+      }
+
       // Points "x, y" separated by `separator`, in metres from the
       // plate's centre; one outside the plate is refused in metres.
       void
@@ -239,15 +258,7 @@ namespace liftoff
           {
             const auto xy = Utilities::string_to_double(
               Utilities::split_string_list(point, ','));
-            AssertThrow(std::abs(xy[0]) <= length / 2 * (1 + 1e-12)
-                          && std::abs(xy[1]) <= width / 2 * (1 + 1e-12),
-                        ExcMessage(path + ": the point " + point
-                                   + " [m] lies outside the plate, [-"
-                                   + format_number(length / 2) + ", "
-                                   + format_number(length / 2) + "] x [-"
-                                   + format_number(width / 2) + ", "
-                                   + format_number(width / 2)
-                                   + "] m with its centre at the origin."));
+            check_on_plate(path, point, xy[0], xy[1]);
             result += (result.empty() ? "" : std::string(1, separator) + " ")
                       + divided_list(point, length);
           }
@@ -376,8 +387,14 @@ namespace liftoff
                        ? divided_list(x, length)
                        : x;
             };
-            result += "(" + coordinate((*i)[1].str()) + "; "
-                      + coordinate((*i)[2].str()) + ")";
+            const std::string x = (*i)[1].str(), y = (*i)[2].str();
+            if (Patterns::Double().match(Utilities::trim(x))
+                && Patterns::Double().match(Utilities::trim(y)))
+              check_on_plate(path,
+                             (*i)[0].str(),
+                             Utilities::string_to_double(Utilities::trim(x)),
+                             Utilities::string_to_double(Utilities::trim(y)));
+            result += "(" + coordinate(x) + "; " + coordinate(y) + ")";
           }
         set_entry(out,
                   path,
@@ -667,6 +684,31 @@ namespace liftoff
                         std::pow(bending_stiffness / subgrade_modulus, 0.25));
     list.emplace_back("F0 = D/L [N]", f0);
     return list;
+  }
+
+
+  void
+  PhysicalUnits::explain_errors_of(const std::function<void()> &read) const
+  {
+    if (!is_physical())
+      return read();
+    try
+      {
+        read();
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(message_of(e)
+                               + " (This SI scene runs as its dimensionless "
+                                 "twin, whose numbers the message quotes: "
+                                 "lengths in L = "
+                               + format_number(length)
+                               + " m, times in t0 = " + format_number(t0)
+                               + " s, forces in F0 = " + format_number(f0)
+                               + " N; doc/model.md, \"Scenes in SI "
+                                 "units\".)"));
+      }
   }
 
 

@@ -70,24 +70,26 @@ namespace liftoff
   {
     units.parse_parameters(prm);
     ParameterHandler &scene = units.solver_scene(prm, declare_parameters);
-    parts.parse_parameters(scene);
-    scene.enter_subsection("Output");
-    output_directory = scene.get("Directory");
-    time_history.parse_parameters(scene, parts.plate);
-    profile_output.parse_parameters(scene);
-    field_output.parse_parameters(scene, parts.plate);
-    envelopes.parse_parameters(scene);
-    scene.leave_subsection();
-    time_history.show_dissipated_energy(parts.foundation.has_damping());
-    time_history.follow(parts.loads.moving_load_names(),
-                        [this](const double tau) {
-                          return parts.loads.moving_load_positions(tau);
-                        });
-    for (Output *output : outputs)
-      output->write_in_units_of(units);
-    checkpoint.parse_parameters(scene);
+    units.explain_errors_of([&]() {
+      parts.parse_parameters(scene);
+      scene.enter_subsection("Output");
+      output_directory = scene.get("Directory");
+      time_history.parse_parameters(scene, parts.plate);
+      profile_output.parse_parameters(scene);
+      field_output.parse_parameters(scene, parts.plate);
+      envelopes.parse_parameters(scene);
+      scene.leave_subsection();
+      time_history.show_dissipated_energy(parts.foundation.has_damping());
+      time_history.follow(parts.loads.moving_load_names(),
+                          [this](const double tau) {
+                            return parts.loads.moving_load_positions(tau);
+                          });
+      for (Output *output : outputs)
+        output->write_in_units_of(units);
+      checkpoint.parse_parameters(scene);
 
-    check_scene();
+      check_scene();
+    });
   }
 
 

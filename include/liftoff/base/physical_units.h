@@ -74,6 +74,12 @@ namespace liftoff
     solver_scene(ParameterHandler                              &scene,
                  const std::function<void(ParameterHandler &)> &declare);
 
+    /// Runs `read`, the parts reading solver_scene(); in an SI scene an
+    /// error they raise, which quotes the dimensionless twin's numbers, is
+    /// raised again with the scales that convert them.
+    void
+    explain_errors_of(const std::function<void()> &read) const;
+
     /// used_parameters.prm: `scene_text` (the scene as written), and for
     /// an SI scene its dimensionless twin after it as comments.
     std::string
