@@ -451,15 +451,12 @@ namespace liftoff
 
 
   void
-  FieldOutput::write(const std::string                  &directory,
-                     const Discretization               &disc,
-                     const TensionlessWinklerFoundation &foundation,
-                     const LA::MPI::Vector              &solution,
-                     const LA::MPI::Vector              &velocity,
-                     const double                        time,
-                     const unsigned int                  step)
+  FieldOutput::build_patches(FieldDataOut                       &plane,
+                             const Discretization               &disc,
+                             const TensionlessWinklerFoundation &foundation,
+                             const LA::MPI::Vector              &solution,
+                             const LA::MPI::Vector              &velocity) const
   {
-    FieldDataOut plane;
     plane.attach_dof_handler(disc.dof_handler);
     plane.add_data_vector(solution,
                           std::vector<std::string>{"w", "psi_x", "psi_y"});
@@ -490,6 +487,20 @@ namespace liftoff
     plane.build_patches(disc.mapping,
                         subdivisions > 0 ? subdivisions
                                          : disc.element().degree());
+  }
+
+
+  void
+  FieldOutput::write(const std::string                  &directory,
+                     const Discretization               &disc,
+                     const TensionlessWinklerFoundation &foundation,
+                     const LA::MPI::Vector              &solution,
+                     const LA::MPI::Vector              &velocity,
+                     const double                        time,
+                     const unsigned int                  step)
+  {
+    FieldDataOut plane;
+    build_patches(plane, disc, foundation, solution, velocity);
     std::map<std::string, std::string> symbols =
       plane.put_in_units_of(units, field_quantities);
     for (const std::string vector : {"rotation", "displacement"})

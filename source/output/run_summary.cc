@@ -1,11 +1,14 @@
 #include <deal.II/base/utilities.h>
 
+#include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/solver/linear_solver.h>
+#include <liftoff/time/energy_check.h>
+#include <liftoff/time/time_stepper.h>
 
 #include <nlohmann/json.hpp>
 
@@ -141,6 +144,29 @@ namespace liftoff
     add("degree", double(discretization.element().degree()));
     add("element", discretization.element().name());
     add("dofs", double(discretization.dof_handler.n_dofs()));
+  }
+
+
+  void
+  RunSummary::add_checks(const TimeStepper &stepper,
+                         const EnergyCheck &energy_check,
+                         const bool         is_dynamic,
+                         const double       beta)
+  {
+    if (is_dynamic && energy_check.is_enabled() && !stepper.checks_energy())
+      add("energy balance",
+          "not checked: Time integration/Beta = " + format_number(beta)
+            + " with Gamma = 1/2 conserves a modified energy");
+    if (stepper.static_equilibrium_imbalance() >= 0)
+      add("static equilibrium, bed against loads (relative)",
+          stepper.static_equilibrium_imbalance());
+    if (stepper.checks_energy())
+      {
+        add("energy balance error, largest share of the energy scale",
+            energy_check.largest_relative_error());
+        add("energy balance error, its step",
+            double(energy_check.step_of_largest_error()));
+      }
   }
 
 

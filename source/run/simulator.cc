@@ -564,7 +564,10 @@ namespace liftoff
                     largest_energy_jump);
       }
     summary.add("steps", double(rows.empty() ? 0 : rows.size() - 1));
-    add_energy_balance(summary);
+    summary.add_checks(*stepper,
+                       parts.energy_check,
+                       parts.is_dynamic(),
+                       parts.newmark.beta);
     summary.add("active-set iterations per step, mean", iterations.mean);
     summary.add("active-set iterations per step, max", double(iterations.max));
     summary.add("steps whose active set cycled", double(iterations.n_cycled));
@@ -572,28 +575,6 @@ namespace liftoff
     summary.add_linear_solver(parts.active_set.linear_solver());
     summary.add_resources(timer, wall_clock.wall_time(), mpi_communicator);
     return summary;
-  }
-
-
-  void
-  Simulator::add_energy_balance(RunSummary &summary) const
-  {
-    if (parts.is_dynamic() && parts.energy_check.is_enabled()
-        && !stepper->checks_energy())
-      summary.add("energy balance",
-                  "not checked: Time integration/Beta = "
-                    + format_number(parts.newmark.beta)
-                    + " with Gamma = 1/2 conserves a modified energy");
-    if (stepper->static_equilibrium_imbalance() >= 0)
-      summary.add("static equilibrium, bed against loads (relative)",
-                  stepper->static_equilibrium_imbalance());
-    if (stepper->checks_energy())
-      {
-        summary.add("energy balance error, largest share of the energy scale",
-                    parts.energy_check.largest_relative_error());
-        summary.add("energy balance error, its step",
-                    double(parts.energy_check.step_of_largest_error()));
-      }
   }
 
 

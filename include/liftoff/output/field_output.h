@@ -10,6 +10,7 @@
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/output/output.h>
+#include <liftoff/output/vtu_pieces.h>
 
 #include <string>
 #include <utility>
@@ -89,6 +90,16 @@ namespace liftoff
     load(InputArchive &archive) override;
 
   private:
+    /// The fields of the state, the foundation, the moments and the cells
+    /// in `plane`, with its patches built (the postprocessors and cell
+    /// vectors it reads live here until then).
+    void
+    build_patches(FieldDataOut                       &plane,
+                  const Discretization               &disc,
+                  const TensionlessWinklerFoundation &foundation,
+                  const LA::MPI::Vector              &solution,
+                  const LA::MPI::Vector              &velocity) const;
+
     unsigned int                                interval           = 10;
     bool                                        higher_order_cells = false;
     unsigned int                                subdivisions       = 0;

@@ -10,6 +10,8 @@
 namespace liftoff
 {
   class Discretization;
+  class EnergyCheck;
+  class TimeStepper;
   class PhysicalUnits;
   class LinearSolver;
   class SectionTimer;
@@ -36,6 +38,14 @@ namespace liftoff
     /// the mesh (ranks, cells, element, dofs, collective), ...
     void
     add_mesh(const Discretization &discretization);
+    /// ... the checks the run made of its answer: the energy balance (or
+    /// why it was not checked, with Newmark's `beta`), the static
+    /// equilibrium of bed and loads, ...
+    void
+    add_checks(const TimeStepper &stepper,
+               const EnergyCheck &energy_check,
+               const bool         is_dynamic,
+               const double       beta);
     /// ... the linear solver's factorisations, substitutions and CG work,
     /// ...
     void

@@ -240,8 +240,6 @@ namespace liftoff
     RunSummary
     summary_of_run(const std::string &status) const;
     void
-    add_energy_balance(RunSummary &summary) const;
-    void
     write_summary(const std::string &status) const;
     bool
     writes_files() const;
