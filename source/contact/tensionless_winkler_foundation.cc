@@ -257,6 +257,31 @@ namespace liftoff
 
 
   void
+  TensionlessWinklerFoundation::add_unstored_spring_force(
+    const LA::MPI::Vector &u,
+    LA::MPI::Vector       &vector) const
+  {
+    const std::vector<unsigned char> every_point(in_contact.size(), 1);
+    const unsigned int               n_q   = points.n_q_points();
+    const double                     gamma = contact_law.stiffness();
+    term.add_integral(
+      every_point,
+      1.0,
+      [&](const unsigned int c, std::vector<double> &values) {
+        points.values_at_points(u, c, values);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int i           = c * n_q + q;
+            const double       compression = values[q] - contact_law.gap(i);
+            values[q] = (in_contact[i] ? gamma * compression : 0.0)
+                        - contact_law.spring_pressure(compression);
+          }
+      },
+      vector);
+  }
+
+
+  void
   TensionlessWinklerFoundation::save(OutputArchive &archive) const
   {
     archive << in_contact;

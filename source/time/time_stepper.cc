@@ -91,7 +91,7 @@ namespace liftoff
                          &u_next,
                          &scratch,
                          &scratch_2,
-                         &dashpot_force})
+                         &dissipative_force})
       discretization.reinit_vector(*vector);
     discretization.reinit_ghosted_vector(state_.ghosted_u);
     discretization.reinit_ghosted_vector(ghosted_scratch);
@@ -539,7 +539,7 @@ namespace liftoff
     assemble_loads(step, tau, state_.load);
     force_balance(state_.load, pressure, state_.balance);
     if (foundation.has_damping())
-      compute_dashpot_force();
+      compute_dissipative_force();
     matrices.solve_with_mass(state_.a, state_.balance);
     discretization.constraints.distribute(state_.a);
     require_finite_state(what, {&state_.a}, {}, state_.load);
@@ -611,11 +611,12 @@ namespace liftoff
 
 
   void
-  TimeStepper::compute_dashpot_force()
+  TimeStepper::compute_dissipative_force()
   {
-    ghosted_scratch = state_.v;
-    dashpot_force   = 0;
-    foundation.add_dashpot_force(ghosted_scratch, dashpot_force);
+    ghosted_scratch   = state_.v;
+    dissipative_force = 0;
+    foundation.add_dashpot_force(ghosted_scratch, dissipative_force);
+    foundation.add_unstored_spring_force(state_.ghosted_u, dissipative_force);
   }
 
 
@@ -692,13 +693,17 @@ namespace liftoff
   void
   TimeStepper::add_dissipated_energy()
   {
-    // The dashpots' work over the step by the trapezoidal rule, as the
-    // loads': 1/2 (u_{n+1} - u_n).(f_n + f_{n+1}); `scratch` still holds
+    // The work over the step, by the trapezoidal rule as the loads',
+    // 1/2 (u_{n+1} - u_n).(f_n + f_{n+1}), of the dashpots and of the
+    // springs' force that the foundation energy does not hold (where the
+    // dashpots decide the status): without the latter the balance missed
+    // a term that does not fall with dt (truck-crossing-slab: 2.3e-3 and
+    // 2.9e-3 of the energy scale at dt and dt/2). `scratch` still holds
     // u_{n+1} - u_n from work_of_step().
     LA::MPI::Vector &previous_force = scratch_2;
-    previous_force                  = dashpot_force;
-    compute_dashpot_force();
-    previous_force += dashpot_force;
+    previous_force                  = dissipative_force;
+    compute_dissipative_force();
+    previous_force += dissipative_force;
     state_.dissipated += 0.5 * discretization.geometry().n_symmetry_copies()
                          * (scratch * previous_force);
   }
@@ -794,7 +799,7 @@ namespace liftoff
         // The dashpots' force of the saved state, for the next step's
         // dissipation.
         if (foundation.has_damping())
-          compute_dashpot_force();
+          compute_dissipative_force();
       }
     else
       {

@@ -169,7 +169,7 @@ namespace liftoff
     LA::MPI::Vector next_load, rhs, u_next, scratch, scratch_2;
     /// With dashpots: their force c int_S v phi at the state, and a
     /// ghosted vector to evaluate velocities at the Gauss points.
-    LA::MPI::Vector dashpot_force, ghosted_scratch;
+    LA::MPI::Vector dissipative_force, ghosted_scratch;
     /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
     /// estimate from below), once it was needed; 0 before (and after the
     /// mesh changed).
@@ -265,9 +265,11 @@ namespace liftoff
     /// and the force balance at a given state).
     SpringPressure
     pressure_at_state_velocity();
-    /// dashpot_force = c int_S v phi of the state.
+    /// dissipative_force = c int_S v phi of the state, plus the springs'
+    /// force the foundation energy does not hold
+    /// (TensionlessWinklerFoundation::add_unstored_spring_force()).
     void
-    compute_dashpot_force();
+    compute_dissipative_force();
     /// The system matrix of the time steps from the bilateral set.
     void
     use_time_step_matrix();
