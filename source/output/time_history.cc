@@ -636,15 +636,53 @@ namespace liftoff
   std::vector<double>
   TimeHistory::probe_quantities(const StepData &step) const
   {
+    return values_at(step, quantity_probes);
+  }
+
+
+  std::vector<double>
+  TimeHistory::riding_probe_values(const StepData &step, const Row &row) const
+  {
+    const Discretization      &disc = *discretization;
+    std::vector<QuantityProbe> probes;
+    for (const RidingProbe &rider : riding_probes)
+      {
+        QuantityProbe probe{rider.quantity,
+                            Point<2>(row.moving_loads[3 * rider.index],
+                                     row.moving_loads[3 * rider.index + 1]),
+                            {},
+                            {}};
+        // Every rank decides alike, so holder_cell() (collective) is
+        // called by all or none; off the plate the cell stays invalid.
+        if (disc.geometry().is_on_plate(probe.point))
+          {
+            const Point<2> image =
+              disc.geometry().to_modelled_part(probe.point);
+            std::tie(probe.cell, probe.unit_point) =
+              PointFunctional::holder_cell(disc, image);
+            probe.sign = mirror_sign(probe.quantity, probe.point, image);
+          }
+        probes.push_back(probe);
+      }
+    return values_at(step, probes);
+  }
+
+
+  std::vector<double>
+  TimeHistory::values_at(const StepData                   &step,
+                         const std::vector<QuantityProbe> &probes) const
+  {
+    if (probes.empty())
+      return {};
     const Discretization  &disc = *discretization;
     const StressResultants resultants(plate,
                                       disc.mapping,
                                       disc.element().shear_integration(),
                                       step.state.ghosted_u);
-    std::vector<double>    values(quantity_probes.size(), 0.0);
-    for (unsigned int k = 0; k < quantity_probes.size(); ++k)
+    std::vector<double>    values(probes.size(), 0.0);
+    for (unsigned int k = 0; k < probes.size(); ++k)
       {
-        const QuantityProbe &probe = quantity_probes[k];
+        const QuantityProbe &probe = probes[k];
         if (probe.cell.state() == IteratorState::valid)
           values[k] = probe.sign
                       * value_at(disc,
@@ -653,43 +691,6 @@ namespace liftoff
                                  probe.quantity,
                                  probe.cell,
                                  probe.unit_point);
-      }
-    Utilities::MPI::sum(values, disc.mpi_communicator, values);
-    return values;
-  }
-
-
-  std::vector<double>
-  TimeHistory::riding_probe_values(const StepData &step, const Row &row) const
-  {
-    if (riding_probes.empty())
-      return {};
-    const Discretization  &disc = *discretization;
-    const StressResultants resultants(plate,
-                                      disc.mapping,
-                                      disc.element().shear_integration(),
-                                      step.state.ghosted_u);
-    std::vector<double>    values(riding_probes.size(), 0.0);
-    for (unsigned int k = 0; k < riding_probes.size(); ++k)
-      {
-        const RidingProbe &probe = riding_probes[k];
-        const Point<2>     p(row.moving_loads[3 * probe.index],
-                         row.moving_loads[3 * probe.index + 1]);
-        // Every rank decides alike, so holder_cell() (collective) is
-        // called by all or none.
-        if (!disc.geometry().is_on_plate(p))
-          continue;
-        const Point<2> image = disc.geometry().to_modelled_part(p);
-        const auto [cell, unit_point] =
-          PointFunctional::holder_cell(disc, image);
-        if (cell.state() == IteratorState::valid)
-          values[k] = mirror_sign(probe.quantity, p, image)
-                      * value_at(disc,
-                                 resultants,
-                                 step.state.ghosted_u,
-                                 probe.quantity,
-                                 cell,
-                                 unit_point);
       }
     Utilities::MPI::sum(values, disc.mpi_communicator, values);
     return values;

@@ -224,6 +224,11 @@ namespace liftoff
 
     std::vector<double>
     riding_probe_values(const StepData &step, const Row &row) const;
+
+    /// The probes' values (0 where no rank holds a cell), collective.
+    std::vector<double>
+    values_at(const StepData                   &step,
+              const std::vector<QuantityProbe> &probes) const;
     void
     add_moment_extremes(const StepData &step, Row &row) const;
 
