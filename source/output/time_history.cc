@@ -49,6 +49,15 @@ namespace liftoff
     }
 
 
+    /// The kind of the unit of w or a stress resultant.
+    PhysicalUnits::Quantity
+    quantity_of(const std::string &field)
+    {
+      return field == "w" ? PhysicalUnits::Quantity::deflection
+                          : StressResultants::quantities().at(field);
+    }
+
+
     /// "M_xx(0.25; 0), Q_x(0.5; 0)" as the quantities and points it names.
     std::vector<std::pair<std::string, Point<2>>>
     parse_quantity_list(const std::string &text)
@@ -96,6 +105,98 @@ namespace liftoff
           probes.emplace_back(name, p);
         }
       return probes;
+    }
+
+
+    /// "w@patch_load_1, M_xx@vehicle_1" as its entries; the loads are
+    /// looked up once the moving loads are known (TimeHistory::follow()).
+    std::vector<std::pair<std::string, std::string>>
+    parse_riding_probes(const std::string &text)
+    {
+      std::vector<std::pair<std::string, std::string>> probes;
+      const auto &fields = StressResultants::field_names();
+      for (const auto &entry : Utilities::split_string_list(text, ','))
+        {
+          const auto parts = Utilities::split_string_list(entry, '@');
+          AssertThrow(parts.size() == 2
+                        && (parts[0] == "w"
+                            || std::find(fields.begin(), fields.end(), parts[0])
+                                 != fields.end()),
+                      ExcMessage("Output/Riding probes: <" + entry
+                                 + "> is not QUANTITY@LOAD with QUANTITY w "
+                                   "or one of "
+                                 + joined(fields, ", ")
+                                 + " and LOAD a moving load's name, e.g. "
+                                   "w@patch_load_1."));
+          probes.emplace_back(parts[0], parts[1]);
+        }
+      return probes;
+    }
+
+
+    void
+    declare_riding_probes(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Riding probes",
+        "",
+        Patterns::Anything(),
+        "Probes that ride with moving loads, written to history.csv at every "
+        "step: a comma-separated list of QUANTITY@LOAD, QUANTITY w or a field "
+        "of `Probe quantities`, LOAD a moving load's name as in its history "
+        "columns (point_load_N, patch_load_N, vehicle_N: the path's point), "
+        "e.g. `w@patch_load_1, M_xx@patch_load_1`; the column is so named. "
+        "The value is taken at the load's position of the row; 0 while it is "
+        "off the plate (its `_on` column says when).");
+    }
+
+
+    /// The sign a field takes at a point of a mirrored part from its value
+    /// at the point's image: odd are the shear force normal to the plane,
+    /// the twisting moment and the angle.
+    double
+    mirror_sign(const std::string &quantity,
+                const Point<2>    &point,
+                const Point<2>    &image)
+    {
+      double sign = 1;
+      for (unsigned int axis = 0; axis < 2; ++axis)
+        if (image[axis] != point[axis])
+          for (const std::string &odd : {std::string(axis == 0 ? "Q_x" : "Q_y"),
+                                         std::string("M_xy"),
+                                         std::string("sigma_xy"),
+                                         std::string("M_1_angle")})
+            if (quantity == odd)
+              sign = -sign;
+      return sign;
+    }
+
+
+    /// w or a stress resultant at a unit point of a cell.
+    double
+    value_at(const Discretization                      &disc,
+             const StressResultants                    &resultants,
+             const LA::MPI::Vector                     &ghosted_u,
+             const std::string                         &quantity,
+             const DoFHandler<2>::active_cell_iterator &cell,
+             const Point<2>                            &unit_point)
+    {
+      FEValues<2> fe_values(disc.mapping,
+                            disc.dof_handler.get_fe(),
+                            Quadrature<2>(unit_point),
+                            update_values | update_gradients
+                              | update_quadrature_points);
+      fe_values.reinit(cell);
+      if (quantity == "w")
+        {
+          std::vector<double> w(1);
+          fe_values[FEValuesExtractors::Scalar(0)].get_function_values(
+            ghosted_u, w);
+          return w[0];
+        }
+      std::vector<Vector<double>> fields;
+      resultants.evaluate(cell, fe_values, fields);
+      return fields[0][StressResultants::field_index(quantity)];
     }
   } // namespace
 
@@ -152,6 +253,7 @@ namespace liftoff
       "|Q|, each with its point `_x`, `_y` (of the meshed part), over the "
       "output points of the field files (costs a pass over those points "
       "per step).");
+    declare_riding_probes(prm);
   }
 
 
@@ -175,6 +277,10 @@ namespace liftoff
     for (const auto &[quantity, point] :
          parse_quantity_list(prm.get("Probe quantities")))
       quantity_probes.push_back({quantity, point, {}, {}});
+    riding_probes.clear();
+    for (const auto &[quantity, load] :
+         parse_riding_probes(prm.get("Riding probes")))
+      riding_probes.push_back({quantity + "@" + load, quantity, load});
     make_columns();
   }
 
@@ -240,6 +346,15 @@ namespace liftoff
   {
     moving_load_names     = names;
     moving_load_positions = positions;
+    for (auto &probe : riding_probes)
+      {
+        const auto found = std::find(names.begin(), names.end(), probe.load);
+        AssertThrow(found != names.end(),
+                    ExcMessage("Output/Riding probes: <" + probe.name
+                               + "> names no moving load; the scene's are <"
+                               + joined(names, ", ") + ">."));
+        probe.index = found - names.begin();
+      }
     make_columns();
   }
 
@@ -300,6 +415,11 @@ namespace liftoff
         moving_load_names[k / 3] + std::array{"_x", "_y", "_on"}[k % 3],
         [k](const Row &r) { return r.moving_loads[k]; },
         k % 3 == 2 ? Quantity::number : Quantity::length);
+    for (unsigned int k = 0; k < riding_probes.size(); ++k)
+      add_column(
+        riding_probes[k].name,
+        [k](const Row &r) { return r.riding_values[k]; },
+        quantity_of(riding_probes[k].quantity));
   }
 
 
@@ -363,7 +483,7 @@ namespace liftoff
       add_column(
         names[k],
         [k](const Row &r) { return r.probe_quantities[k]; },
-        StressResultants::quantities().at(quantity_probes[k].quantity));
+        quantity_of(quantity_probes[k].quantity));
   }
 
 
@@ -417,20 +537,8 @@ namespace liftoff
         std::tie(probe.cell, probe.unit_point) =
           PointFunctional::holder_cell(disc, image);
         // A point of a mirrored part takes the value at its image, with
-        // the sign the reflection gives the field: odd are the shear force
-        // normal to the plane, the twisting moment and the angle.
-        probe.sign = 1;
-        for (unsigned int axis = 0; axis < 2; ++axis)
-          if (image[axis] != probe.point[axis])
-            {
-              const std::string normal_shear = axis == 0 ? "Q_x" : "Q_y";
-              for (const std::string odd : {normal_shear,
-                                            std::string("M_xy"),
-                                            std::string("sigma_xy"),
-                                            std::string("M_1_angle")})
-                if (probe.quantity == odd)
-                  probe.sign = -probe.sign;
-            }
+        // the sign the reflection gives the field.
+        probe.sign = mirror_sign(probe.quantity, probe.point, image);
       }
     w_dofs = DoFTools::extract_dofs(disc.dof_handler,
                                     disc.dof_handler.get_fe().component_mask(
@@ -499,6 +607,7 @@ namespace liftoff
     row.balance_error = row.energies.error(step.state.initial_energies);
     if (moving_load_positions)
       row.moving_loads = moving_load_positions(row.tau);
+    row.riding_values = riding_probe_values(step, row);
     if (write_resultant)
       {
         const auto r =
@@ -521,27 +630,61 @@ namespace liftoff
   std::vector<double>
   TimeHistory::probe_quantities(const StepData &step) const
   {
-    const Discretization       &disc = *discretization;
-    const StressResultants      resultants(plate,
+    return values_at(step, quantity_probes);
+  }
+
+
+  std::vector<double>
+  TimeHistory::riding_probe_values(const StepData &step, const Row &row) const
+  {
+    const Discretization      &disc = *discretization;
+    std::vector<QuantityProbe> probes;
+    for (const RidingProbe &rider : riding_probes)
+      {
+        QuantityProbe probe{rider.quantity,
+                            Point<2>(row.moving_loads[3 * rider.index],
+                                     row.moving_loads[3 * rider.index + 1]),
+                            {},
+                            {}};
+        // Every rank decides alike, so holder_cell() (collective) is
+        // called by all or none; off the plate the cell stays invalid.
+        if (disc.geometry().is_on_plate(probe.point))
+          {
+            const Point<2> image =
+              disc.geometry().to_modelled_part(probe.point);
+            std::tie(probe.cell, probe.unit_point) =
+              PointFunctional::holder_cell(disc, image);
+            probe.sign = mirror_sign(probe.quantity, probe.point, image);
+          }
+        probes.push_back(probe);
+      }
+    return values_at(step, probes);
+  }
+
+
+  std::vector<double>
+  TimeHistory::values_at(const StepData                   &step,
+                         const std::vector<QuantityProbe> &probes) const
+  {
+    if (probes.empty())
+      return {};
+    const Discretization  &disc = *discretization;
+    const StressResultants resultants(plate,
                                       disc.mapping,
                                       disc.element().shear_integration(),
                                       step.state.ghosted_u);
-    std::vector<double>         values(quantity_probes.size(), 0.0);
-    std::vector<Vector<double>> fields;
-    for (unsigned int k = 0; k < quantity_probes.size(); ++k)
+    std::vector<double>    values(probes.size(), 0.0);
+    for (unsigned int k = 0; k < probes.size(); ++k)
       {
-        const QuantityProbe &probe = quantity_probes[k];
-        if (probe.cell.state() != IteratorState::valid)
-          continue;
-        FEValues<2> fe_values(disc.mapping,
-                              disc.dof_handler.get_fe(),
-                              Quadrature<2>(probe.unit_point),
-                              update_values | update_gradients
-                                | update_quadrature_points);
-        fe_values.reinit(probe.cell);
-        resultants.evaluate(probe.cell, fe_values, fields);
-        values[k] =
-          probe.sign * fields[0][StressResultants::field_index(probe.quantity)];
+        const QuantityProbe &probe = probes[k];
+        if (probe.cell.state() == IteratorState::valid)
+          values[k] = probe.sign
+                      * value_at(disc,
+                                 resultants,
+                                 step.state.ghosted_u,
+                                 probe.quantity,
+                                 probe.cell,
+                                 probe.unit_point);
       }
     Utilities::MPI::sum(values, disc.mpi_communicator, values);
     return values;

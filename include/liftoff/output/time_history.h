@@ -81,6 +81,7 @@ namespace liftoff
       double max_q_y   = 0;
       /// x, y and the loads on the plate of each moving load (follow()).
       std::vector<double> moving_loads;
+      std::vector<double> riding_values;
 
       /// The members serialize() archives, in its order: a checkpoint
       /// keeps them, and one of another layout is refused by name before
@@ -115,7 +116,8 @@ namespace liftoff
                 "max_q",
                 "max_q_x",
                 "max_q_y",
-                "moving_loads"};
+                "moving_loads",
+                "riding_probes"};
       }
 
       template <class Archive>
@@ -127,7 +129,7 @@ namespace liftoff
             &resultant_x &resultant_y &contact_area &max_pressure
               &max_pressure_x &max_pressure_y &probe_quantities &max_m_1
                 &max_m_1_x &max_m_1_y &min_m_2 &min_m_2_x &min_m_2_y &max_q
-                  &max_q_x &max_q_y &moving_loads;
+                  &max_q_x &max_q_y &moving_loads &riding_values;
       }
     };
 
@@ -208,6 +210,25 @@ namespace liftoff
     std::vector<QuantityProbe> quantity_probes;
     std::vector<double>
     probe_quantities(const StepData &step) const;
+
+    /// A probe that rides with a moving load: w or a stress resultant at
+    /// the load's current position (0 while the load is off the plate).
+    struct RidingProbe
+    {
+      std::string  name; // "quantity@load", the column's name
+      std::string  quantity;
+      std::string  load;
+      unsigned int index = 0; // of the load in moving_load_names
+    };
+    std::vector<RidingProbe> riding_probes;
+
+    std::vector<double>
+    riding_probe_values(const StepData &step, const Row &row) const;
+
+    /// The probes' values (0 where no rank holds a cell), collective.
+    std::vector<double>
+    values_at(const StepData                   &step,
+              const std::vector<QuantityProbe> &probes) const;
     void
     add_moment_extremes(const StepData &step, Row &row) const;
 
