@@ -195,7 +195,7 @@ namespace liftoff
         units[name]           = kinds[e].unit;
         units[name + "_time"] = "t0";
       }
-    data_out.build_patches(disc.mapping, element.degree);
+    data_out.build_patches(disc.mapping(), element.degree);
     DataOutBase::VtkFlags flags;
     flags.time              = last_time;
     flags.physical_units    = units;

@@ -462,7 +462,7 @@ namespace liftoff
     const Discretization                       &disc = step.discretization;
     std::map<types::global_dof_index, Point<2>> points;
     DoFTools::map_dofs_to_support_points(
-      disc.mapping,
+      disc.mapping(),
       disc.dof_handler,
       points,
       disc.dof_handler.get_fe().component_mask(FEValuesExtractors::Scalar(0)));
@@ -536,7 +536,7 @@ namespace liftoff
   {
     const Discretization       &disc = *discretization;
     const StressResultants      resultants(plate,
-                                      disc.mapping,
+                                      disc.mapping(),
                                       disc.element().shear_integration(),
                                       step.state.ghosted_u);
     std::vector<double>         values(quantity_probes.size(), 0.0);
@@ -546,7 +546,7 @@ namespace liftoff
         const QuantityProbe &probe = quantity_probes[k];
         if (probe.cell.state() != IteratorState::valid)
           continue;
-        FEValues<2> fe_values(disc.mapping,
+        FEValues<2> fe_values(disc.mapping(),
                               disc.dof_handler.get_fe(),
                               Quadrature<2>(probe.unit_point),
                               update_values | update_gradients
