@@ -27,7 +27,7 @@ namespace liftoff
         values(q, k) = fe.shape_value(w_dofs[k], rule.point(q));
 
     // Gradients only for a shear layer: they depend on the cell.
-    FEValues<2>                          fe_values(disc.mapping,
+    FEValues<2>                          fe_values(disc.mapping(),
                           fe,
                           rule,
                           update_JxW_values | update_quadrature_points

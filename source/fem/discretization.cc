@@ -1,6 +1,8 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -16,6 +18,7 @@ namespace liftoff
       : mpi_communicator(comm)
       , triangulation(comm)
       , dof_handler(triangulation)
+      , cell_mapping(std::make_unique<MappingQ1<2>>())
   {}
 
 
@@ -39,6 +42,9 @@ namespace liftoff
   {
     plate_geometry.parse_parameters(prm, plate);
     plate_element.parse_parameters(prm);
+    if (plate_geometry.has_curved_boundary())
+      cell_mapping =
+        std::make_unique<MappingQ<2>>(std::max(2u, plate_element.degree()));
     prm.enter_subsection("Discretization");
     n_refinements = prm.get_integer("Global refinements");
     prm.leave_subsection();
@@ -49,6 +55,13 @@ namespace liftoff
   Discretization::geometry() const
   {
     return plate_geometry;
+  }
+
+
+  const Mapping<2> &
+  Discretization::mapping() const
+  {
+    return *cell_mapping;
   }
 
 
@@ -183,7 +196,7 @@ namespace liftoff
     const Functions::ZeroFunction<2> zero(PlateElement::n_components);
     for (const auto &[id, mask] : plate_geometry.held_components())
       VectorTools::interpolate_boundary_values(
-        mapping, dof_handler, id, zero, constraints, mask);
+        mapping(), dof_handler, id, zero, constraints, mask);
     constraints.close();
     // Collective: what depends on it (PlateMatrices::quadratic_form's
     // set_zero) communicates, and a rank without hanging nodes of its own
@@ -199,7 +212,7 @@ namespace liftoff
   Discretization::grid_cache() const
   {
     if (!cache)
-      cache = std::make_unique<GridTools::Cache<2>>(triangulation, mapping);
+      cache = std::make_unique<GridTools::Cache<2>>(triangulation, mapping());
     return *cache;
   }
 

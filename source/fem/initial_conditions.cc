@@ -60,7 +60,7 @@ namespace liftoff
     if (field.is_zero)
       values = 0;
     else
-      VectorTools::interpolate(disc.mapping,
+      VectorTools::interpolate(disc.mapping(),
                                disc.dof_handler,
                                *field.function,
                                values);

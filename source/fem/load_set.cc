@@ -568,8 +568,7 @@ namespace liftoff
     // Moving loads have no place to keep fine.
     for (const auto &load : loads)
       if (load.kind == Kind::point && !load.moves
-          && disc.geometry().modelled_box().point_inside(load.position_at(0),
-                                                         1e-12))
+          && disc.geometry().is_on_modelled_part(load.position_at(0)))
         positions.push_back(load.position_at(0));
     return positions;
   }
@@ -671,6 +670,11 @@ namespace liftoff
                          const double          time_step,
                          const unsigned int    n_steps) const
   {
+    if (disc.geometry().shape() != PlateShape::rectangle)
+      {
+        require_on_outline(disc.geometry());
+        return;
+      }
     const BoundingBox<2> plate = disc.geometry().plate_box();
     std::vector<double>  times(n_steps + 1);
     for (unsigned int k = 0; k <= n_steps; ++k)
@@ -679,6 +683,33 @@ namespace liftoff
     if (disc.geometry().symmetry() == Symmetry::full)
       return;
     check_symmetry(times, disc);
+  }
+
+
+  void
+  LoadSet::require_on_outline(const PlateGeometry &geometry) const
+  {
+    // Paths are checked against a box so far: refused, not half checked.
+    for (const auto &load : loads)
+      {
+        AssertThrow(load.path == nullptr,
+                    ExcMessage(load.name
+                               + " moves along a path, which is not "
+                                 "available on Discretization/Shape = disc "
+                                 "yet; use fixed loads."));
+        AssertThrow(load.kind != Kind::line,
+                    ExcMessage(load.name
+                               + " acts along an edge of the rectangle, "
+                                 "which Discretization/Shape = disc does "
+                                 "not have; use a Pressure on a ring."));
+        if (load.kind == Kind::point)
+          AssertThrow(geometry.is_on_plate(load.position),
+                      ExcMessage(load.name + "/Position = "
+                                 + std::to_string(load.position[0]) + ", "
+                                 + std::to_string(load.position[1])
+                                 + " lies outside "
+                                 + geometry.plate_description() + "."));
+      }
   }
 
 
@@ -753,7 +784,7 @@ namespace liftoff
     // their images in every combination of symmetry planes: together the
     // quadrature points of the edges of the full plate's mesh.
     const auto     &fe = disc.dof_handler.get_fe();
-    FEFaceValues<2> fe_face_values(disc.mapping,
+    FEFaceValues<2> fe_face_values(disc.mapping(),
                                    fe,
                                    QGauss<1>(fe.degree + 2),
                                    update_quadrature_points);
@@ -1050,7 +1081,7 @@ namespace liftoff
     // the shape functions at the point, exact wherever it lies in a cell.
     const Discretization &disc = *discretization;
     const Point<2>        p    = load.position_at(tau);
-    if (!disc.geometry().modelled_box().point_inside(p, 1e-12))
+    if (!disc.geometry().is_on_modelled_part(p))
       return;
     const PointFunctional functional(disc, p);
     functional.add_to(vector,
@@ -1098,7 +1129,7 @@ namespace liftoff
     const unsigned int    n_dofs = fe.n_dofs_per_cell();
     const UpdateFlags     flags =
       update_values | update_quadrature_points | update_JxW_values;
-    FEFaceValues<2>                      fe_face_values(disc.mapping,
+    FEFaceValues<2>                      fe_face_values(disc.mapping(),
                                    fe,
                                    QGauss<1>(fe.degree + 2),
                                    flags);

@@ -158,13 +158,18 @@ namespace liftoff
     counts.precision(3);
     counts << estimate.n_cells << " cells, " << estimate.n_dofs << " unknowns, "
            << estimate.n_matrix_entries << " matrix entries";
+    // A disc's coarse mesh is fixed: only the rectangle's cells are named.
+    const std::string coarse_mesh =
+      geometry.shape() == PlateShape::disc
+        ? std::string("Discretization/Shape = disc")
+        : "Discretization/Cells along x = "
+            + std::to_string(geometry.coarse_cells_along(0))
+            + ", Cells along y = "
+            + std::to_string(geometry.coarse_cells_along(1));
     AssertThrow(
       false,
       ExcMessage(
-        "Discretization/Cells along x = "
-        + std::to_string(geometry.coarse_cells_along(0))
-        + ", Cells along y = " + std::to_string(geometry.coarse_cells_along(1))
-        + ", Global refinements = "
+        coarse_mesh + ", Global refinements = "
         + std::to_string(discretization.initial_level())
         + ", Polynomial degree = "
         + std::to_string(discretization.element().degree()) + " make "

@@ -280,7 +280,7 @@ namespace liftoff
     const LA::MPI::Vector &ghosted_solution) const
   {
     Vector<float> estimate(discretization.triangulation.n_active_cells());
-    KellyErrorEstimator<2>::estimate(discretization.mapping,
+    KellyErrorEstimator<2>::estimate(discretization.mapping(),
                                      discretization.dof_handler,
                                      QGauss<1>(discretization.element().degree()
                                                + 1),

@@ -219,7 +219,7 @@ namespace liftoff
                              const FEValues<2> &)> &work) const
   {
     const Discretization &disc = discretization;
-    FEValues<2>           whole_cell(disc.mapping,
+    FEValues<2>           whole_cell(disc.mapping(),
                            disc.dof_handler.get_fe(),
                            cell_rule,
                            flags);
@@ -235,7 +235,7 @@ namespace liftoff
           {
             // A cut cell: the rule differs from cell to cell, and so do the
             // shape values at its points.
-            FEValues<2> cut_cell(disc.mapping,
+            FEValues<2> cut_cell(disc.mapping(),
                                  disc.dof_handler.get_fe(),
                                  covered.part,
                                  flags);

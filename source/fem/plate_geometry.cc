@@ -20,6 +20,9 @@ namespace liftoff
       {"soft simply supported", EdgeCondition::soft_simply_supported},
       {"clamped", EdgeCondition::clamped}};
 
+    const Selection<PlateShape> shapes = {{"rectangle", PlateShape::rectangle},
+                                          {"disc", PlateShape::disc}};
+
     const Selection<Symmetry> symmetries = {{"full", Symmetry::full},
                                             {"half", Symmetry::half},
                                             {"quarter", Symmetry::quarter}};
@@ -36,6 +39,19 @@ namespace liftoff
   PlateGeometry::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
+    prm.declare_entry("Shape",
+                      "rectangle",
+                      shapes.pattern(),
+                      "The plate's outline: rectangle, [-1/2, 1/2] x "
+                      "[-mu/2, mu/2] with the edges Left, Right, Bottom and "
+                      "Top; disc, of radius Radius about the origin with "
+                      "the edge Outer, meshed by GridGenerator::"
+                      "hyper_ball_balanced (Cells along x and y unused).");
+    prm.declare_entry("Radius",
+                      "0.5",
+                      Patterns::Double(0.0),
+                      "R / L, the radius of a disc (Shape = disc) in the "
+                      "length unit L, also in an SI scene.");
     prm.declare_entry("Symmetry",
                       "full",
                       symmetries.pattern(),
@@ -62,6 +78,11 @@ namespace liftoff
                         "x = -1/2, Right: x = 1/2, Bottom: y = -mu/2, "
                         "Top: y = mu/2. Hard simple support fixes w and the "
                         "rotation along the edge, soft only w.");
+    prm.declare_entry("Outer",
+                      "free",
+                      edge_conditions.pattern(),
+                      "Condition on the circle of a disc (Shape = disc): "
+                      "free, soft simply supported or clamped.");
     prm.leave_subsection();
   }
 
@@ -72,6 +93,8 @@ namespace liftoff
   {
     aspect_ratio = plate.aspect_ratio;
     prm.enter_subsection("Discretization");
+    outline = shapes.parse(prm.get("Shape"), "Discretization/Shape");
+    radius  = prm.get_double("Radius");
     const std::string symmetry_name = prm.get("Symmetry");
     modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
     n_cells_x     = prm.get_integer("Cells along x");
@@ -82,7 +105,10 @@ namespace liftoff
     for (unsigned int e = 0; e < 4; ++e)
       edges[e] = edge_conditions.parse(prm.get(edge_names[e]),
                                        "Boundary conditions/" + edge_names[e]);
+    outer =
+      edge_conditions.parse(prm.get("Outer"), "Boundary conditions/Outer");
     prm.leave_subsection();
+    check_shape_choices(symmetry_name);
 
     // A symmetric model is only right for a symmetric plate.
     if (modelled_part != Symmetry::full)
@@ -100,8 +126,50 @@ namespace liftoff
 
 
   void
+  PlateGeometry::check_shape_choices(const std::string &symmetry_name) const
+  {
+    const auto refuse = [](const bool wrong, const std::string &message) {
+      AssertThrow(!wrong, ExcMessage(message));
+    };
+    if (outline == PlateShape::rectangle)
+      {
+        refuse(outer != EdgeCondition::free,
+               "Boundary conditions/Outer is the edge of a disc; a "
+               "rectangle (Discretization/Shape = rectangle) has Left, "
+               "Right, Bottom and Top.");
+        return;
+      }
+    refuse(radius <= 0, "Discretization/Radius must be > 0 for a disc.");
+    for (unsigned int e = 0; e < 4; ++e)
+      refuse(edges[e] != EdgeCondition::free,
+             "Boundary conditions/" + edge_names[e]
+               + " is an edge of the rectangle; a disc (Discretization/"
+                 "Shape = disc) has the edge Outer.");
+    // The rotation along a circle is no component of (w, psi_x, psi_y);
+    // holding it needs normal-tangential constraints, not written yet.
+    refuse(outer == EdgeCondition::hard_simply_supported,
+           "Boundary conditions/Outer = hard simply supported is not "
+           "available on a disc yet; use soft simply supported or clamped.");
+    refuse(modelled_part != Symmetry::full,
+           "Discretization/Symmetry = " + symmetry_name
+             + " is not available on a disc yet; use full.");
+  }
+
+
+  void
   PlateGeometry::create_coarse_mesh(Triangulation<2> &triangulation) const
   {
+    if (outline == PlateShape::disc)
+      {
+        // The generator attaches a SphericalManifold to the boundary and a
+        // TransfiniteInterpolationManifold inside, so refined cells stay on
+        // the circle and keep their shape.
+        GridGenerator::hyper_ball_balanced(triangulation, Point<2>(), radius);
+        for (const auto &face : triangulation.active_face_iterators())
+          if (face->at_boundary())
+            face->set_boundary_id(outer_boundary);
+        return;
+      }
     const BoundingBox<2> box = modelled_box();
     GridGenerator::subdivided_hyper_rectangle(triangulation,
                                               {n_cells_x, n_cells_y},
@@ -128,6 +196,9 @@ namespace liftoff
   unsigned int
   PlateGeometry::coarse_cells_along(const unsigned int axis) const
   {
+    // The 12 cells of hyper_ball_balanced count as 4 x 4 in estimates.
+    if (outline == PlateShape::disc)
+      return 4;
     return axis == 0 ? n_cells_x : n_cells_y;
   }
 
@@ -135,6 +206,9 @@ namespace liftoff
   double
   PlateGeometry::largest_cell_aspect_ratio() const
   {
+    // hyper_ball_balanced's cells are close to square.
+    if (outline == PlateShape::disc)
+      return 1.0;
     // Refinement splits cells in both directions: the coarse cells' ratio.
     const double width  = 1.0 / n_cells_x;
     const double height = aspect_ratio / n_cells_y;
@@ -149,6 +223,10 @@ namespace liftoff
       return ComponentMask(w_psix_psiy);
     };
     std::vector<std::pair<types::boundary_id, ComponentMask>> held;
+    if (outer == EdgeCondition::soft_simply_supported)
+      held.emplace_back(outer_boundary, mask({true, false, false}));
+    if (outer == EdgeCondition::clamped)
+      held.emplace_back(outer_boundary, mask({true, true, true}));
     for (unsigned int e = 0; e < 4; ++e)
       {
         // Rotation along an edge: psi_y on the edges x = const, psi_x on
@@ -179,6 +257,8 @@ namespace liftoff
   bool
   PlateGeometry::has_kinematic_support() const
   {
+    if (outer != EdgeCondition::free)
+      return true;
     for (const auto e : edges)
       if (e != EdgeCondition::free)
         return true;
@@ -199,6 +279,20 @@ namespace liftoff
     return (n_supported == 1 && edges[supported] != EdgeCondition::clamped)
              ? edge_names[supported]
              : std::string();
+  }
+
+
+  PlateShape
+  PlateGeometry::shape() const
+  {
+    return outline;
+  }
+
+
+  bool
+  PlateGeometry::has_curved_boundary() const
+  {
+    return outline == PlateShape::disc;
   }
 
 
@@ -234,6 +328,9 @@ namespace liftoff
   BoundingBox<2>
   PlateGeometry::plate_box() const
   {
+    if (outline == PlateShape::disc)
+      return BoundingBox<2>(
+        std::make_pair(Point<2>(-radius, -radius), Point<2>(radius, radius)));
     return BoundingBox<2>(std::make_pair(Point<2>(-0.5, -0.5 * aspect_ratio),
                                          Point<2>(0.5, 0.5 * aspect_ratio)));
   }
@@ -252,9 +349,21 @@ namespace liftoff
   bool
   PlateGeometry::is_on_plate(const Point<2> &p) const
   {
+    if (outline == PlateShape::disc)
+      return p.norm() <= radius * (1 + 1e-12);
     // Relative to the plate's size, so that a point written on an edge is
     // on the plate whatever the round-off of its decimal digits.
     return plate_box().point_inside(p, 1e-12 * std::max(1.0, aspect_ratio));
+  }
+
+
+  bool
+  PlateGeometry::is_on_modelled_part(const Point<2> &p) const
+  {
+    // A disc is always modelled in full (check_shape_choices).
+    if (outline == PlateShape::disc)
+      return is_on_plate(p);
+    return modelled_box().point_inside(p, 1e-12);
   }
 
 
@@ -263,6 +372,11 @@ namespace liftoff
   {
     std::ostringstream text;
     text.precision(6);
+    if (outline == PlateShape::disc)
+      {
+        text << "the disc of radius " << radius << " about (0, 0)";
+        return text.str();
+      }
     text << "the plate [-0.5, 0.5] x [" << -0.5 * aspect_ratio << ", "
          << 0.5 * aspect_ratio << "]";
     return text.str();

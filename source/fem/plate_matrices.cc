@@ -99,11 +99,11 @@ namespace liftoff
     const unsigned int    p      = fe.degree;
     const unsigned int    n_dofs = fe.n_dofs_per_cell();
     const QGauss<2>       full_rule(p + 1);
-    FEValues<2>           fe_values(disc.mapping,
+    FEValues<2>           fe_values(disc.mapping(),
                           fe,
                           full_rule,
                           update_values | update_gradients | update_JxW_values);
-    TransverseShearStrain shear_strain(disc.mapping,
+    TransverseShearStrain shear_strain(disc.mapping(),
                                        fe,
                                        disc.element().shear_integration());
 

@@ -32,7 +32,7 @@ namespace liftoff
       if (first.first.state() == IteratorState::valid)
         for (const auto &[cell, unit] :
              GridTools::find_all_active_cells_around_point(
-               discretization.mapping,
+               discretization.mapping(),
                discretization.triangulation,
                point,
                tolerance,
@@ -72,7 +72,7 @@ namespace liftoff
                                                 found->index(),
                                                 &discretization.dof_handler),
             GeometryInfo<2>::project_to_unit_cell(
-              discretization.mapping.transform_real_to_unit_cell(found,
+              discretization.mapping().transform_real_to_unit_cell(found,
                                                                  point))};
   }
 
@@ -86,7 +86,7 @@ namespace liftoff
     if (cell.state() != IteratorState::valid)
       return;
 
-    FEValues<2> fe_values(discretization.mapping,
+    FEValues<2> fe_values(discretization.mapping(),
                           fe,
                           Quadrature<2>(unit_point),
                           update_values);

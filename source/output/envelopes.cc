@@ -189,7 +189,7 @@ namespace liftoff
         quantities[name]           = kinds[e].quantity;
         quantities[name + "_time"] = PhysicalUnits::Quantity::time;
       }
-    data_out.build_patches(disc.mapping, element.degree);
+    data_out.build_patches(disc.mapping(), element.degree);
     const double time = units.scale(PhysicalUnits::Quantity::time) * last_time;
     DataOutBase::VtkFlags flags;
     flags.time              = time;

@@ -471,7 +471,7 @@ namespace liftoff
     const FoundationPressure pressure(foundation.law());
     plane.add_data_vector(solution, pressure);
     const StressResultants resultants(plate,
-                                      disc.mapping,
+                                      disc.mapping(),
                                       disc.element().shear_integration(),
                                       solution);
     if (writes_moments)
@@ -484,7 +484,7 @@ namespace liftoff
     plane.add_data_vector(subdomain, "subdomain");
     const Vector<float> level = refinement_levels(disc);
     plane.add_data_vector(level, "refinement_level");
-    plane.build_patches(disc.mapping,
+    plane.build_patches(disc.mapping(),
                         subdivisions > 0 ? subdivisions
                                          : disc.element().degree());
   }

@@ -45,7 +45,7 @@ namespace liftoff
     is_computed                 = true;
     const Discretization  &disc = discretization;
     const StressResultants resultants(plate,
-                                      disc.mapping,
+                                      disc.mapping(),
                                       disc.element().shear_integration(),
                                       solution);
     const unsigned int     m_1 = StressResultants::field_index("M_1"),
@@ -54,7 +54,7 @@ namespace liftoff
                        q_y     = StressResultants::field_index("Q_y");
     const FE_DGQ<2> output_points(disc.element().degree());
     FEValues<2>     fe_values(
-      disc.mapping,
+      disc.mapping(),
       disc.dof_handler.get_fe(),
       Quadrature<2>(output_points.get_unit_support_points()),
       update_values | update_gradients | update_quadrature_points);

@@ -181,7 +181,7 @@ namespace liftoff
              const DoFHandler<2>::active_cell_iterator &cell,
              const Point<2>                            &unit_point)
     {
-      FEValues<2> fe_values(disc.mapping,
+      FEValues<2> fe_values(disc.mapping(),
                             disc.dof_handler.get_fe(),
                             Quadrature<2>(unit_point),
                             update_values | update_gradients
@@ -557,7 +557,7 @@ namespace liftoff
     const Discretization                       &disc = step.discretization;
     std::map<types::global_dof_index, Point<2>> points;
     DoFTools::map_dofs_to_support_points(
-      disc.mapping,
+      disc.mapping(),
       disc.dof_handler,
       points,
       disc.dof_handler.get_fe().component_mask(FEValuesExtractors::Scalar(0)));
@@ -670,7 +670,7 @@ namespace liftoff
       return {};
     const Discretization  &disc = *discretization;
     const StressResultants resultants(plate,
-                                      disc.mapping,
+                                      disc.mapping(),
                                       disc.element().shear_integration(),
                                       step.state.ghosted_u);
     std::vector<double>    values(probes.size(), 0.0);

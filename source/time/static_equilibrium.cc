@@ -21,7 +21,7 @@ namespace liftoff
       FunctionParser<2> rigid(3);
       rigid.initialize("x,y", motion, {});
       LA::MPI::Vector r(load);
-      VectorTools::interpolate(disc.mapping, disc.dof_handler, rigid, r);
+      VectorTools::interpolate(disc.mapping(), disc.dof_handler, rigid, r);
       return load * r;
     }
   } // namespace

@@ -116,7 +116,7 @@ namespace
       {
         if (round == 2)
           reference = foundation.status_in_matrix();
-        VectorTools::interpolate(discretization.mapping,
+        VectorTools::interpolate(discretization.mapping(),
                                  discretization.dof_handler,
                                  WavyDeflection(0.9 * round),
                                  u);
@@ -152,7 +152,7 @@ namespace
       foundation.add_to_matrix(reference, 0.0, earlier);
       liftoff::LA::MPI::Vector x(u), from_matrices(u), change(u);
       liftoff::LA::MPI::Vector ghosted_x(ghosted_u);
-      VectorTools::interpolate(discretization.mapping,
+      VectorTools::interpolate(discretization.mapping(),
                                discretization.dof_handler,
                                Functions::CosineFunction<2>(3),
                                x);
@@ -248,7 +248,7 @@ namespace
     liftoff::LA::MPI::Vector u, ghosted_u;
     discretization.reinit_vector(u);
     discretization.reinit_ghosted_vector(ghosted_u);
-    VectorTools::interpolate(discretization.mapping,
+    VectorTools::interpolate(discretization.mapping(),
                              discretization.dof_handler,
                              WavyDeflection(0.9),
                              u);

@@ -76,7 +76,7 @@ namespace
   {
     LA::MPI::Vector exact;
     disc.reinit_vector(exact);
-    VectorTools::interpolate(disc.mapping, disc.dof_handler, motion, exact);
+    VectorTools::interpolate(disc.mapping(), disc.dof_handler, motion, exact);
     disc.constraints.distribute(exact);
     const double scale = exact.linfty_norm();
     exact -= x;
@@ -108,8 +108,8 @@ namespace
     LA::MPI::Vector   u, v;
     disc.reinit_vector(u);
     disc.reinit_vector(v);
-    VectorTools::interpolate(disc.mapping, disc.dof_handler, displacement, u);
-    VectorTools::interpolate(disc.mapping, disc.dof_handler, velocity, v);
+    VectorTools::interpolate(disc.mapping(), disc.dof_handler, displacement, u);
+    VectorTools::interpolate(disc.mapping(), disc.dof_handler, velocity, v);
     const double area = disc.geometry().modelled_box().volume();
 
     for (unsigned int round = 1; round <= 4; ++round)

@@ -358,7 +358,7 @@ namespace liftoff_tests::manufactured
     const unsigned degree = disc.dof_handler.get_fe().degree;
     Vector<float>  cellwise(disc.triangulation.n_active_cells());
     // solution() is the ghosted vector, as integrate_difference needs.
-    VectorTools::integrate_difference(disc.mapping,
+    VectorTools::integrate_difference(disc.mapping(),
                                       disc.dof_handler,
                                       simulator.solution(),
                                       exact,

@@ -44,14 +44,14 @@ namespace
       scene_text(degree, cells, true, thickness_ratio, "mitc"));
     const liftoff::Discretization  &disc = sim->get_discretization();
     const liftoff::StressResultants fields(sim->get_plate(),
-                                           disc.mapping,
+                                           disc.mapping(),
                                            disc.element().shear_integration(),
                                            sim->solution());
     // grad w - psi of the same solution: what the shear force would be
     // without the element's assumed strain.
     const liftoff::StressResultants raw(
       sim->get_plate(),
-      disc.mapping,
+      disc.mapping(),
       liftoff::TransverseShearStrain::Treatment::full,
       sim->solution());
     auto centre = fields.at_point(disc, Point<2>(0, 0));
@@ -229,7 +229,7 @@ main(int argc, char **argv)
       scene_text(2, 8, false, thickness_ratio, "mitc"));
     const liftoff::Discretization  &disc = sim->get_discretization();
     const liftoff::StressResultants fields(sim->get_plate(),
-                                           disc.mapping,
+                                           disc.mapping(),
                                            disc.element().shear_integration(),
                                            sim->solution());
     // Each pair's difference relative to the largest value of its kind.

@@ -88,7 +88,7 @@ namespace
       {{{0, 0}}, {{1, 0}}, {{0, 1}}, {{1, 1}}}};
     for (unsigned int k = 0; k < 4; ++k)
       {
-        VectorTools::interpolate(disc.mapping,
+        VectorTools::interpolate(disc.mapping(),
                                  disc.dof_handler,
                                  InWComponent(powers[k][0], powers[k][1]),
                                  g);

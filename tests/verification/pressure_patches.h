@@ -240,7 +240,7 @@ namespace pressure_patches
       {{{0, 0}}, {{1, 0}}, {{0, 1}}}};
     for (unsigned int k = 0; k < 3; ++k)
       {
-        VectorTools::interpolate(disc.mapping,
+        VectorTools::interpolate(disc.mapping(),
                                  disc.dof_handler,
                                  InWComponent(powers[k][0], powers[k][1]),
                                  g);

@@ -6,7 +6,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
@@ -108,6 +108,11 @@ namespace liftoff
     /// for, kept until release_grid_cache().
     const GridTools::Cache<2> &
     grid_cache() const;
+    /// MappingQ1 on the rectangle; on a curved outline a MappingQ of the
+    /// element's degree (at least 2), which puts its support points on the
+    /// manifolds, so the cells follow the circle.
+    const Mapping<2> &
+    mapping() const;
     /// Free the search trees once the scene's points are found: the time
     /// loop does not use them (L, p = 1: 248 MB of the peak).
     void
@@ -115,13 +120,13 @@ namespace liftoff
 
     MPI_Comm                                mpi_communicator;
     parallel::distributed::Triangulation<2> triangulation;
-    MappingQ1<2>                            mapping;
     DoFHandler<2>                           dof_handler;
     IndexSet                                locally_owned_dofs;
     IndexSet                                locally_relevant_dofs;
     AffineConstraints<double>               constraints;
 
   private:
+    std::unique_ptr<Mapping<2>>                      cell_mapping;
     PlateGeometry                                    plate_geometry;
     PlateElement                                     plate_element;
     unsigned int                                     n_refinements = 0;

@@ -215,6 +215,10 @@ namespace liftoff
     void
     require_on_plate(const std::vector<double> &times,
                      const BoundingBox<2>      &plate) const;
+    /// check_against() on a shape other than the rectangle: fixed loads
+    /// only, point loads on the plate.
+    void
+    require_on_outline(const PlateGeometry &geometry) const;
     void
     check_symmetry(const std::vector<double> &times,
                    const Discretization      &disc) const;

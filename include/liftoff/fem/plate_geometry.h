@@ -25,6 +25,14 @@ namespace liftoff
     clamped                // w = psi_x = psi_y = 0
   };
 
+  /// The plate's outline: the rectangle [-1/2, 1/2] x [-mu/2, mu/2] or the
+  /// disc of radius R about the origin.
+  enum class PlateShape
+  {
+    rectangle,
+    disc
+  };
+
   /// Which part of the plate is meshed. The scene always describes the full
   /// plate; symmetry planes are x = 0 (half and quarter) and y = 0 (quarter).
   enum class Symmetry
@@ -53,15 +61,16 @@ namespace liftoff
       bottom_edge      = 2,
       top_edge         = 3,
       x_symmetry_plane = 4, // x = 0
-      y_symmetry_plane = 5  // y = 0
+      y_symmetry_plane = 5, // y = 0
+      outer_boundary   = 6  // the circle of a disc
     };
 
     static const std::array<std::string, 4> edge_names;
 
     PlateGeometry();
 
-    /// Entries in "Discretization" (Symmetry, Cells along x and y) and
-    /// "Boundary conditions".
+    /// Entries in "Discretization" (Shape, Radius, Symmetry, Cells along x
+    /// and y) and "Boundary conditions".
     static void
     declare_parameters(ParameterHandler &prm);
     /// The plate's aspect ratio is taken here, so that every check of a
@@ -95,6 +104,12 @@ namespace liftoff
     std::string
     only_supported_edge() const;
 
+    PlateShape
+    shape() const;
+    /// True when the boundary is curved, so the mapping must follow it.
+    bool
+    has_curved_boundary() const;
+
     Symmetry
     symmetry() const;
     /// How many copies of the modelled part make the plate (1, 2 or 4).
@@ -112,6 +127,9 @@ namespace liftoff
     /// True for a point of the plate, its edges included.
     bool
     is_on_plate(const Point<2> &p) const;
+    /// True for a point of the meshed part, its edges included.
+    bool
+    is_on_modelled_part(const Point<2> &p) const;
     /// "the plate [-0.5, 0.5] x [-1, 1]": messages about points off it name
     /// the plate in numbers, since mu is a parameter of another class.
     std::string
@@ -125,6 +143,12 @@ namespace liftoff
     share_of_point_load(const Point<2> &p) const;
 
   private:
+    void
+    check_shape_choices(const std::string &symmetry_name) const;
+
+    PlateShape                   outline       = PlateShape::rectangle;
+    double                       radius        = 0.5;
+    EdgeCondition                outer         = EdgeCondition::free;
     double                       aspect_ratio  = 1.0;
     Symmetry                     modelled_part = Symmetry::full;
     unsigned int                 n_cells_x     = 10;
