@@ -229,13 +229,17 @@ namespace liftoff
       }
 
       // A point the scene gives in metres from the plate's centre is
-      // refused in metres if it lies outside the plate.
+      // refused in metres if it lies outside the rectangle; other shapes
+      // check their points themselves (with the scales of the twin's
+      // numbers, explain_errors_of()).
       void
       check_on_plate(const std::string &path,
                      const std::string &point,
                      const double       x,
                      const double       y) const
       {
+        if (entries.at("Discretization/Shape").value != "rectangle")
+          return;
         AssertThrow(std::abs(x) <= length / 2 * (1 + 1e-12)
                       && std::abs(y) <= width / 2 * (1 + 1e-12),
                     ExcMessage(path + ": the point " + point
@@ -494,6 +498,8 @@ namespace liftoff
       watch(prm, path);
     for (const auto &[group, physical_entry] : replaced_entries)
       watch(prm, group);
+    // In metres where an SI scene sets it (convert()).
+    watch(prm, "Discretization/Radius");
   }
 
 
@@ -666,6 +672,13 @@ namespace liftoff
                   scale(Quantity::shear_force));
     convert.times_and_points();
     convert.initial_conditions();
+    // A disc's radius in metres where the scene gives it; unset, it stays
+    // half the Length, the dimensionless default.
+    const std::string radius = "Discretization/Radius";
+    if (is_set(scene, radius))
+      convert.set(radius,
+                  convert.value(radius) / length,
+                  radius + " = " + convert.entries.at(radius).value + " [m]");
     convert.reset_physical_entries();
   }
 

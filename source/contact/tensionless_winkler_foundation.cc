@@ -243,8 +243,10 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::add_dashpot_force(const LA::MPI::Vector &v,
-                                                  LA::MPI::Vector &vector) const
+  TensionlessWinklerFoundation::add_dissipative_force(
+    const LA::MPI::Vector &u,
+    const LA::MPI::Vector &v,
+    LA::MPI::Vector       &vector) const
   {
     term.add_integral(
       in_contact,
@@ -253,14 +255,6 @@ namespace liftoff
         points.values_at_points(v, c, v_at_points);
       },
       vector);
-  }
-
-
-  void
-  TensionlessWinklerFoundation::add_unstored_spring_force(
-    const LA::MPI::Vector &u,
-    LA::MPI::Vector       &vector) const
-  {
     const std::vector<unsigned char> every_point(in_contact.size(), 1);
     const unsigned int               n_q   = points.n_q_points();
     const double                     gamma = contact_law.stiffness();

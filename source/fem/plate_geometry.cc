@@ -51,7 +51,8 @@ namespace liftoff
                       "0.5",
                       Patterns::Double(0.0),
                       "R / L, the radius of a disc (Shape = disc) in the "
-                      "length unit L, also in an SI scene.");
+                      "length unit L; in metres in a scene with Units/System "
+                      "= SI (unset there: half of Units/Length).");
     prm.declare_entry("Symmetry",
                       "full",
                       symmetries.pattern(),

@@ -615,8 +615,9 @@ namespace liftoff
   {
     ghosted_scratch   = state_.v;
     dissipative_force = 0;
-    foundation.add_dashpot_force(ghosted_scratch, dissipative_force);
-    foundation.add_unstored_spring_force(state_.ghosted_u, dissipative_force);
+    foundation.add_dissipative_force(state_.ghosted_u,
+                                     ghosted_scratch,
+                                     dissipative_force);
   }
 
 

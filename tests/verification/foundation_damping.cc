@@ -146,14 +146,13 @@ main(int argc, char **argv)
     // c |v| / Gamma, and takes one in where the dashpot pushes harder than
     // the spring pulls: the bed takes energy there that the foundation
     // energy (1/2 Gamma ((w - g)^+)^2) does not hold, and the dissipated
-    // column counts it (add_unstored_spring_force). Without it the balance
+    // column counts it (add_dissipative_force). Without it the balance
     // error was that energy, of order c^2 and the same at every dt; with
     // it the error is the time discretisation's and falls like dt^2, as
     // without dashpots (energy_balance).
     const auto scene = [](const double dt) {
       return liftoff_tests::small_plate_scene()
-             + set("Foundation/Stiffness", 200)
-             + set("Foundation/Damping", 2)
+             + set("Foundation/Stiffness", 200) + set("Foundation/Damping", 2)
              + set("Time integration/Time step", dt)
              + set("Time integration/End time", 0.2);
     };

@@ -165,21 +165,18 @@ namespace liftoff
     /// k (w - e). Call only if has_gap().
     void
     add_gap_load(const SpringPressure &pressure, LA::MPI::Vector &vector) const;
-    /// vector += c int_S v phi_i, the dashpots' force at the velocity v.
+    /// vector += the force whose work the bed takes without storing it:
+    /// the dashpots' c int_S v phi_i, and int_S ([in contact] Gamma (w - g)
+    /// - p_s(w - g)) phi_i, the springs' force the solver applies less the
+    /// part whose potential is the foundation energy (p_s = Gamma
+    /// (w - g)^+, tensionless). The springs' part is not zero where the
+    /// dashpots decide the status: a point in contact with w < g (the
+    /// dashpot pushes harder than the spring pulls) or out of contact with
+    /// w > g (it pulls harder than the spring pushes).
     void
-    add_dashpot_force(const LA::MPI::Vector &ghosted_velocity,
-                      LA::MPI::Vector       &vector) const;
-    /// vector += int_S ([in contact] Gamma (w - g) - p_s(w - g)) phi_i: the
-    /// springs' force the solver applies less the part whose potential is
-    /// the foundation energy (p_s = Gamma (w - g)^+, tensionless). They
-    /// differ where the dashpots decide the status: a point in contact
-    /// with w < g (the dashpot pushes harder than the spring pulls) or out
-    /// of contact with w > g (it pulls harder than the spring pushes). The
-    /// work of this force is energy the bed takes without storing it, as
-    /// the dashpots' is.
-    void
-    add_unstored_spring_force(const LA::MPI::Vector &ghosted_solution,
-                              LA::MPI::Vector       &vector) const;
+    add_dissipative_force(const LA::MPI::Vector &ghosted_solution,
+                          const LA::MPI::Vector &ghosted_velocity,
+                          LA::MPI::Vector       &vector) const;
 
     /// The contact status and the status the system matrix holds: the next
     /// step starts from them, so a resumed run needs them exactly.

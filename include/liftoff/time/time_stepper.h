@@ -267,7 +267,7 @@ namespace liftoff
     pressure_at_state_velocity();
     /// dissipative_force = c int_S v phi of the state, plus the springs'
     /// force the foundation energy does not hold
-    /// (TensionlessWinklerFoundation::add_unstored_spring_force()).
+    /// (TensionlessWinklerFoundation::add_dissipative_force()).
     void
     compute_dissipative_force();
     /// The system matrix of the time steps from the bilateral set.
