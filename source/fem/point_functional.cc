@@ -73,7 +73,7 @@ namespace liftoff
                                                 &discretization.dof_handler),
             GeometryInfo<2>::project_to_unit_cell(
               discretization.mapping().transform_real_to_unit_cell(found,
-                                                                 point))};
+                                                                   point))};
   }
 
 
