@@ -561,16 +561,47 @@ namespace liftoff
   }
 
 
-  std::vector<Point<2>>
-  LoadSet::point_load_positions(const Discretization &disc) const
+  std::vector<std::vector<BoundingBox<2>>>
+  LoadSet::regions_in_windows(const double       tau,
+                              const double       window,
+                              const unsigned int n_windows) const
   {
-    std::vector<Point<2>> positions;
-    // Moving loads have no place to keep fine.
+    std::vector<std::vector<BoundingBox<2>>> regions;
+    for (unsigned int k = 0; k < n_windows; ++k)
+      regions.push_back(
+        regions_under_loads(tau + k * window, tau + (k + 1) * window));
+    return regions;
+  }
+
+
+  std::vector<BoundingBox<2>>
+  LoadSet::regions_under_loads(const double tau_begin,
+                               const double tau_end) const
+  {
+    std::vector<BoundingBox<2>> regions;
     for (const auto &load : loads)
-      if (load.kind == Kind::point && !load.moves
-          && disc.geometry().is_on_modelled_part(load.position_at(0)))
-        positions.push_back(load.position_at(0));
-    return positions;
+      {
+        if (load.kind != Kind::point && load.kind != Kind::patch)
+          continue;
+        // A path over the interval: its positions at nine times (a path
+        // that bends between them is covered up to that sampling).
+        const unsigned int    n_samples = load.moves ? 9 : 1;
+        std::vector<Point<2>> corners;
+        for (unsigned int k = 0; k < n_samples; ++k)
+          {
+            const double tau =
+              n_samples == 1
+                ? tau_begin
+                : tau_begin + (tau_end - tau_begin) * k / (n_samples - 1);
+            const Point<2>     p = load.position_at(tau);
+            const Tensor<1, 2> half({load.size[0] / 2, load.size[1] / 2});
+            corners.insert(corners.end(), {p - half, p + half});
+          }
+        // A box off the meshed part touches no cell: a symmetric scene
+        // has each load's image among its loads.
+        regions.emplace_back(corners);
+      }
+    return regions;
   }
 
 

@@ -19,21 +19,41 @@ namespace liftoff
     {
       kelly,
       contact_front,
-      point_loads
+      loads
     };
-    const Selection<Indicator> indicators = {
-      {"kelly", Indicator::kelly},
-      {"contact front", Indicator::contact_front},
-      {"point loads", Indicator::point_loads}};
+    // "point loads" is the name of the indicator from before patches and
+    // moving loads were refined too.
+    const Selection<Indicator> indicators = {{"kelly", Indicator::kelly},
+                                             {"contact front",
+                                              Indicator::contact_front},
+                                             {"loads", Indicator::loads},
+                                             {"point loads", Indicator::loads}};
 
-    // Whether a point lies in a cell's bounding box (a point load on a
-    // vertex or an edge belongs to every cell around it).
+    // Whether a region meets a cell's bounding box, up to a tolerance (a
+    // point load on a vertex or an edge belongs to every cell around it).
     bool
-    holds_point(const TriaActiveIterator<CellAccessor<2>> &cell,
-                const Point<2>                            &p)
+    is_under(const TriaActiveIterator<CellAccessor<2>> &cell,
+             const BoundingBox<2>                      &region)
     {
-      const double h = cell->diameter();
-      return cell->bounding_box().point_inside(p, 1e-10 * h);
+      const BoundingBox<2> box       = cell->bounding_box();
+      const double         tolerance = 1e-10 * cell->diameter();
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const double side = box.upper_bound(d) - box.lower_bound(d);
+          if (box.lower_bound(d) - tolerance * side > region.upper_bound(d)
+              || box.upper_bound(d) + tolerance * side < region.lower_bound(d))
+            return false;
+        }
+      return true;
+    }
+
+    bool
+    is_under_any(const TriaActiveIterator<CellAccessor<2>> &cell,
+                 const std::vector<BoundingBox<2>>         &regions)
+    {
+      return std::any_of(regions.begin(), regions.end(), [&](const auto &r) {
+        return is_under(cell, r);
+      });
     }
   } // namespace
 
@@ -92,9 +112,12 @@ namespace liftoff
                       "(KellyErrorEstimator), refined and coarsened by the "
                       "fractions below; contact front, the cells whose Gauss "
                       "points are partly in contact and the cells within "
-                      "Front band of them; point loads, the cells holding a "
-                      "point load. The last two are refined to Maximum level "
-                      "and not coarsened while they hold the front or a load; "
+                      "Front band of them; loads (or its former name point "
+                      "loads), the cells under a point or patch load, and "
+                      "under the stretch of a moving load's path until the "
+                      "next adaptation. The last two are refined to Maximum "
+                      "level and not coarsened while they hold the front or a "
+                      "load; "
                       "without kelly, every other cell is coarsened (down to "
                       "Minimum level), so the refinement follows the front.");
     prm.declare_entry("Refine fraction",
@@ -160,7 +183,7 @@ namespace liftoff
     max_level           = prm.get_integer("Maximum level");
     front_band          = prm.get_integer("Front band");
     initial_refinements = prm.get_integer("Initial refinements");
-    uses_kelly = uses_front = uses_point_loads = false;
+    uses_kelly = uses_front = uses_loads = false;
     for (const auto &name : Utilities::split_string_list(prm.get("Indicators")))
       switch (indicators.parse(name, "Mesh refinement/Indicators"))
         {
@@ -170,8 +193,8 @@ namespace liftoff
         case Indicator::contact_front:
           uses_front = true;
           break;
-        case Indicator::point_loads:
-          uses_point_loads = true;
+        case Indicator::loads:
+          uses_loads = true;
           break;
         }
     prm.leave_subsection();
@@ -238,6 +261,20 @@ namespace liftoff
 
 
   unsigned int
+  MeshRefinement::steps_between_adaptations() const
+  {
+    return interval;
+  }
+
+
+  unsigned int
+  MeshRefinement::n_windows() const
+  {
+    return std::max(1, static_cast<int>(max_level) - min_level);
+  }
+
+
+  unsigned int
   MeshRefinement::n_static_cycles() const
   {
     return enabled ? static_cycles : 0;
@@ -252,21 +289,14 @@ namespace liftoff
 
 
   void
-  MeshRefinement::refine_around_points(
-    Discretization              &discretization,
-    const std::vector<Point<2>> &points) const
+  MeshRefinement::refine_around_loads(Discretization &discretization,
+                                      const Windows  &windows) const
   {
-    if (!enabled || !uses_point_loads || points.empty())
+    if (!enabled || !uses_loads || windows.empty() || windows[0].empty())
       return;
     for (unsigned int r = 0; r < initial_refinements; ++r)
       {
-        force_refinement(discretization, [&](const auto &cell) {
-          return std::any_of(points.begin(),
-                             points.end(),
-                             [&](const Point<2> &p) {
-                               return holds_point(cell, p);
-                             });
-        });
+        keep_loads_fine(discretization, windows, true);
         limit_levels(discretization);
         discretization.triangulation.execute_coarsening_and_refinement();
       }
@@ -367,6 +397,28 @@ namespace liftoff
 
 
   void
+  MeshRefinement::keep_loads_fine(Discretization &discretization,
+                                  const Windows  &windows,
+                                  const bool      refine) const
+  {
+    const int finest = discretization.initial_level() + max_level;
+    for (unsigned int k = 0; k < windows.size(); ++k)
+      {
+        force_refinement(
+          discretization,
+          [&](const auto &cell) { return is_under_any(cell, windows[k]); },
+          false);
+        if (refine)
+          force_refinement(discretization, [&](const auto &cell) {
+            return static_cast<int>(cell->level())
+                     < finest - static_cast<int>(k)
+                   && is_under_any(cell, windows[k]);
+          });
+      }
+  }
+
+
+  void
   MeshRefinement::limit_levels(Discretization &discretization) const
   {
     const int finest = discretization.initial_level() + max_level;
@@ -385,9 +437,9 @@ namespace liftoff
 
 
   bool
-  MeshRefinement::mark_cells(Discretization              &discretization,
-                             const Vector<float>         &contact_fraction,
-                             const std::vector<Point<2>> &points,
+  MeshRefinement::mark_cells(Discretization        &discretization,
+                             const Vector<float>   &contact_fraction,
+                             const Windows         &windows,
                              const LA::MPI::Vector &ghosted_solution) const
   {
     auto &tria = discretization.triangulation;
@@ -419,15 +471,8 @@ namespace liftoff
           [&](const auto &cell) { return in_band[cell->active_cell_index()]; },
           !full);
       }
-    if (uses_point_loads)
-      force_refinement(
-        discretization,
-        [&](const auto &cell) {
-          return std::any_of(points.begin(), points.end(), [&](const auto &p) {
-            return holds_point(cell, p);
-          });
-        },
-        !full);
+    if (uses_loads)
+      keep_loads_fine(discretization, windows, !full);
     limit_levels(discretization);
     tria.prepare_coarsening_and_refinement();
 

@@ -86,8 +86,13 @@ namespace liftoff
                           active_set.linear_solver().factor_placement(),
                           discretization.mpi_communicator);
     discretization.setup();
-    mesh_refinement.refine_around_points(
-      discretization, loads.point_load_positions(discretization));
+    const double window =
+      analysis == Analysis::static_analysis
+        ? 0.0
+        : mesh_refinement.steps_between_adaptations() * newmark.time_step;
+    mesh_refinement.refine_around_loads(
+      discretization,
+      loads.regions_in_windows(0, window, mesh_refinement.n_windows()));
     if (analysis == Analysis::static_analysis)
       loads.check_against(discretization, 0.0, 0);
     else

@@ -448,7 +448,10 @@ namespace liftoff
       if (!mesh_refinement.mark_cells(
             discretization,
             foundation.diagnostics().contact_fraction_per_cell(),
-            loads.point_load_positions(discretization),
+            loads.regions_in_windows(state_.tau,
+                                     mesh_refinement.steps_between_adaptations()
+                                       * newmark.time_step,
+                                     mesh_refinement.n_windows()),
             state_.ghosted_u))
         return false;
       mesh_refinement.execute(discretization,

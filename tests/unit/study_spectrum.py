@@ -11,6 +11,9 @@
 - sample(): a linear function is reproduced exactly between the stored
   times, a stored time returns the stored value itself, and a time outside
   the history is refused.
+- split_qoi(): "name@T" is the column from tau = T on, a riding probe's
+  column ("w@patch_load_1") is a name, and a non-number after a second '@'
+  is refused.
 """
 
 import importlib.machinery
@@ -95,6 +98,17 @@ def main():
     except tool.StudyError:
         refused = True
     check(refused, "sample(): a time after the history is refused")
+    split = [tool.split_qoi(q) for q in
+             ("w(0;0)", "w(0;0)@0.1", "w@patch_load_1", "w@vehicle_1@0.25")]
+    check(split == [("w(0;0)", None), ("w(0;0)", 0.1),
+                    ("w@patch_load_1", None), ("w@vehicle_1", 0.25)],
+          "split_qoi(): start times and riding probes' names: %s" % split)
+    try:
+        tool.split_qoi("w@vehicle_1@soon")
+        refused = False
+    except tool.StudyError:
+        refused = True
+    check(refused, "split_qoi(): a start time that is no number is refused")
     finish()
 
 

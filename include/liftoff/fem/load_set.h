@@ -72,10 +72,16 @@ namespace liftoff
     void
     assemble_permanent(LA::MPI::Vector &load_vector) const;
 
-    /// Where the point loads act on the meshed part (mesh refinement keeps
-    /// their cells fine).
-    std::vector<Point<2>>
-    point_load_positions(const Discretization &discretization) const;
+    /// Where the point and patch loads act in n_windows consecutive
+    /// windows of time from tau, each `window` long: for each window, boxes
+    /// in plate coordinates (a point load that stands: the box of its
+    /// point; one that moves: the box of its path over the window; a
+    /// patch: widened by its half size). Mesh refinement keeps their cells
+    /// fine (MeshRefinement::Windows).
+    std::vector<std::vector<BoundingBox<2>>>
+    regions_in_windows(const double       tau,
+                       const double       window,
+                       const unsigned int n_windows) const;
 
     /// The moving loads (and vehicles) that history.csv follows: for each
     /// a name (`point_load_2`, `patch_load_1`, `vehicle_1`) ...
@@ -191,6 +197,9 @@ namespace liftoff
                       const std::function<bool(const Load &)> &selected,
                       LA::MPI::Vector &load_vector) const;
 
+    /// regions_in_windows() for one window.
+    std::vector<BoundingBox<2>>
+    regions_under_loads(const double tau_begin, const double tau_end) const;
     /// Rectangle of a pressure, in full plate coordinates.
     static BoundingBox<2>
     region_of(const Load &load, const BoundingBox<2> &plate);

@@ -1,7 +1,7 @@
 #pragma once
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/point.h>
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/base/linear_algebra.h>
@@ -25,7 +25,9 @@ namespace liftoff
    * the gradient jumps of w, psi_x and psi_y (refine and coarsen by
    * fractions of the cells, as step-26 does); the contact front, cells
    * whose Gauss points are partly in contact and those within `Front band`
-   * layers of them; and the cells holding a point load. The last two are
+   * layers of them; and the cells under a load (a point or a patch, and the
+   * stretch of a moving load's path until the next adaptation, so the fine
+   * cells wait for the load and are coarsened behind it). The last two are
    * always refined up to `Maximum level` and not coarsened while they hold
    * the front or a load; without Kelly every other cell is flagged for
    * coarsening, so the band moves with the front. Levels count
@@ -61,11 +63,26 @@ namespace liftoff
     unsigned int
     n_initial_refinements() const;
 
-    /// Before the first step: refine the cells holding the point loads
+    /// Where the loads act in consecutive windows of the time ahead, each
+    /// as long as the time between two adaptations
+    /// (LoadSet::regions_in_windows). A cell under window k is refined up
+    /// to `Maximum level` - k: a cell gains one level per adaptation, so a
+    /// moving load finds its cells at Maximum level when it arrives.
+    using Windows = std::vector<std::vector<BoundingBox<2>>>;
+
+    /// Before the first step: refine the cells under the loads
     /// `Initial refinements` times (no state to move yet).
     void
-    refine_around_points(Discretization              &discretization,
-                         const std::vector<Point<2>> &points) const;
+    refine_around_loads(Discretization &discretization,
+                        const Windows  &windows) const;
+    /// The number of steps from one adaptation to the next: the length of
+    /// a window.
+    unsigned int
+    steps_between_adaptations() const;
+    /// The number of windows the loads are looked ahead: the levels a cell
+    /// may have to gain.
+    unsigned int
+    n_windows() const;
 
     /// Flag cells for refinement and coarsening from the deflection and
     /// the contact status, given as the fraction of each owned cell in
@@ -73,10 +90,10 @@ namespace liftoff
     /// cells strictly between 0 and 1); returns whether the mesh would
     /// change on any rank (collective).
     bool
-    mark_cells(Discretization              &discretization,
-               const Vector<float>         &contact_fraction,
-               const std::vector<Point<2>> &points,
-               const LA::MPI::Vector       &ghosted_solution) const;
+    mark_cells(Discretization        &discretization,
+               const Vector<float>   &contact_fraction,
+               const Windows         &windows,
+               const LA::MPI::Vector &ghosted_solution) const;
 
     /// Refine and coarsen as flagged, rebuild the dofs and carry `vectors`
     /// (owned entries, constraints distributed) to the new mesh by
@@ -110,7 +127,7 @@ namespace liftoff
     unsigned int initial_refinements = 0;
     bool         uses_kelly          = true;
     bool         uses_front          = true;
-    bool         uses_point_loads    = true;
+    bool         uses_loads          = true;
 
     /// The Kelly estimate per active cell, rounded (see the class comment).
     Vector<float>
@@ -128,6 +145,12 @@ namespace liftoff
     force_refinement(Discretization  &discretization,
                      const Predicate &is_wanted,
                      const bool       refine = true) const;
+    /// Keep the cells under the loads' windows from coarsening and, with
+    /// `refine`, flag those below their window's level for refinement.
+    void
+    keep_loads_fine(Discretization &discretization,
+                    const Windows  &windows,
+                    const bool      refine) const;
     /// Clear the flags that would leave [min level, max level].
     void
     limit_levels(Discretization &discretization) const;
