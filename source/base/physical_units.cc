@@ -498,8 +498,9 @@ namespace liftoff
       watch(prm, path);
     for (const auto &[group, physical_entry] : replaced_entries)
       watch(prm, group);
-    // In metres where an SI scene sets it (convert()).
+    // In metres where an SI scene sets them (convert()).
     watch(prm, "Discretization/Radius");
+    watch(prm, "Discretization/Inner radius");
   }
 
 
@@ -672,13 +673,15 @@ namespace liftoff
                   scale(Quantity::shear_force));
     convert.times_and_points();
     convert.initial_conditions();
-    // A disc's radius in metres where the scene gives it; unset, it stays
-    // half the Length, the dimensionless default.
-    const std::string radius = "Discretization/Radius";
-    if (is_set(scene, radius))
-      convert.set(radius,
-                  convert.value(radius) / length,
-                  radius + " = " + convert.entries.at(radius).value + " [m]");
+    // The radii of a disc or an annulus in metres where the scene gives
+    // them; unset, they stay the dimensionless defaults (R = L / 2,
+    // R_i = L / 4).
+    for (const std::string radius :
+         {"Discretization/Radius", "Discretization/Inner radius"})
+      if (is_set(scene, radius))
+        convert.set(radius,
+                    convert.value(radius) / length,
+                    radius + " = " + convert.entries.at(radius).value + " [m]");
     convert.reset_physical_entries();
   }
 

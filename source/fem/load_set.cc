@@ -726,13 +726,16 @@ namespace liftoff
         AssertThrow(load.path == nullptr,
                     ExcMessage(load.name
                                + " moves along a path, which is not "
-                                 "available on Discretization/Shape = disc "
-                                 "yet; use fixed loads."));
+                                 "available on "
+                               + geometry.shape_setting()
+                               + " yet; use fixed loads."));
         AssertThrow(load.kind != Kind::line,
                     ExcMessage(load.name
                                + " acts along an edge of the rectangle, "
-                                 "which Discretization/Shape = disc does "
-                                 "not have; use a Pressure on a ring."));
+                                 "which "
+                               + geometry.shape_setting()
+                               + " does not have; use a Pressure on a "
+                                 "ring."));
         if (load.kind == Kind::point)
           AssertThrow(geometry.is_on_plate(load.position),
                       ExcMessage(load.name + "/Position = "

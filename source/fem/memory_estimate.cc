@@ -158,10 +158,11 @@ namespace liftoff
     counts.precision(3);
     counts << estimate.n_cells << " cells, " << estimate.n_dofs << " unknowns, "
            << estimate.n_matrix_entries << " matrix entries";
-    // A disc's coarse mesh is fixed: only the rectangle's cells are named.
+    // The coarse mesh of a disc or an annulus is fixed: only the
+    // rectangle's cells are named.
     const std::string coarse_mesh =
-      geometry.shape() == PlateShape::disc
-        ? std::string("Discretization/Shape = disc")
+      geometry.shape() != PlateShape::rectangle
+        ? geometry.shape_setting()
         : "Discretization/Cells along x = "
             + std::to_string(geometry.coarse_cells_along(0))
             + ", Cells along y = "

@@ -21,7 +21,8 @@ namespace liftoff
       {"clamped", EdgeCondition::clamped}};
 
     const Selection<PlateShape> shapes = {{"rectangle", PlateShape::rectangle},
-                                          {"disc", PlateShape::disc}};
+                                          {"disc", PlateShape::disc},
+                                          {"annulus", PlateShape::annulus}};
 
     const Selection<Symmetry> symmetries = {{"full", Symmetry::full},
                                             {"half", Symmetry::half},
@@ -46,13 +47,22 @@ namespace liftoff
                       "[-mu/2, mu/2] with the edges Left, Right, Bottom and "
                       "Top; disc, of radius Radius about the origin with "
                       "the edge Outer, meshed by GridGenerator::"
-                      "hyper_ball_balanced (Cells along x and y unused).");
+                      "hyper_ball_balanced; annulus, between the circles of "
+                      "radii Inner radius and Radius about the origin with "
+                      "the edges Inner and Outer, meshed by GridGenerator::"
+                      "hyper_shell (Cells along x and y unused by both).");
     prm.declare_entry("Radius",
                       "0.5",
                       Patterns::Double(0.0),
-                      "R / L, the radius of a disc (Shape = disc) in the "
-                      "length unit L; in metres in a scene with Units/System "
-                      "= SI (unset there: half of Units/Length).");
+                      "R / L, the radius of a disc (Shape = disc) or the "
+                      "outer radius of an annulus in the length unit L; in "
+                      "metres in a scene with Units/System = SI (unset "
+                      "there: half of Units/Length).");
+    prm.declare_entry("Inner radius",
+                      "0.25",
+                      Patterns::Double(0.0),
+                      "R_i / L, the radius of the hole of an annulus (Shape "
+                      "= annulus), 0 < R_i < Radius.");
     prm.declare_entry("Symmetry",
                       "full",
                       symmetries.pattern(),
@@ -69,7 +79,13 @@ namespace liftoff
                       Patterns::Integer(1),
                       "Number of cells along y on the meshed part.");
     prm.leave_subsection();
+    declare_boundary_conditions(prm);
+  }
 
+
+  void
+  PlateGeometry::declare_boundary_conditions(ParameterHandler &prm)
+  {
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : edge_names)
       prm.declare_entry(name,
@@ -82,8 +98,14 @@ namespace liftoff
     prm.declare_entry("Outer",
                       "free",
                       edge_conditions.pattern(),
-                      "Condition on the circle of a disc (Shape = disc): "
-                      "free, soft simply supported or clamped.");
+                      "Condition on the circle of a disc or the outer circle "
+                      "of an annulus: free, soft simply supported or "
+                      "clamped.");
+    prm.declare_entry("Inner",
+                      "free",
+                      edge_conditions.pattern(),
+                      "Condition on the hole's circle of an annulus (Shape "
+                      "= annulus): free, soft simply supported or clamped.");
     prm.leave_subsection();
   }
 
@@ -94,8 +116,9 @@ namespace liftoff
   {
     aspect_ratio = plate.aspect_ratio;
     prm.enter_subsection("Discretization");
-    outline = shapes.parse(prm.get("Shape"), "Discretization/Shape");
-    radius  = prm.get_double("Radius");
+    outline      = shapes.parse(prm.get("Shape"), "Discretization/Shape");
+    radius       = prm.get_double("Radius");
+    inner_radius = prm.get_double("Inner radius");
     const std::string symmetry_name = prm.get("Symmetry");
     modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
     n_cells_x     = prm.get_integer("Cells along x");
@@ -108,6 +131,8 @@ namespace liftoff
                                        "Boundary conditions/" + edge_names[e]);
     outer =
       edge_conditions.parse(prm.get("Outer"), "Boundary conditions/Outer");
+    inner =
+      edge_conditions.parse(prm.get("Inner"), "Boundary conditions/Inner");
     prm.leave_subsection();
     check_shape_choices(symmetry_name);
 
@@ -132,28 +157,53 @@ namespace liftoff
     const auto refuse = [](const bool wrong, const std::string &message) {
       AssertThrow(!wrong, ExcMessage(message));
     };
+    refuse(outline != PlateShape::annulus && inner != EdgeCondition::free,
+           "Boundary conditions/Inner is the hole's edge of an annulus; "
+             + shape_setting() + " has no hole.");
     if (outline == PlateShape::rectangle)
       {
         refuse(outer != EdgeCondition::free,
-               "Boundary conditions/Outer is the edge of a disc; a "
-               "rectangle (Discretization/Shape = rectangle) has Left, "
-               "Right, Bottom and Top.");
+               "Boundary conditions/Outer is the edge of a disc or an "
+               "annulus; a rectangle (Discretization/Shape = rectangle) has "
+               "Left, Right, Bottom and Top.");
         return;
       }
-    refuse(radius <= 0, "Discretization/Radius must be > 0 for a disc.");
+    refuse(radius <= 0,
+           "Discretization/Radius must be > 0 for " + shape_setting() + ".");
+    if (outline == PlateShape::annulus)
+      refuse(inner_radius <= 0 || inner_radius >= radius,
+             "Discretization/Inner radius = " + std::to_string(inner_radius)
+               + " must lie strictly between 0 and Discretization/Radius = "
+               + std::to_string(radius) + " for an annulus.");
     for (unsigned int e = 0; e < 4; ++e)
       refuse(edges[e] != EdgeCondition::free,
              "Boundary conditions/" + edge_names[e]
-               + " is an edge of the rectangle; a disc (Discretization/"
-                 "Shape = disc) has the edge Outer.");
-    // The rotation along a circle is no component of (w, psi_x, psi_y);
-    // holding it needs normal-tangential constraints, not written yet.
-    refuse(outer == EdgeCondition::hard_simply_supported,
-           "Boundary conditions/Outer = hard simply supported is not "
-           "available on a disc yet; use soft simply supported or clamped.");
+               + " is an edge of the rectangle; " + shape_setting()
+               + " has the edges "
+               + (outline == PlateShape::annulus ? "Inner and Outer."
+                                                 : "Outer."));
+    check_circle_conditions();
     refuse(modelled_part != Symmetry::full,
            "Discretization/Symmetry = " + symmetry_name
-             + " is not available on a disc yet; use full.");
+             + " is not available on " + shape_setting() + " yet; use full.");
+  }
+
+
+  void
+  PlateGeometry::check_circle_conditions() const
+  {
+    // The rotation along a circle is no component of (w, psi_x, psi_y);
+    // holding it needs normal-tangential constraints, not written yet.
+    const std::array<std::pair<std::string, EdgeCondition>, 2> circles = {
+      {{"Outer", outer}, {"Inner", inner}}};
+    for (const auto &[name, condition] : circles)
+      AssertThrow(condition != EdgeCondition::hard_simply_supported,
+                  ExcMessage("Boundary conditions/" + name
+                             + " = hard simply supported is not available "
+                               "on "
+                             + shape_setting()
+                             + " yet; use soft simply supported or "
+                               "clamped."));
   }
 
 
@@ -169,6 +219,22 @@ namespace liftoff
         for (const auto &face : triangulation.active_face_iterators())
           if (face->at_boundary())
             face->set_boundary_id(outer_boundary);
+        return;
+      }
+    if (outline == PlateShape::annulus)
+      {
+        // A SphericalManifold on every cell and face keeps both circles
+        // round and the cells' radial lines straight under refinement.
+        GridGenerator::hyper_shell(triangulation,
+                                   Point<2>(),
+                                   inner_radius,
+                                   radius,
+                                   n_ring_cells(),
+                                   /*colorize*/ true);
+        for (const auto &face : triangulation.active_face_iterators())
+          if (face->at_boundary())
+            face->set_boundary_id(face->boundary_id() == 0 ? inner_boundary
+                                                           : outer_boundary);
         return;
       }
     const BoundingBox<2> box = modelled_box();
@@ -200,15 +266,30 @@ namespace liftoff
     // The 12 cells of hyper_ball_balanced count as 4 x 4 in estimates.
     if (outline == PlateShape::disc)
       return 4;
+    // The ring's cells count as one row of them.
+    if (outline == PlateShape::annulus)
+      return axis == 0 ? n_ring_cells() : 1;
     return axis == 0 ? n_cells_x : n_cells_y;
+  }
+
+
+  unsigned int
+  PlateGeometry::n_ring_cells() const
+  {
+    // About as many as make the cells square at the mean radius, the
+    // choice hyper_shell makes for n_cells = 0, and at least 3 for a ring.
+    return std::max(3u,
+                    static_cast<unsigned int>(
+                      std::ceil(numbers::PI * (radius + inner_radius)
+                                / (radius - inner_radius))));
   }
 
 
   double
   PlateGeometry::largest_cell_aspect_ratio() const
   {
-    // hyper_ball_balanced's cells are close to square.
-    if (outline == PlateShape::disc)
+    // hyper_ball_balanced's and hyper_shell's cells are close to square.
+    if (outline != PlateShape::rectangle)
       return 1.0;
     // Refinement splits cells in both directions: the coarse cells' ratio.
     const double width  = 1.0 / n_cells_x;
@@ -228,6 +309,10 @@ namespace liftoff
       held.emplace_back(outer_boundary, mask({true, false, false}));
     if (outer == EdgeCondition::clamped)
       held.emplace_back(outer_boundary, mask({true, true, true}));
+    if (inner == EdgeCondition::soft_simply_supported)
+      held.emplace_back(inner_boundary, mask({true, false, false}));
+    if (inner == EdgeCondition::clamped)
+      held.emplace_back(inner_boundary, mask({true, true, true}));
     for (unsigned int e = 0; e < 4; ++e)
       {
         // Rotation along an edge: psi_y on the edges x = const, psi_x on
@@ -258,7 +343,7 @@ namespace liftoff
   bool
   PlateGeometry::has_kinematic_support() const
   {
-    if (outer != EdgeCondition::free)
+    if (outer != EdgeCondition::free || inner != EdgeCondition::free)
       return true;
     for (const auto e : edges)
       if (e != EdgeCondition::free)
@@ -290,10 +375,17 @@ namespace liftoff
   }
 
 
+  std::string
+  PlateGeometry::shape_setting() const
+  {
+    return "Discretization/Shape = " + shapes.name(outline);
+  }
+
+
   bool
   PlateGeometry::has_curved_boundary() const
   {
-    return outline == PlateShape::disc;
+    return outline != PlateShape::rectangle;
   }
 
 
@@ -329,7 +421,7 @@ namespace liftoff
   BoundingBox<2>
   PlateGeometry::plate_box() const
   {
-    if (outline == PlateShape::disc)
+    if (outline != PlateShape::rectangle)
       return BoundingBox<2>(
         std::make_pair(Point<2>(-radius, -radius), Point<2>(radius, radius)));
     return BoundingBox<2>(std::make_pair(Point<2>(-0.5, -0.5 * aspect_ratio),
@@ -352,6 +444,9 @@ namespace liftoff
   {
     if (outline == PlateShape::disc)
       return p.norm() <= radius * (1 + 1e-12);
+    if (outline == PlateShape::annulus)
+      return p.norm() <= radius * (1 + 1e-12)
+             && p.norm() >= inner_radius * (1 - 1e-12);
     // Relative to the plate's size, so that a point written on an edge is
     // on the plate whatever the round-off of its decimal digits.
     return plate_box().point_inside(p, 1e-12 * std::max(1.0, aspect_ratio));
@@ -361,8 +456,8 @@ namespace liftoff
   bool
   PlateGeometry::is_on_modelled_part(const Point<2> &p) const
   {
-    // A disc is always modelled in full (check_shape_choices).
-    if (outline == PlateShape::disc)
+    // Discs and annuli are always modelled in full (check_shape_choices).
+    if (outline != PlateShape::rectangle)
       return is_on_plate(p);
     return modelled_box().point_inside(p, 1e-12);
   }
@@ -376,6 +471,12 @@ namespace liftoff
     if (outline == PlateShape::disc)
       {
         text << "the disc of radius " << radius << " about (0, 0)";
+        return text.str();
+      }
+    if (outline == PlateShape::annulus)
+      {
+        text << "the annulus " << inner_radius << " <= r <= " << radius
+             << " about (0, 0)";
         return text.str();
       }
     text << "the plate [-0.5, 0.5] x [" << -0.5 * aspect_ratio << ", "

@@ -62,6 +62,16 @@ namespace liftoff
       return entries.front().second;
     }
 
+    /// The name of `value` in the table, for messages.
+    std::string
+    name(const Value value) const
+    {
+      for (const auto &entry : entries)
+        if (entry.second == value)
+          return entry.first;
+      return "";
+    }
+
   private:
     std::vector<std::pair<std::string, Value>> entries;
   };

@@ -25,12 +25,14 @@ namespace liftoff
     clamped                // w = psi_x = psi_y = 0
   };
 
-  /// The plate's outline: the rectangle [-1/2, 1/2] x [-mu/2, mu/2] or the
-  /// disc of radius R about the origin.
+  /// The plate's outline: the rectangle [-1/2, 1/2] x [-mu/2, mu/2], the
+  /// disc of radius R about the origin or the annulus between the circles
+  /// of radii R_i and R about it.
   enum class PlateShape
   {
     rectangle,
-    disc
+    disc,
+    annulus
   };
 
   /// Which part of the plate is meshed. The scene always describes the full
@@ -62,7 +64,8 @@ namespace liftoff
       top_edge         = 3,
       x_symmetry_plane = 4, // x = 0
       y_symmetry_plane = 5, // y = 0
-      outer_boundary   = 6  // the circle of a disc
+      outer_boundary   = 6, // the circle of a disc, the outer of an annulus
+      inner_boundary   = 7  // the hole's circle of an annulus
     };
 
     static const std::array<std::string, 4> edge_names;
@@ -106,6 +109,10 @@ namespace liftoff
 
     PlateShape
     shape() const;
+    /// "Discretization/Shape = disc": messages about what a shape does not
+    /// support name it as the scene does.
+    std::string
+    shape_setting() const;
     /// True when the boundary is curved, so the mapping must follow it.
     bool
     has_curved_boundary() const;
@@ -143,12 +150,21 @@ namespace liftoff
     share_of_point_load(const Point<2> &p) const;
 
   private:
+    static void
+    declare_boundary_conditions(ParameterHandler &prm);
     void
     check_shape_choices(const std::string &symmetry_name) const;
+    void
+    check_circle_conditions() const;
+    /// Cells of the coarse ring GridGenerator::hyper_shell makes.
+    unsigned int
+    n_ring_cells() const;
 
     PlateShape                   outline       = PlateShape::rectangle;
     double                       radius        = 0.5;
+    double                       inner_radius  = 0.25;
     EdgeCondition                outer         = EdgeCondition::free;
+    EdgeCondition                inner         = EdgeCondition::free;
     double                       aspect_ratio  = 1.0;
     Symmetry                     modelled_part = Symmetry::full;
     unsigned int                 n_cells_x     = 10;
