@@ -32,12 +32,14 @@ MappingQ1 (a polygonal ring) the bound fails (1.7e-3 and 7.9e-3).
 """
 
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
 from scipy.integrate import quad, solve_bvp
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+from scenes import read_history, run_scene_or_fail  # noqa: E402
 
 LIFTOFF = sys.argv[1]
 AI, A, Q, NU, CHI, DELTA = 0.2, 0.5, 1.0, 0.3, 5.0 / 6.0, 0.05
@@ -140,16 +142,8 @@ end
 
 
 def run(work, name, text):
-    prm = os.path.join(work, name + ".prm")
-    with open(prm, "w") as f:
-        f.write(text + f"subsection Output\n set Directory = {work}/{name}\n"
-                "end\n")
-    subprocess.run([LIFTOFF, prm], check=True, stdout=subprocess.DEVNULL)
-    with open(os.path.join(work, name, "history.csv")) as f:
-        header = f.readline().strip().split(",")
-        row = [float(v) for v in f.readline().split(",")]
-    values = dict(zip(header, row))
-    return np.array([values[f"w({r:g};0)"] for r in RADII])
+    history = read_history(run_scene_or_fail(LIFTOFF, work, name, text))
+    return np.array([history[f"w({r:g};0)"][0] for r in RADII])
 
 
 reference = axisymmetric("free", "soft simply supported")

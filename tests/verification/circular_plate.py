@@ -34,11 +34,13 @@ with the 32 rim faces of two refinements would miss it by 6.4e-3).
 """
 
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+from scenes import read_history, run_scene_or_fail  # noqa: E402
 
 LIFTOFF = sys.argv[1]
 A, Q, NU, CHI, DELTA, GAMMA = 0.5, 1.0, 0.3, 5.0 / 6.0, 0.05, 100.0
@@ -127,15 +129,9 @@ end
 
 
 def run(work, name, text):
-    prm = os.path.join(work, name + ".prm")
-    with open(prm, "w") as f:
-        f.write(text + f"subsection Output\n set Directory = {work}/{name}\n"
-                "end\n")
-    subprocess.run([LIFTOFF, prm], check=True, stdout=subprocess.DEVNULL)
-    with open(os.path.join(work, name, "history.csv")) as f:
-        header = f.readline().strip().split(",")
-        row = [float(v) for v in f.readline().split(",")]
-    return dict(zip(header, row))
+    """The first row of the scene's history, by column."""
+    history = read_history(run_scene_or_fail(LIFTOFF, work, name, text))
+    return {column: values[0] for column, values in history.items()}
 
 
 with tempfile.TemporaryDirectory() as work:

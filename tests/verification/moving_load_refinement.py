@@ -20,16 +20,15 @@ level-3 cell's width 2.5 times, from one adaptation to the next). Checks:
 """
 
 import os
-import subprocess
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
 import meshio
-import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
+from scenes import read_history, run_scene  # noqa: E402
 
 LIFTOFF = sys.argv[1]
 RADIUS = 0.01
@@ -39,7 +38,7 @@ def x_of(tau):
     return -0.3 + 2 * tau
 
 
-def scene(folder, cells, adaptive):
+def scene(cells, adaptive):
     return f"""
 subsection Plate
   set Aspect ratio    = 0.25
@@ -75,7 +74,6 @@ subsection Mesh refinement
   set Initial refinements = 3
 end
 subsection Output
-  set Directory     = {folder}
   set VTU interval  = 20
   set Riding probes = w@patch_load_1
 end
@@ -83,11 +81,8 @@ end
 
 
 def run(work, name, cells, adaptive):
-    folder = os.path.join(work, name)
-    with open(folder + ".prm", "w") as f:
-        f.write(scene(folder, cells, adaptive))
-    result = subprocess.run([LIFTOFF, "--quiet", folder + ".prm"],
-                            capture_output=True, text=True)
+    folder, result = run_scene(LIFTOFF, work, name,
+                               scene(cells, adaptive), ["--quiet"])
     check(result.returncode == 0, f"{name} runs: {result.stderr.strip()}")
     if result.returncode != 0:
         finish()
@@ -102,14 +97,6 @@ def cell_levels(vtu):
     cells = mesh.cells[0].data
     level = mesh.point_data["refinement_level"][cells].max(axis=1)
     return level, mesh.points[cells]
-
-
-def history(folder):
-    path = os.path.join(folder, "history.csv")
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
 
 
 with tempfile.TemporaryDirectory() as work:
@@ -139,7 +126,7 @@ with tempfile.TemporaryDirectory() as work:
           f"cells more than 0.2 behind the wheel are at level 0 "
           f"({len(behind)} times, highest levels {behind})")
 
-    a, u, c = history(adaptive), history(uniform), history(coarser)
+    a, u, c = read_history(adaptive), read_history(uniform), read_history(coarser)
     past_start = u["tau"] >= 0.05
     scale = abs(u["w@patch_load_1"]).max()
 

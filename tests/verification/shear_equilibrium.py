@@ -28,11 +28,13 @@ in y, M_xy odd in both, M_xx even.
 """
 
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+from scenes import read_history, run_scene_or_fail  # noqa: E402
 
 LIFTOFF = sys.argv[1]
 GAMMA, P = 100.0, 1.0
@@ -95,15 +97,9 @@ end
 
 
 def run(work, name, text):
-    prm = os.path.join(work, name + ".prm")
-    with open(prm, "w") as f:
-        f.write(text + f"subsection Output\n set Directory = {work}/{name}\n"
-                "end\n")
-    subprocess.run([LIFTOFF, prm], check=True, stdout=subprocess.DEVNULL)
-    with open(os.path.join(work, name, "history.csv")) as f:
-        header = f.readline().strip().split(",")
-        row = np.array([float(v) for v in f.readline().split(",")])
-    return header, row
+    """The history's column names and its first row."""
+    history = read_history(run_scene_or_fail(LIFTOFF, work, name, text))
+    return list(history), np.array([v[0] for v in history.values()])
 
 with tempfile.TemporaryDirectory() as work:
     header, row = run(work, "quarter",
