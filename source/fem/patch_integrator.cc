@@ -82,6 +82,33 @@ namespace liftoff
       std::sort(ends.begin(), ends.end());
       return ends;
     }
+
+    /// The part [t0, t1] of the segment a + t (b - a), 0 <= t <= 1, that
+    /// lies in the box (t0 >= t1: none), by clipping against each slab.
+    std::pair<double, double>
+    clipped(const Point<2>       &a,
+            const Point<2>       &b,
+            const BoundingBox<2> &box,
+            const double          tolerance)
+    {
+      double t0 = 0, t1 = 1;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const double lo   = box.lower_bound(d) - tolerance,
+                       hi   = box.upper_bound(d) + tolerance;
+          const double step = b[d] - a[d];
+          if (std::abs(step) <= tolerance)
+            {
+              if (a[d] < lo || a[d] > hi)
+                return {1, 0};
+              continue;
+            }
+          const double s0 = (lo - a[d]) / step, s1 = (hi - a[d]) / step;
+          t0 = std::max(t0, std::min(s0, s1));
+          t1 = std::min(t1, std::max(s0, s1));
+        }
+      return {t0, t1};
+    }
   } // namespace
 
 
@@ -211,6 +238,55 @@ namespace liftoff
   }
 
 
+  PatchIntegrator::Cover
+  PatchIntegrator::cover(const DoFHandler<2>::active_cell_iterator &cell,
+                         const Segment &segment) const
+  {
+    Cover          result;
+    const Point<2> a = segment.start, b = segment.end;
+    const double   tolerance = 1e-12 * cell->diameter();
+    const auto [t0, t1]      = clipped(a, b, cell->bounding_box(), tolerance);
+    const double length      = (b - a).norm();
+    if ((t1 - t0) * length <= tolerance)
+      return result;
+
+    // A piece along a face is met again from the cell behind it, unless
+    // the face is a plate edge; on a symmetry plane half is the modelled
+    // part's share.
+    const BoundingBox<2> box    = rectangle_of(cell);
+    double               weight = 1;
+    for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int side = 0; side < 2; ++side)
+        {
+          const double at = side == 0 ? box.lower_bound(d) : box.upper_bound(d);
+          if (std::abs(a[d] - at) > tolerance
+              || std::abs(b[d] - at) > tolerance)
+            continue;
+          const auto face = cell->face(2 * d + side);
+          if (!face->at_boundary()
+              || face->boundary_id() >= PlateGeometry::x_symmetry_plane)
+            weight = 0.5;
+        }
+    const Quadrature<1>   in_t = on_interval(line_rule, t0, t1);
+    std::vector<Point<2>> points;
+    std::vector<double>   weights;
+    for (unsigned int q = 0; q < in_t.size(); ++q)
+      {
+        const Point<2> x = a + in_t.point(q)[0] * (b - a);
+        Point<2>       unit;
+        for (unsigned int d = 0; d < 2; ++d)
+          unit[d] = std::clamp((x[d] - box.lower_bound(d)) / box.side_length(d),
+                               0.0,
+                               1.0);
+        points.push_back(unit);
+        // FEValues multiplies by the cell's area; ds = |b - a| dt.
+        weights.push_back(weight * in_t.weight(q) * length / box.volume());
+      }
+    result.part = Quadrature<2>(points, weights);
+    return result;
+  }
+
+
   void
   PatchIntegrator::for_each_covered_cell(
     const CoverOf                                  &cover_of,
@@ -331,5 +407,30 @@ namespace liftoff
   PatchIntegrator::quadrature_points(const Disc &disc) const
   {
     return covered_points(covering(disc));
+  }
+
+
+  double
+  PatchIntegrator::length_inside(const Segment        &segment,
+                                 const BoundingBox<2> &box)
+  {
+    const auto [t0, t1] = clipped(segment.start, segment.end, box, 0);
+    return std::max(0.0, t1 - t0) * segment.start.distance(segment.end);
+  }
+
+
+  void
+  PatchIntegrator::add(const Density   &density,
+                       const Segment   &segment,
+                       LA::MPI::Vector &vector) const
+  {
+    add_covered(density, covering(segment), vector);
+  }
+
+
+  std::vector<Point<2>>
+  PatchIntegrator::quadrature_points(const Segment &segment) const
+  {
+    return covered_points(covering(segment));
   }
 } // namespace liftoff

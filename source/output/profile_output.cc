@@ -17,11 +17,23 @@ namespace liftoff
     prm.declare_entry("Profile start",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 2, ","),
-                      "x, y where the profile line starts (full plate).");
+                      "x, y where the profile line starts (full plate; "
+                      "from the load with Profile follows).");
     prm.declare_entry("Profile end",
                       "0.5, 0",
                       Patterns::List(Patterns::Double(), 2, 2, ","),
-                      "x, y where the profile line ends (full plate).");
+                      "x, y where the profile line ends (full plate; from "
+                      "the load with Profile follows).");
+    prm.declare_entry("Profile follows",
+                      "",
+                      Patterns::Anything(),
+                      "Empty: the line stands. The name of a moving load as "
+                      "history.csv names it (point_load_2, patch_load_1, "
+                      "vehicle_1): Profile start and Profile end are then "
+                      "offsets from the load's point (a vehicle's: its "
+                      "Path), and each profile is written along that line "
+                      "where the load is at its time, the basin around the "
+                      "load; points off the plate then are left out.");
     prm.declare_entry("Profile points",
                       "0",
                       Patterns::Integer(0, 100000),
@@ -50,6 +62,7 @@ namespace liftoff
     start    = Point<2>(a[0], a[1]);
     end      = Point<2>(b[0], b[1]);
     n_points = prm.get_integer("Profile points");
+    rider    = prm.get("Profile follows");
     times    = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Profile times")));
     for (unsigned int k = 0; k < times.size(); ++k)
@@ -77,10 +90,42 @@ namespace liftoff
   }
 
 
+  Point<2>
+  ProfileOutput::point_at(const unsigned int i, const double tau) const
+  {
+    if (rider.empty())
+      return point(i);
+    const std::vector<double> xy = load_positions(tau);
+    return point(i)
+           + Tensor<1, 2>({xy[3 * rider_index], xy[3 * rider_index + 1]});
+  }
+
+
+  void
+  ProfileOutput::follow(
+    const std::vector<std::string>                         &names,
+    const std::function<std::vector<double>(const double)> &positions)
+  {
+    load_positions = positions;
+    if (rider.empty())
+      return;
+    const auto found = std::find(names.begin(), names.end(), rider);
+    AssertThrow(found != names.end(),
+                ExcMessage("Output/Profile follows = <" + rider
+                           + "> names no moving load; "
+                           + (names.empty() ? "the scene has none."
+                                            : "the scene's are <"
+                                                + joined(names, ", ") + ">.")));
+    rider_index = found - names.begin();
+  }
+
+
   void
   ProfileOutput::check_against(const Discretization &disc) const
   {
-    if (n_points == 0)
+    // A riding line is placed anew at each profile time and keeps the
+    // points on the plate at that time.
+    if (n_points == 0 || !rider.empty())
       return;
     for (const auto &p : {start, end})
       AssertThrow(disc.geometry().is_on_plate(p),
@@ -159,8 +204,24 @@ namespace liftoff
   {
     discretization = &disc;
     points.clear();
+    located.clear();
+    if (rider.empty())
+      locate_points(0);
+  }
+
+
+  void
+  ProfileOutput::locate_points(const double tau)
+  {
+    const PlateGeometry &geometry = discretization->geometry();
+    points.clear();
+    located.clear();
     for (unsigned int i = 0; i < n_points; ++i)
-      points.emplace_back(disc, disc.geometry().to_modelled_part(point(i)));
+      if (const Point<2> p = point_at(i, tau); geometry.is_on_plate(p))
+        {
+          points.emplace_back(*discretization, geometry.to_modelled_part(p));
+          located.push_back(i);
+        }
   }
 
 
@@ -179,6 +240,8 @@ namespace liftoff
     if (!is_due)
       return;
 
+    if (!rider.empty())
+      locate_points(tau);
     std::vector<double> w;
     for (const auto &p : points)
       w.push_back(p.local_value(u));
@@ -187,12 +250,13 @@ namespace liftoff
     const double  length = units.scale(Quantity::length);
     std::ostream &out    = file.stream();
     out << std::setprecision(12);
-    for (unsigned int i = 0; i < n_points; ++i)
+    for (unsigned int k = 0; k < located.size(); ++k)
       {
-        const Point<2> p = point(i);
+        const unsigned int i = located[k];
+        const Point<2>     p = point_at(i, tau);
         out << units.scale(Quantity::time) * tau << ','
-            << length * p.distance(start) << ',' << length * p[0] << ','
-            << length * p[1] << ',' << units.scale(Quantity::deflection) * w[i]
+            << length * point(i).distance(start) << ',' << length * p[0] << ','
+            << length * p[1] << ',' << units.scale(Quantity::deflection) * w[k]
             << '\n';
       }
     file.flush();

@@ -4,6 +4,7 @@
 
 #include <liftoff/base/archives.h>
 #include <liftoff/base/located_maximum.h>
+#include <liftoff/base/number_text.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/time/plate_state.h>
 
@@ -35,17 +36,6 @@ namespace liftoff
           points.emplace_back(xy[0], xy[1]);
         }
       return points;
-    }
-
-
-    std::string
-    joined(const std::vector<std::string> &names,
-           const std::string              &separator = ",")
-    {
-      std::string text;
-      for (const auto &name : names)
-        text += (text.empty() ? "" : separator) + name;
-      return text;
     }
 
 

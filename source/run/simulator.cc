@@ -80,10 +80,11 @@ namespace liftoff
       envelopes.parse_parameters(scene);
       scene.leave_subsection();
       time_history.show_dissipated_energy(parts.foundation.has_damping());
-      time_history.follow(parts.loads.moving_load_names(),
-                          [this](const double tau) {
-                            return parts.loads.moving_load_positions(tau);
-                          });
+      const auto load_positions = [this](const double tau) {
+        return parts.loads.moving_load_positions(tau);
+      };
+      time_history.follow(parts.loads.moving_load_names(), load_positions);
+      profile_output.follow(parts.loads.moving_load_names(), load_positions);
       for (Output *output : outputs)
         output->write_in_units_of(units);
       checkpoint.parse_parameters(scene);

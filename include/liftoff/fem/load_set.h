@@ -5,10 +5,12 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/patch_integrator.h>
 
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,17 +21,19 @@ namespace liftoff
 
   /**
    * The loads of a scene: concentrated forces at arbitrary points, pressures
-   * on rectangles, line loads along edges, uniform patch loads (a rectangle
+   * on rectangles, line loads along edges or any straight segment, uniform
+   * patch loads (a rectangle
    * or a disc, a tyre's contact area) and vehicles (groups of point or
    * patch loads at fixed offsets from one path), any number of each up to
    * max_loads_per_kind, each scaled by its own time history h(tau).
    * Positive loads press the plate into the foundation (w > 0).
    *
-   * Point loads, patch loads and vehicles may move: their position is a
-   * path (x(tau), y(tau)), and their vector is built anew at every step
-   * at the current position (a point load by the shape functions at the
-   * point, a patch by PatchIntegrator over the part of each cell it
-   * covers). The part of a load off the plate carries nothing.
+   * Point loads, patch loads, line loads on a segment and vehicles may
+   * move: their position is a path (x(tau), y(tau)), and their vector is
+   * built anew at every step at the current position (a point load by the
+   * shape functions at the point, a patch or a line by PatchIntegrator
+   * over the part of each cell it covers). The part of a load off the
+   * plate carries nothing.
    *
    * The scene describes the full plate. On a half or quarter model only the
    * part of each load that falls on the meshed part is applied; a point on
@@ -143,12 +147,15 @@ namespace liftoff
       double       magnitude = 0;
       std::string  history_expression;
       std::string  intensity_expression;
-      Point<2>     position;                        // fixed point loads
-      std::string  region;                          // pressures
-      unsigned int edge = 0;                        // line loads
-      std::unique_ptr<FunctionParser<1>> history;   // h(tau)
-      std::unique_ptr<FunctionParser<2>> intensity; // f(x, y, tau)
-      bool                               intensity_depends_on_time = false;
+      Point<2>     position; // fixed point loads
+      std::string  region;   // pressures
+      unsigned int edge = 0; // line loads
+      /// A line load's ends (offsets from the path's point if it moves);
+      /// none: it lies along `edge`.
+      std::optional<std::array<Point<2>, 2>> segment;
+      std::unique_ptr<FunctionParser<1>>     history;   // h(tau)
+      std::unique_ptr<FunctionParser<2>>     intensity; // f(x, y, tau)
+      bool                                   intensity_depends_on_time = false;
       /// (x, y)(tau) of point loads, patches and vehicles (one path for
       /// all the wheels of a vehicle); none: the point load stands at
       /// `position`.
@@ -172,6 +179,12 @@ namespace liftoff
       /// Whether some of it acts on `plate` at tau.
       bool
       touches(const BoundingBox<2> &plate, const double tau) const;
+      /// Where a line load lies at tau (the plate's box places an Edge) ...
+      PatchIntegrator::Segment
+      line_at(const BoundingBox<2> &plate, const double tau) const;
+      /// ... and one given by its Segment.
+      PatchIntegrator::Segment
+      segment_at(const double tau) const;
     };
 
     /// A moving load or a vehicle as history.csv reports it: the loads
@@ -258,26 +271,11 @@ namespace liftoff
               const double     tau,
               LA::MPI::Vector &vector) const;
 
-    /// Add int density_c(x) phi_i^c (c = w, psi_x, psi_y) along one plate
-    /// edge (areas: PatchIntegrator).
-    void
-    integrate_along_edge(
-      const std::function<std::array<double, 3>(const Point<2> &)> &density,
-      const unsigned int                                            edge,
-      LA::MPI::Vector &vector) const;
-
-    /// Quadrature points of the full plate's mesh (this rank's share) on
-    /// the plate's edges.
-    struct FullPlatePoints
-    {
-      std::vector<Point<2>> edge;
-    };
-    static FullPlatePoints
-    full_plate_points(const Discretization &discretization);
     /// The points at which the full plate's mesh (this rank's share)
-    /// evaluates a pressure on `region`.
+    /// evaluates a pressure on its region or a standing line load.
     static std::vector<Point<2>>
-    full_plate_points_in(const BoundingBox<2> &region,
+    full_plate_points_on(const Load           &load,
+                         const BoundingBox<2> &plate,
                          const Discretization &discretization);
 
     /// Whether `other` is the image of `load` in the symmetry plane normal
@@ -289,24 +287,13 @@ namespace liftoff
                     const unsigned int         axis,
                     const BoundingBox<2>      &plate,
                     const std::vector<double> &times,
-                    const FullPlatePoints     &points,
                     const Discretization      &discretization);
-    /// The points of the full plate's mesh (this rank's share) at which
-    /// a pressure or line load is evaluated, and the test of whether it
-    /// acts on one.
-    static std::pair<std::vector<Point<2>>,
-                     std::function<bool(const Point<2> &)>>
-    where_it_acts(const Load            &load,
-                  const BoundingBox<2>  &plate,
-                  const FullPlatePoints &points,
-                  const Discretization  &discretization);
     /// Throw, naming the expression and the first tau, if the Time history
     /// of `load` or its intensity times Magnitude (at the `points` it acts
     /// on) is not finite at one of `times`. Collective.
     static void
     require_finite_values(const Load                &load,
                           const std::vector<double> &times,
-                          const FullPlatePoints     &points,
                           const BoundingBox<2>      &plate,
                           const Discretization      &discretization);
     /// The messages of a Time history and of an Intensity that are not
@@ -316,16 +303,14 @@ namespace liftoff
     non_finite_history(const Load &load, const double tau);
     static std::string
     non_finite_intensity(const Load &load, const double tau);
-    /// The intensities of `load` at the `candidates` where it acts against
-    /// those of `other` at their mirror images, at `times`. Collective.
+    /// The intensities of `load` at the `candidates` against those of
+    /// `other` at their mirror images, at `times`. Collective.
     static bool
-    have_mirrored_intensities(
-      const Load                                  &load,
-      const Load                                  &other,
-      const unsigned int                           axis,
-      const std::vector<Point<2>>                 &candidates,
-      const std::function<bool(const Point<2> &)> &acts_at,
-      const std::vector<double>                   &times,
-      const MPI_Comm                               comm);
+    have_mirrored_intensities(const Load                  &load,
+                              const Load                  &other,
+                              const unsigned int           axis,
+                              const std::vector<Point<2>> &candidates,
+                              const std::vector<double>   &times,
+                              const MPI_Comm               comm);
   };
 } // namespace liftoff

@@ -46,8 +46,16 @@ namespace liftoff
    * is then analytic and a Gauss rule of n_arc points converges
    * exponentially, and in y the same n = p + 2 point rule is exact.
    *
+   * A segment (a line load) is a patch of no width: the same Gauss rule
+   * in its parameter t on the piece that each cell clips from it, weighted
+   * by the piece's length instead of an area, so that the integral is exact
+   * for intensities of degree up to 3 along any straight line. A piece on
+   * a face between two cells is counted half from each side; on a plate
+   * edge wholly, and on a symmetry plane half, the modelled part's share.
+   *
    * Used for pressures, moving patches (another rectangle or disc at every
-   * step) and the body force (the patch is then the whole plate).
+   * step), line loads and the body force (the patch is then the whole
+   * plate).
    */
   class PatchIntegrator
   {
@@ -60,6 +68,13 @@ namespace liftoff
     {
       Point<2> centre;
       double   radius;
+    };
+
+    /// A straight line from `start` to `end`.
+    struct Segment
+    {
+      Point<2> start;
+      Point<2> end;
     };
 
     /// `n_arc_points`: the Gauss rule in t = asin((x - x_c) / r) on the
@@ -83,12 +98,24 @@ namespace liftoff
         const Disc      &disc,
         LA::MPI::Vector &vector) const;
 
+    /// The same along segment ∩ mesh, per unit length.
+    void
+    add(const Density   &density,
+        const Segment   &segment,
+        LA::MPI::Vector &vector) const;
+
+    /// The length of the part of `segment` inside `box`.
+    static double
+    length_inside(const Segment &segment, const BoundingBox<2> &box);
+
     /// The points at which add() evaluates the density on this rank's
     /// cells, for checks of where a load is used.
     std::vector<Point<2>>
     quadrature_points(const BoundingBox<2> &patch) const;
     std::vector<Point<2>>
     quadrature_points(const Disc &disc) const;
+    std::vector<Point<2>>
+    quadrature_points(const Segment &segment) const;
 
   private:
     const Discretization &discretization;
@@ -115,6 +142,9 @@ namespace liftoff
     Cover
     cover(const DoFHandler<2>::active_cell_iterator &cell,
           const Disc                                &disc) const;
+    Cover
+    cover(const DoFHandler<2>::active_cell_iterator &cell,
+          const Segment                             &segment) const;
     /// cover() of `patch` (a rectangle or a disc) for every cell.
     template <class Patch>
     CoverOf

@@ -10,6 +10,7 @@
 #include <liftoff/output/output.h>
 
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,12 @@ namespace liftoff
    * Profiles of w along a straight line of the full plate at chosen times,
    * in one long-format CSV (tau, s, x, y, w) that plots grouped by tau.
    * Each requested time is written at the step nearest to it.
+   *
+   * A profile may ride with a moving load (`Profile follows`): its line is
+   * then given relative to the load's point and placed where the load is
+   * at each profile time, so the profiles are the deflection basin around
+   * the load, in the load's frame, at chosen times. Its points off the
+   * plate at that time are left out of the file.
    */
   class ProfileOutput : public Output
   {
@@ -37,6 +44,13 @@ namespace liftoff
 
     void
     check_against(const Discretization &discretization) const;
+
+    /// The moving loads' names and their points at tau (LoadSet's
+    /// moving_load_names() and moving_load_positions()), which a riding
+    /// profile needs; refuses a `Profile follows` that names none of them.
+    void
+    follow(const std::vector<std::string>                         &names,
+           const std::function<std::vector<double>(const double)> &positions);
 
     /// The requested times that a time integration with step `dt` to
     /// `end_time` does not reach (nearer to no step than dt/2).
@@ -73,16 +87,31 @@ namespace liftoff
     flush() override;
 
   private:
-    Point<2>                     start, end;
-    unsigned int                 n_points = 0;
-    std::vector<double>          times;
-    PhysicalUnits                units;
-    std::vector<bool>            is_written;
-    std::vector<PointFunctional> points;
-    const Discretization        *discretization = nullptr;
-    GrowingTextFile              file;
+    Point<2>     start, end;
+    unsigned int n_points = 0;
+    /// The moving load the line rides with ("": the line stands), its
+    /// index among the moving loads and their positions.
+    std::string                                      rider;
+    unsigned int                                     rider_index = 0;
+    std::function<std::vector<double>(const double)> load_positions;
+    std::vector<double>                              times;
+    PhysicalUnits                                    units;
+    std::vector<bool>                                is_written;
+    std::vector<PointFunctional>                     points;
+    const Discretization                            *discretization = nullptr;
+    GrowingTextFile                                  file;
 
+    /// The i-th point of the line as the scene gives it (relative to the
+    /// load for a riding profile) ...
     Point<2>
     point(const unsigned int i) const;
+    /// ... and where it is on the plate at tau.
+    Point<2>
+    point_at(const unsigned int i, const double tau) const;
+    /// The functionals of the points on the plate at tau (all of them for
+    /// a standing line), and which points they are.
+    void
+                              locate_points(const double tau);
+    std::vector<unsigned int> located;
   };
 } // namespace liftoff
