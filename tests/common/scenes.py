@@ -36,3 +36,21 @@ def read_history(folder):
         header = f.readline().strip().split(",")
     data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
     return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def read_profile(folder):
+    """The first profile of FOLDER/profiles.csv: its arc length s and w."""
+    data = np.loadtxt(os.path.join(folder, "profiles.csv"), delimiter=",",
+                      skiprows=1, ndmin=2)
+    first = data[:, 0] == data[0, 0]
+    return data[first, 1], data[first, 4]
+
+
+def first_sign_change(s, w):
+    """Where w along a profile first changes sign, by linear interpolation
+    between the two profile points around it (None if it never does)."""
+    changes = np.nonzero(np.sign(w[1:]) != np.sign(w[:-1]))[0]
+    if changes.size == 0:
+        return None
+    i = changes[0]
+    return s[i] - w[i] * (s[i + 1] - s[i]) / (w[i + 1] - w[i])
