@@ -55,7 +55,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
 from kelvin_disc import LAPLACIAN, LAPLACIAN_SLOPE, KelvinDisc, terms  # noqa: E402
 from scenes import (first_sign_change, read_history, read_profile,  # noqa: E402
-                    run_scene_or_fail)
+                    run_scene_or_fail, static_disc_scene)
 
 LIFTOFF = sys.argv[1]
 R, NU, DELTA, GAMMA, P = 0.5, 0.3, 1e-4, 1e4, 1.0
@@ -123,40 +123,12 @@ def infinite_plate_contact():
 
 
 def scene(refinements):
-    probes = "; ".join(f"{r:g}, 0" for r in RADII)
-    return f"""
-subsection Analysis
-  set Type = static
-end
-subsection Plate
-  set Thickness ratio = {DELTA}
-  set Poisson ratio = {NU}
-end
-subsection Foundation
-  set Model = tensionless
-  set Stiffness = {GAMMA}
-end
-subsection Discretization
-  set Shape = disc
-  set Radius = {R}
-  set Global refinements = {refinements}
-  set Polynomial degree = 2
-end
-subsection Loads
-  subsection Point load 1
-    set Magnitude = {P}
-    set Position = 0, 0
-  end
-end
-subsection Output
-  set VTU interval = 0
-  set Write energies = false
-  set Probe points = {probes}
-  set Profile start = 0, 0
-  set Profile end = {R}, 0
-  set Profile points = 501
-end
-"""
+    return static_disc_scene(
+        R, refinements, {"Thickness ratio": DELTA, "Poisson ratio": NU},
+        {"Model": "tensionless", "Stiffness": GAMMA}, (P, 0),
+        {"Probe points": "; ".join(f"{r:g}, 0" for r in RADII),
+         "Profile start": "0, 0", "Profile end": f"{R}, 0",
+         "Profile points": 501})
 
 
 def check_solver(length):

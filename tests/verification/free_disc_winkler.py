@@ -36,7 +36,8 @@ from scipy.integrate import quad
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
 from kelvin_disc import KelvinDisc, free_edge_rows  # noqa: E402
-from scenes import read_history, run_scene_or_fail  # noqa: E402
+from scenes import (read_history, run_scene_or_fail,  # noqa: E402
+                    static_disc_scene)
 
 LIFTOFF = sys.argv[1]
 R, NU, DELTA, GAMMA, P = 0.5, 0.3, 1e-4, 625.0, 1.0
@@ -45,38 +46,11 @@ RADII = (0.0, ELL / 2, 1.25 * ELL, R)
 
 
 def scene(refinements):
-    probes = "; ".join(f"{r:g}, 0" for r in RADII)
-    return f"""
-subsection Analysis
-  set Type = static
-end
-subsection Plate
-  set Thickness ratio = {DELTA}
-  set Poisson ratio = {NU}
-end
-subsection Foundation
-  set Model = bilateral
-  set Stiffness = {GAMMA}
-end
-subsection Discretization
-  set Shape = disc
-  set Radius = {R}
-  set Global refinements = {refinements}
-  set Polynomial degree = 2
-end
-subsection Loads
-  subsection Point load 1
-    set Magnitude = {P}
-    set Position = 0, 0
-  end
-end
-subsection Output
-  set VTU interval = 0
-  set Write energies = false
-  set Probe points = {probes}
-  set Probe quantities = M_xx({R / 2:g}; 0), M_xx({R:g}; 0)
-end
-"""
+    return static_disc_scene(
+        R, refinements, {"Thickness ratio": DELTA, "Poisson ratio": NU},
+        {"Model": "bilateral", "Stiffness": GAMMA}, (P, 0),
+        {"Probe points": "; ".join(f"{r:g}, 0" for r in RADII),
+         "Probe quantities": f"M_xx({R / 2:g}; 0), M_xx({R:g}; 0)"})
 
 
 kelvin = KelvinDisc(free_edge_rows(R / ELL, NU))

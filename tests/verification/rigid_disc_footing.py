@@ -46,7 +46,7 @@ from scipy import integrate, optimize
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
 from scenes import (first_sign_change, read_history, read_profile,  # noqa: E402
-                    run_scene_or_fail)
+                    run_scene_or_fail, static_disc_scene)
 
 LIFTOFF = sys.argv[1]
 R, NU, DELTA, GAMMA, P = 0.5, 0.3, 0.05, 0.1, 1.0
@@ -96,39 +96,11 @@ def check_closed_form(e, x0, s):
 
 
 def scene(e, gamma):
-    return f"""
-subsection Analysis
-  set Type = static
-end
-subsection Plate
-  set Thickness ratio = {DELTA}
-  set Poisson ratio = {NU}
-end
-subsection Foundation
-  set Model = tensionless
-  set Stiffness = {gamma}
-end
-subsection Discretization
-  set Shape = disc
-  set Radius = {R}
-  set Global refinements = 3
-  set Polynomial degree = 2
-end
-subsection Loads
-  subsection Point load 1
-    set Magnitude = {P}
-    set Position = {e}, 0
-  end
-end
-subsection Output
-  set VTU interval = 0
-  set Write energies = false
-  set Probe points = {R}, 0
-  set Profile start = {-R}, 0
-  set Profile end = {R}, 0
-  set Profile points = 1001
-end
-"""
+    return static_disc_scene(
+        R, 3, {"Thickness ratio": DELTA, "Poisson ratio": NU},
+        {"Model": "tensionless", "Stiffness": gamma}, (P, e),
+        {"Probe points": f"{R}, 0", "Profile start": f"{-R}, 0",
+         "Profile end": f"{R}, 0", "Profile points": 1001})
 
 
 def footing(work, e, gamma=GAMMA):
