@@ -53,9 +53,10 @@ from scipy import integrate, optimize
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
-from kelvin_disc import LAPLACIAN, LAPLACIAN_SLOPE, KelvinDisc, terms  # noqa: E402
-from scenes import (first_sign_change, read_history, read_profile,  # noqa: E402
-                    run_scene_or_fail, static_disc_scene)
+from kelvin_disc import (LAPLACIAN, LAPLACIAN_SLOPE, KelvinDisc,  # noqa: E402
+                         terms)
+from scenes import (first_sign_change, read_history,  # noqa: E402
+                    read_profile, run_scene_or_fail, static_disc_scene)
 
 LIFTOFF = sys.argv[1]
 R, NU, DELTA, GAMMA, P = 0.5, 0.3, 1e-4, 1e4, 1.0

@@ -19,10 +19,11 @@ polar coordinates (dblquad): force P and moment P e.
 
 How rigid. Gamma = k L^4 / D = 0.1 (l = Gamma^(-1/4) = 3.6 R): the plate's
 bending changes the peak pressure by 1.6e-4 (e = 0.1 R) against 1.6e-3 at
-Gamma = 1, in proportion to Gamma (checked: the ratio of the two
-errors lies within 8 to 12; measured 10.0). A stiffer plate (Gamma = 0.01) meets
+Gamma = 1, in proportion to Gamma (checked: the ratio of the two errors
+lies within 8 to 12; measured 10.0). A stiffer plate (Gamma = 0.01) meets
 liftoff's static equilibrium check only to 1.6e-8 of the load (the limit
-is 1e-8: the free plate on so soft a bed is ill-conditioned), so 0.1 it is.
+is 1e-8: the free plate on so soft a bed is ill-conditioned), so 0.1 it
+is.
 Delta = 0.05, Q2 on the disc with 3 global refinements (768 cells).
 
 Checks for e / R = 0.1, 0.25 (the kern's edge) and 0.4: the contact area
@@ -45,8 +46,8 @@ from scipy import integrate, optimize
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
-from scenes import (first_sign_change, read_history, read_profile,  # noqa: E402
-                    run_scene_or_fail, static_disc_scene)
+from scenes import (first_sign_change, read_history,  # noqa: E402
+                    read_profile, run_scene_or_fail, static_disc_scene)
 
 LIFTOFF = sys.argv[1]
 R, NU, DELTA, GAMMA, P = 0.5, 0.3, 0.05, 0.1, 1.0
