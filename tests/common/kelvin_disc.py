@@ -11,10 +11,11 @@ centre that carry the load P there are
 
 (-kei / (2 pi) is the infinite plate's; ker is left out, its w is
 log-singular). Since lap ber = -bei, lap bei = ber and lap kei = ker, the
-Laplacian and the slopes are Kelvin functions again; the radial moment is
-M_r = -P (lap w - (1 - nu) w' / rho) and the shear force Q_r = -P (lap w)'
-(with D = 1: a positive moment puts the bed side in tension, as in
-liftoff).
+Laplacian and the slopes are Kelvin functions again (derivatives in rho,
+w here the dimensionless deflection): the radial moment is
+M_r = -P (lap w - (1 - nu) w' / rho) and the shear force
+Q_r = -(P / l) (lap w)' (a positive moment puts the bed side in tension,
+as in liftoff).
 """
 
 import numpy as np
