@@ -85,7 +85,7 @@ def tensionless_disc(length):
                           h * a2 / r2, h * r2 * m2, h * b2 / r2, zero))
 
     def conditions(ya, yb, p):
-        w_s, slope_s, lap_s = split_off(length, length)
+        _, slope_s, lap_s = split_off(length, length)
         rim_moment = (yb[6] + lap_s
                       - (1 - NU) * (yb[5] / length + slope_s) / length)
         return np.array([ya[1], ya[3], *(yb[:4] - ya[4:]),
