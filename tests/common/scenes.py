@@ -36,3 +36,53 @@ def read_history(folder):
         header = f.readline().strip().split(",")
     data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
     return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def read_profile(folder):
+    """The first profile of FOLDER/profiles.csv: its arc length s and w."""
+    data = np.loadtxt(os.path.join(folder, "profiles.csv"), delimiter=",",
+                      skiprows=1, ndmin=2)
+    first = data[:, 0] == data[0, 0]
+    return data[first, 1], data[first, 4]
+
+
+def first_sign_change(s, w):
+    """Where w along a profile first changes sign, by linear interpolation
+    between the two profile points around it (None if it never does)."""
+    changes = np.nonzero(np.sign(w[1:]) != np.sign(w[:-1]))[0]
+    if changes.size == 0:
+        return None
+    i = changes[0]
+    return s[i] - w[i] * (s[i + 1] - s[i]) / (w[i + 1] - w[i])
+
+
+def prm_text(sections, indent=""):
+    """Nested dicts as prm text: a dict value is a subsection, any other
+    value an entry."""
+    lines = []
+    for name, value in sections.items():
+        if isinstance(value, dict):
+            lines += [f"{indent}subsection {name}",
+                      prm_text(value, indent + "  "), f"{indent}end"]
+        else:
+            lines.append(f"{indent}set {name} = {value}")
+    return "\n".join(lines)
+
+
+def static_disc_scene(radius, refinements, plate, foundation, point_load,
+                      output):
+    """A static scene of a Q2 disc under one point load (magnitude, x) on
+    the x axis; PLATE, FOUNDATION and OUTPUT are entries of those
+    subsections (no VTU files, no energies unless OUTPUT says so)."""
+    magnitude, x = point_load
+    return prm_text({
+        "Analysis": {"Type": "static"},
+        "Plate": plate,
+        "Foundation": foundation,
+        "Discretization": {"Shape": "disc", "Radius": radius,
+                           "Global refinements": refinements,
+                           "Polynomial degree": 2},
+        "Loads": {"Point load 1": {"Magnitude": magnitude,
+                                   "Position": f"{x}, 0"}},
+        "Output": {"VTU interval": 0, "Write energies": "false", **output},
+    }) + "\n"
