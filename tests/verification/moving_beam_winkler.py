@@ -136,8 +136,12 @@ def check_closed_form():
               f"{worst:.1e} of Gamma max|w| (< 1e-3, finite differences)")
 
 
-def scene(v, folder):
-    end = (PROBE + 7 * ELL - START) / v
+def scene(v, folder, model="bilateral", end=None, loads="", output=""):
+    """The strip with the patch crossing at speed v until `end` (by default
+    7 l past the probe); `loads` and `output` are more entries of those
+    subsections (moving_beam_tensionless.py's weight and profiles)."""
+    if end is None:
+        end = (PROBE + 7 * ELL - START) / v
     steps = round(end / (H / (2 * v)))
     ramp = 4 * ELL / v
     return f"""
@@ -147,7 +151,7 @@ subsection Plate
   set Poisson ratio = 0
 end
 subsection Foundation
-  set Model = bilateral
+  set Model = {model}
   set Stiffness = {GAMMA}
   set Damping = {DAMPING}
 end
@@ -157,7 +161,7 @@ subsection Discretization
   set Polynomial degree = 2
 end
 subsection Loads
-  subsection Patch load 1
+{loads}  subsection Patch load 1
     set Magnitude = {PRESSURE}
     set Size = {PATCH}, 1
     set Path = {START} + {v!r}*tau; 0
@@ -173,7 +177,7 @@ subsection Output
   set VTU interval = 0
   set Write energies = false
   set Probe points = {PROBE}, 0
-end
+{output}end
 """
 
 
