@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""The speed sweep of the strip of test moving_beam_tensionless (doc/studies.md,
-"... on a tensionless bed with self-weight"): the reference's steady state
-walked up in speed until its branch ends (the fold), and liftoff's contact
-ends and w under the load at a few speeds, in profiles taken every 0.025
-of the load's travel from X = -0.1 to 0.25 (after 15 l to 31 l of travel).
+"""The speed sweep of the strip of test moving_beam_tensionless
+(doc/studies.md, "The strip on a tensionless bed: lift-off against speed"):
+the reference's steady state walked up in speed until its branch ends
+(the fold), and liftoff's contact ends and w under the load at a few
+speeds, in profiles taken every 0.025 of the load's travel from X = -0.1
+to 0.25 (after 16 l to 31 l of travel).
 
     /usr/bin/python3 benchmarks/moving_tensionless_sweep.py build/liftoff \\
         doc/figures/moving-loads
