@@ -22,6 +22,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import scipy.optimize  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests",
                                 "verification"))
@@ -38,7 +39,8 @@ LOAD_AT = tuple(np.round(np.arange(-0.1, 0.2501, 0.025), 3))
 
 
 def reference_branch():
-    """(v/v_cr, a1, a2, b1, b2, w0) along the branch, and the fold."""
+    """(v/v_cr, a1, a2, b1, b2, w0) along the branch, the fold and the
+    solution there."""
     rows, x, r, dr = [], test.STATIC_GUESS, 0.0, 0.01
     while dr > 1e-5:
         beam = test.SteadyLiftoff((r + dr) * strip.V_CR)
@@ -47,12 +49,46 @@ def reference_branch():
             rows.append((r, *(x[4:] / ELL), x[0]))
         else:
             dr /= 2
-    return np.array(rows), r
+    return np.array(rows), r, x
 
 
-branch, fold = reference_branch()
+def upper_branch(start, steps=60):
+    """Past the fold: the lifted length ahead a2 - a1 fixed and growing,
+    the speed an unknown in its place; rows as reference_branch()."""
+    x = start
+    lifted = (x[5] - x[4]) / ELL
+    u = np.append(test.SteadyLiftoff.pack(x)[[0, 1, 2, 3, 4, 6, 7]],
+                  branch[-1, 0])
+
+    def unpack(u):
+        x = test.SteadyLiftoff.unpack(np.insert(u[:7], 5, np.log(lifted)))
+        return x, u[7]
+
+    def residual(u):
+        x, ratio = unpack(u)
+        return test.SteadyLiftoff(ratio * strip.V_CR).residual(x)
+
+    rows = []
+    for _ in range(steps):
+        lifted += 0.1
+        result = scipy.optimize.root(residual, u, method="lm",
+                                     options={"xtol": 1e-15, "ftol": 1e-15})
+        if abs(result.fun).max() > 1e-8:
+            break
+        u = result.x
+        x, ratio = unpack(u)
+        rows.append((ratio, *(x[4:] / ELL), x[0]))
+    return np.array(rows)
+
+
+branch, fold, at_fold = reference_branch()
 print("reference: one lifted zone on each side up to v/v_cr = %.4f" % fold)
 for row in branch[::4]:
+    print("  v/v_cr %.3f  a1 %.3f  a2 %.3f  b1 %.3f  b2 %.3f  (l)  w0 %.5e"
+          % tuple(row))
+upper = upper_branch(at_fold)
+print("past the fold (the lifted length ahead fixed, the speed solved for):")
+for row in upper[::6]:
     print("  v/v_cr %.3f  a1 %.3f  a2 %.3f  b1 %.3f  b2 %.3f  (l)  w0 %.5e"
           % tuple(row))
 
@@ -83,6 +119,8 @@ for k, label in enumerate(("b2", "b1", "a1", "a2")):
     column = (4, 3, 1, 2)[k]
     plt.plot(branch[:, 0], branch[:, column], "k-",
              label="reference" if k == 0 else None)
+    plt.plot(upper[:, 0], upper[:, column], "k--",
+             label="reference past the fold" if k == 0 else None)
     for ratio, four, under, _ in measured:
         if len(four):
             e = four[:, k]
