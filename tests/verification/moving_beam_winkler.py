@@ -141,8 +141,12 @@ def check_closed_form():
               f"{worst:.1e} of Gamma max|w| (< 1e-3, finite differences)")
 
 
-def scene(v, folder):
-    end = (PROBE + 7 * ELL - START) / v
+def scene(v, folder, model="bilateral", end=None, loads="", output=""):
+    """The strip with the patch crossing at speed v until `end` (by default
+    7 l past the probe); `loads` and `output` are more entries of those
+    subsections (moving_beam_tensionless.py's weight and profiles)."""
+    if end is None:
+        end = (PROBE + 7 * ELL - START) / v
     steps = round(end / (H / (2 * v)))
     ramp = 4 * ELL / v
     return f"""
@@ -152,7 +156,7 @@ subsection Plate
   set Poisson ratio = 0
 end
 subsection Foundation
-  set Model = bilateral
+  set Model = {model}
   set Stiffness = {GAMMA}
   set Damping = {DAMPING}
 end
@@ -162,7 +166,7 @@ subsection Discretization
   set Polynomial degree = 2
 end
 subsection Loads
-  subsection Patch load 1
+{loads}  subsection Patch load 1
     set Magnitude = {PRESSURE}
     set Size = {PATCH}, 1
     set Path = {START} + {v!r}*tau; 0
@@ -178,12 +182,18 @@ subsection Output
   set VTU interval = 0
   set Write energies = false
   set Probe points = {PROBE}, 0
-  set Profile follows = patch_load_1
+{output}end
+"""
+
+
+def riding_profile(v):
+    """The basin around the load when it is over the probe, 6 l behind to
+    4 l ahead, by a profile that rides with it."""
+    return f"""  set Profile follows = patch_load_1
   set Profile start = {-6 * ELL!r}, 0
   set Profile end = {4 * ELL!r}, 0
   set Profile points = 101
   set Profile times = {(PROBE - START) / v!r}
-end
 """
 
 
@@ -191,7 +201,7 @@ def run(v, work):
     folder = os.path.join(work, f"out{v:.3f}")
     prm = folder + ".prm"
     with open(prm, "w") as f:
-        f.write(scene(v, folder))
+        f.write(scene(v, folder, output=riding_profile(v)))
     subprocess.run([LIFTOFF, prm], check=True, stdout=subprocess.DEVNULL)
     path = os.path.join(folder, "history.csv")
     with open(path) as f:
