@@ -180,6 +180,11 @@ namespace liftoff
     mesh.reset();
     if (outline == PlateShape::mesh_file)
       mesh = std::make_shared<const MeshFile>(prm.get("Mesh file"));
+    else
+      AssertThrow(prm.get("Mesh file").empty(),
+                  ExcMessage("Discretization/Mesh file is read only with "
+                             "Discretization/Shape = mesh file, not with "
+                             + shape_setting() + "."));
     inner_radius                    = prm.get_double("Inner radius");
     const std::string symmetry_name = prm.get("Symmetry");
     modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
