@@ -35,7 +35,9 @@ run_scene() {
   local binary=$1 scene=$2 directory=$3
   local start end status
   start=$(date +%s.%N)
-  { cat "$scene"
+  # Included, not copied, so that files the scene names (a mesh file) are
+  # found beside it.
+  { printf 'include %s\n' "$scene"
     printf '\nsubsection Output\n  set Directory = %s\n  set VTU interval = 0\nend\n' \
       "$directory"
   } | "$binary" --quiet - >"$directory.log" 2>&1

@@ -50,6 +50,29 @@ namespace liftoff
       return "";
     }
 
+    // The line `line` of a file in `folder`; if it is `set Mesh file =
+    // NAME` with a relative NAME, the line with NAME relative to `folder`,
+    // as include lines are, so that a scene and its mesh beside it can be
+    // run from anywhere. Empty `folder` (standard input, or a file in the
+    // working directory): the line as it is.
+    std::string
+    with_mesh_file_resolved(const std::string           &line,
+                            const std::filesystem::path &folder)
+    {
+      const std::string head = "set Mesh file";
+      const std::string statement =
+        Utilities::trim(line.substr(0, line.find('#')));
+      if (folder.empty() || statement.rfind(head, 0) != 0)
+        return line;
+      const std::string rest = Utilities::trim(statement.substr(head.size()));
+      if (rest.empty() || rest[0] != '=')
+        return line;
+      const std::filesystem::path name(Utilities::trim(rest.substr(1)));
+      if (name.empty() || name.is_absolute())
+        return line;
+      return head + " = " + (folder / name).lexically_normal().string();
+    }
+
     // A UTF-8 byte order mark, which some editors put first, is no part of
     // a parameter's name.
     std::string
@@ -169,6 +192,8 @@ namespace liftoff
     {
       const std::string file =
         chain_names.empty() ? "standard input" : chain_names.back();
+      const std::filesystem::path folder =
+        std::filesystem::path(chain_names.empty() ? "" : file).parent_path();
       std::istringstream       lines(text);
       std::string              line, joined;
       std::vector<std::string> group; // the lines of one continued line
@@ -186,6 +211,8 @@ namespace liftoff
             }
           const std::string name = included_file(joined + line);
           joined.clear();
+          if (name.empty() && group.size() == 1)
+            group.front() = with_mesh_file_resolved(line, folder);
           if (name.empty())
             append_lines(group, file, line_number, scene);
           else

@@ -827,6 +827,16 @@ namespace liftoff
                     ExcMessage(load.name + "/Segment: line loads are not "
                                + "available on " + geometry.shape_setting()
                                + " yet; use a narrow Pressure."));
+        // Clipping a box at a cell's edges needs the rectangle's
+        // axis-aligned cells (PatchIntegrator); a cell the box cuts would
+        // stop the run. (Patch loads have a path, refused above.)
+        AssertThrow(load.kind != Kind::pressure || load.region == "whole plate",
+                    ExcMessage(load.name + "/Region = <"
+                               + abbreviated(load.region)
+                               + "> is a box, which is not available on "
+                               + geometry.shape_setting()
+                               + " yet; use a Pressure on the whole plate "
+                                 "whose Intensity is 0 off the box."));
         if (load.kind == Kind::point)
           AssertThrow(geometry.is_on_plate(load.position),
                       ExcMessage(load.name + "/Position = "

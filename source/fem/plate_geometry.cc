@@ -1,5 +1,6 @@
 #include <deal.II/grid/grid_generator.h>
 
+#include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/fem/plate_geometry.h>
 
@@ -20,9 +21,39 @@ namespace liftoff
       {"soft simply supported", EdgeCondition::soft_simply_supported},
       {"clamped", EdgeCondition::clamped}};
 
+    // A tag of a mesh file may also be a symmetry plane.
+    const Selection<EdgeCondition> tag_conditions = {
+      {"free", EdgeCondition::free},
+      {"hard simply supported", EdgeCondition::hard_simply_supported},
+      {"soft simply supported", EdgeCondition::soft_simply_supported},
+      {"clamped", EdgeCondition::clamped},
+      {"symmetry plane", EdgeCondition::symmetry_plane}};
+
     const Selection<PlateShape> shapes = {{"rectangle", PlateShape::rectangle},
                                           {"disc", PlateShape::disc},
-                                          {"annulus", PlateShape::annulus}};
+                                          {"annulus", PlateShape::annulus},
+                                          {"mesh file", PlateShape::mesh_file}};
+
+    // The components of (w, psi_x, psi_y) an edge held by `condition`
+    // holds; the rotation along an edge is psi_y on an edge along y
+    // (x = const), psi_x on an edge along x.
+    ComponentMask
+    held_on_edge(const EdgeCondition condition, const bool along_y)
+    {
+      switch (condition)
+        {
+        case EdgeCondition::soft_simply_supported:
+          return ComponentMask(std::vector<bool>{true, false, false});
+        case EdgeCondition::hard_simply_supported:
+          return ComponentMask(std::vector<bool>{true, !along_y, along_y});
+        case EdgeCondition::clamped:
+          return ComponentMask(std::vector<bool>{true, true, true});
+        case EdgeCondition::symmetry_plane:
+          return ComponentMask(std::vector<bool>{false, along_y, !along_y});
+        default:
+          return ComponentMask(std::vector<bool>{false, false, false});
+        }
+    }
 
     const Selection<Symmetry> symmetries = {{"full", Symmetry::full},
                                             {"half", Symmetry::half},
@@ -50,7 +81,10 @@ namespace liftoff
                       "hyper_ball_balanced; annulus, between the circles of "
                       "radii Inner radius and Radius about the origin with "
                       "the edges Inner and Outer, meshed by GridGenerator::"
-                      "hyper_shell (Cells along x and y unused by both).");
+                      "hyper_shell (Cells along x and y unused by both); "
+                      "mesh file, the quadrilaterals of the gmsh file Mesh "
+                      "file, whose physical curves name the edges "
+                      "(Boundary conditions/Mesh tags).");
     prm.declare_entry("Radius",
                       "0.5",
                       Patterns::Double(0.0),
@@ -63,6 +97,17 @@ namespace liftoff
                       Patterns::Double(0.0),
                       "R_i / L, the radius of the hole of an annulus (Shape "
                       "= annulus), 0 < R_i < Radius.");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "The gmsh mesh of Shape = mesh file: a .msh file (msh "
+                      "2.2 or 4.1, ASCII) of quadrilaterals in the plane "
+                      "z = 0, its coordinates in the length unit L (also in "
+                      "a scene with Units/System = SI: scale the mesh by "
+                      "1/L). A relative path is relative "
+                      "to the folder of the scene file that names it, as "
+                      "include lines are (to the working directory for a "
+                      "scene on standard input).");
     prm.declare_entry("Symmetry",
                       "full",
                       symmetries.pattern(),
@@ -106,6 +151,20 @@ namespace liftoff
                       edge_conditions.pattern(),
                       "Condition on the hole's circle of an annulus (Shape "
                       "= annulus): free, soft simply supported or clamped.");
+    prm.declare_entry(
+      "Mesh tags",
+      "",
+      Patterns::Map(Patterns::Anything(),
+                    tag_conditions.pattern(),
+                    0,
+                    Patterns::Map::max_int_value,
+                    ",",
+                    ":"),
+      "Conditions on the edges of a mesh file (Discretization/Shape = mesh "
+      "file), as 'tag: condition, tag: condition', a tag being the name or "
+      "the number of a physical curve of the file (e.g. 'Wall: clamped, "
+      "Hole: free'). Tags not listed are free. Hard simply supported and "
+      "symmetry plane need the tag's faces all parallel to x or all to y.");
     prm.leave_subsection();
   }
 
@@ -116,9 +175,17 @@ namespace liftoff
   {
     aspect_ratio = plate.aspect_ratio;
     prm.enter_subsection("Discretization");
-    outline      = shapes.parse(prm.get("Shape"), "Discretization/Shape");
-    radius       = prm.get_double("Radius");
-    inner_radius = prm.get_double("Inner radius");
+    outline = shapes.parse(prm.get("Shape"), "Discretization/Shape");
+    radius  = prm.get_double("Radius");
+    mesh.reset();
+    if (outline == PlateShape::mesh_file)
+      mesh = std::make_shared<const MeshFile>(prm.get("Mesh file"));
+    else
+      AssertThrow(prm.get("Mesh file").empty(),
+                  ExcMessage("Discretization/Mesh file is read only with "
+                             "Discretization/Shape = mesh file, not with "
+                             + shape_setting() + "."));
+    inner_radius                    = prm.get_double("Inner radius");
     const std::string symmetry_name = prm.get("Symmetry");
     modelled_part = symmetries.parse(symmetry_name, "Discretization/Symmetry");
     n_cells_x     = prm.get_integer("Cells along x");
@@ -133,6 +200,7 @@ namespace liftoff
       edge_conditions.parse(prm.get("Outer"), "Boundary conditions/Outer");
     inner =
       edge_conditions.parse(prm.get("Inner"), "Boundary conditions/Inner");
+    parse_mesh_tags(prm.get("Mesh tags"));
     prm.leave_subsection();
     check_shape_choices(symmetry_name);
 
@@ -157,6 +225,14 @@ namespace liftoff
     const auto refuse = [](const bool wrong, const std::string &message) {
       AssertThrow(!wrong, ExcMessage(message));
     };
+    refuse(outline != PlateShape::rectangle && modelled_part != Symmetry::full,
+           "Discretization/Symmetry = " + symmetry_name
+             + " is not available on " + shape_setting() + " yet; use full.");
+    if (outline == PlateShape::mesh_file)
+      {
+        check_mesh_file_choices();
+        return;
+      }
     refuse(outline != PlateShape::annulus && inner != EdgeCondition::free,
            "Boundary conditions/Inner is the hole's edge of an annulus; "
              + shape_setting() + " has no hole.");
@@ -183,9 +259,69 @@ namespace liftoff
                + (outline == PlateShape::annulus ? "Inner and Outer."
                                                  : "Outer."));
     check_circle_conditions();
-    refuse(modelled_part != Symmetry::full,
-           "Discretization/Symmetry = " + symmetry_name
-             + " is not available on " + shape_setting() + " yet; use full.");
+  }
+
+
+  void
+  PlateGeometry::check_mesh_file_choices() const
+  {
+    // The built-in shapes' edges are not those of the file.
+    std::vector<std::pair<std::string, EdgeCondition>> named_edges = {
+      {"Outer", outer}, {"Inner", inner}};
+    for (unsigned int e = 0; e < 4; ++e)
+      named_edges.emplace_back(edge_names[e], edges[e]);
+    for (const auto &[name, condition] : named_edges)
+      AssertThrow(condition == EdgeCondition::free,
+                  ExcMessage("Boundary conditions/" + name
+                             + " is an edge of a built-in shape; "
+                             + shape_setting()
+                             + " holds the physical curves of its file by "
+                               "Boundary conditions/Mesh tags."));
+  }
+
+
+  void
+  PlateGeometry::parse_mesh_tags(const std::string &text)
+  {
+    const std::string parameter = "Boundary conditions/Mesh tags";
+    mesh_tags.clear();
+    if (Utilities::trim(text).empty())
+      return;
+    AssertThrow(mesh != nullptr,
+                ExcMessage(parameter
+                           + " holds the physical curves of a mesh "
+                             "file; "
+                           + shape_setting()
+                           + " has none (Discretization/Shape = mesh file "
+                             "has)."));
+    for (const std::string &entry : Utilities::split_string_list(text, ','))
+      {
+        const auto parts = Utilities::split_string_list(entry, ':');
+        AssertThrow(parts.size() == 2,
+                    ExcMessage(parameter + ": '" + abbreviated(entry)
+                               + "' is not 'tag: condition'."));
+        const types::boundary_id id = mesh->boundary_id(parts[0], parameter);
+        const EdgeCondition      condition =
+          tag_conditions.parse(parts[1], parameter + " (" + parts[0] + ")");
+        for (const HeldTag &other : mesh_tags)
+          AssertThrow(other.id != id,
+                      ExcMessage(parameter + " gives the tag "
+                                 + std::to_string(id) + " two conditions ("
+                                 + other.name + " and " + parts[0]
+                                 + "); give each tag one."));
+        const bool along_an_axis =
+          mesh->direction_of(id) != numbers::invalid_unsigned_int;
+        AssertThrow(along_an_axis
+                      || (condition != EdgeCondition::hard_simply_supported
+                          && condition != EdgeCondition::symmetry_plane),
+                    ExcMessage(parameter + ": " + parts[0] + " = " + parts[1]
+                               + " needs the tag's faces all parallel to x "
+                                 "or all to y (the rotation along an oblique "
+                                 "edge is no component of (w, psi_x, "
+                                 "psi_y)); use soft simply supported or "
+                                 "clamped."));
+        mesh_tags.push_back({id, parts[0], condition});
+      }
   }
 
 
@@ -210,6 +346,11 @@ namespace liftoff
   void
   PlateGeometry::create_coarse_mesh(Triangulation<2> &triangulation) const
   {
+    if (outline == PlateShape::mesh_file)
+      {
+        mesh->copy_to(triangulation);
+        return;
+      }
     if (outline == PlateShape::disc)
       {
         // The generator attaches a SphericalManifold to the boundary and a
@@ -263,6 +404,9 @@ namespace liftoff
   unsigned int
   PlateGeometry::coarse_cells_along(const unsigned int axis) const
   {
+    // A mesh file's cells count as one row of them.
+    if (outline == PlateShape::mesh_file)
+      return axis == 0 ? mesh->n_cells() : 1;
     // The 12 cells of hyper_ball_balanced count as 4 x 4 in estimates.
     if (outline == PlateShape::disc)
       return 4;
@@ -288,7 +432,8 @@ namespace liftoff
   double
   PlateGeometry::largest_cell_aspect_ratio() const
   {
-    // hyper_ball_balanced's and hyper_shell's cells are close to square.
+    // hyper_ball_balanced's and hyper_shell's cells are close to square;
+    // a mesh file's are not estimated.
     if (outline != PlateShape::rectangle)
       return 1.0;
     // Refinement splits cells in both directions: the coarse cells' ratio.
@@ -301,41 +446,24 @@ namespace liftoff
   std::vector<std::pair<types::boundary_id, ComponentMask>>
   PlateGeometry::held_components() const
   {
-    const auto mask = [](const std::vector<bool> &w_psix_psiy) {
-      return ComponentMask(w_psix_psiy);
-    };
     std::vector<std::pair<types::boundary_id, ComponentMask>> held;
-    if (outer == EdgeCondition::soft_simply_supported)
-      held.emplace_back(outer_boundary, mask({true, false, false}));
-    if (outer == EdgeCondition::clamped)
-      held.emplace_back(outer_boundary, mask({true, true, true}));
-    if (inner == EdgeCondition::soft_simply_supported)
-      held.emplace_back(inner_boundary, mask({true, false, false}));
-    if (inner == EdgeCondition::clamped)
-      held.emplace_back(inner_boundary, mask({true, true, true}));
+    const auto hold = [&](const types::boundary_id id,
+                          const EdgeCondition      condition,
+                          const bool               along_y) {
+      if (condition != EdgeCondition::free)
+        held.emplace_back(id, held_on_edge(condition, along_y));
+    };
+    // The circles hold no rotation along them (check_circle_conditions).
+    hold(outer_boundary, outer, false);
+    hold(inner_boundary, inner, false);
     for (unsigned int e = 0; e < 4; ++e)
-      {
-        // Rotation along an edge: psi_y on the edges x = const, psi_x on
-        // the edges y = const.
-        const bool along_y = (e == left_edge || e == right_edge);
-        switch (edges[e])
-          {
-          case EdgeCondition::free:
-            break;
-          case EdgeCondition::soft_simply_supported:
-            held.emplace_back(e, mask({true, false, false}));
-            break;
-          case EdgeCondition::hard_simply_supported:
-            held.emplace_back(e, mask({true, !along_y, along_y}));
-            break;
-          case EdgeCondition::clamped:
-            held.emplace_back(e, mask({true, true, true}));
-            break;
-          }
-      }
-    // On a symmetry plane the rotation normal to it vanishes.
-    held.emplace_back(x_symmetry_plane, mask({false, true, false}));
-    held.emplace_back(y_symmetry_plane, mask({false, false, true}));
+      hold(e, edges[e], e == left_edge || e == right_edge);
+    for (const HeldTag &tag : mesh_tags)
+      hold(tag.id, tag.condition, mesh->direction_of(tag.id) == 1);
+    if (outline == PlateShape::mesh_file)
+      return held;
+    hold(x_symmetry_plane, EdgeCondition::symmetry_plane, true);
+    hold(y_symmetry_plane, EdgeCondition::symmetry_plane, false);
     return held;
   }
 
@@ -343,12 +471,15 @@ namespace liftoff
   bool
   PlateGeometry::has_kinematic_support() const
   {
-    if (outer != EdgeCondition::free || inner != EdgeCondition::free)
-      return true;
-    for (const auto e : edges)
-      if (e != EdgeCondition::free)
-        return true;
-    return false;
+    std::vector<EdgeCondition> conditions(edges.begin(), edges.end());
+    conditions.insert(conditions.end(), {outer, inner});
+    for (const HeldTag &tag : mesh_tags)
+      conditions.push_back(tag.condition);
+    return std::any_of(conditions.begin(),
+                       conditions.end(),
+                       [](const EdgeCondition condition) {
+                         return held_on_edge(condition, true)[0];
+                       });
   }
 
 
@@ -385,7 +516,7 @@ namespace liftoff
   bool
   PlateGeometry::has_curved_boundary() const
   {
-    return outline != PlateShape::rectangle;
+    return outline == PlateShape::disc || outline == PlateShape::annulus;
   }
 
 
@@ -421,6 +552,8 @@ namespace liftoff
   BoundingBox<2>
   PlateGeometry::plate_box() const
   {
+    if (outline == PlateShape::mesh_file)
+      return mesh->bounding_box();
     if (outline != PlateShape::rectangle)
       return BoundingBox<2>(
         std::make_pair(Point<2>(-radius, -radius), Point<2>(radius, radius)));
@@ -442,6 +575,8 @@ namespace liftoff
   bool
   PlateGeometry::is_on_plate(const Point<2> &p) const
   {
+    if (outline == PlateShape::mesh_file)
+      return mesh->contains(p);
     if (outline == PlateShape::disc)
       return p.norm() <= radius * (1 + 1e-12);
     if (outline == PlateShape::annulus)
@@ -456,7 +591,7 @@ namespace liftoff
   bool
   PlateGeometry::is_on_modelled_part(const Point<2> &p) const
   {
-    // Discs and annuli are always modelled in full (check_shape_choices).
+    // The other shapes are always modelled in full (check_shape_choices).
     if (outline != PlateShape::rectangle)
       return is_on_plate(p);
     return modelled_box().point_inside(p, 1e-12);
@@ -468,6 +603,8 @@ namespace liftoff
   {
     std::ostringstream text;
     text.precision(6);
+    if (outline == PlateShape::mesh_file)
+      return mesh->description();
     if (outline == PlateShape::disc)
       {
         text << "the disc of radius " << radius << " about (0, 0)";

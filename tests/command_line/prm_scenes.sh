@@ -21,7 +21,9 @@ for scene in "$scenes"/*.prm; do
   steps=$(sed -n 's/^# prm_scenes: steps = \([0-9]*\).*/\1/p' "$scene")
   steps=${steps:-5}
   end=$(awk -v dt="$dt" -v n="$steps" 'BEGIN {printf "%.17g", n * dt}')
-  { cat "$scene"
+  # Included, not copied, so that files the scene names (a mesh file) are
+  # found beside it.
+  { printf 'include %s\n' "$scene"
     printf '\nsubsection Time integration\n  set End time = %s\nend\n' "$end"
     printf 'subsection Output\n  set Directory = %s\n  set VTU interval = 0\nend\n' "$name"
   } | "$liftoff" - >"$name.log" 2>&1

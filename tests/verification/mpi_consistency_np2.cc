@@ -6,7 +6,10 @@
 // element (S2, reduced shear integration), whose unknowns must also be
 // those of its vertices and edges alone, and on an adaptive mesh (Q2,
 // refined and coarsened every 5 steps; and above Kelly's cell limit),
-// whose meshes must be the same at every step.
+// whose meshes must be the same at every step. Beyond the rectangle
+// (issue 34): a disc (GridGenerator::hyper_ball_balanced, its manifolds and
+// a MappingQ2 on every rank) and a mesh read from a gmsh file, each under
+// a load off its centre on the tensionless bed.
 
 #include <deal.II/base/mpi.h>
 
@@ -108,6 +111,56 @@ main(int argc, char **argv)
                             "0.01*exp(-50*((x-0.1)^2+y^2)); 0; 0\n"
                             "end\n",
                         0,
+                        checks);
+
+  const std::string off_centre = R"(
+subsection Plate
+  set Thickness ratio = 0.05
+  set Poisson ratio = 0.3
+end
+subsection Foundation
+  set Model = tensionless
+  set Stiffness = 300
+end
+subsection Loads
+  subsection Point load 1
+    set Magnitude = 1
+    set Position = 0.12, -0.05
+    set Time history = 20*tau
+  end
+  subsection Pressure 1
+    set Magnitude = 2
+    set Region = whole plate
+    set Intensity = if(x > -0.25 & x < 0.05 & y > -0.1 & y < 0.2, 1, 0)
+  end
+end
+subsection Time integration
+  set Time step = 2e-3
+  set End time = 0.04
+end
+subsection Output
+  set Probe points = 0.12, -0.05; 0, 0; 0.5, 0; -0.2, 0.3; 0, -0.5
+end
+)";
+  compare_1_and_2_ranks("Q2 disc",
+                        off_centre
+                          + "subsection Discretization\n"
+                            "  set Shape = disc\n"
+                            "  set Global refinements = 1\n"
+                            "  set Polynomial degree = 2\n"
+                            "end\n",
+                        0,
+                        checks);
+  // 10 x 10 cells of the square: 21 x 21 nodes of Q2.
+  compare_1_and_2_ranks("Q2 mesh file",
+                        off_centre
+                          + "subsection Discretization\n"
+                            "  set Shape = mesh file\n"
+                            "  set Mesh file = " LIFTOFF_SOURCE_DIR
+                            "/tests/meshes/square.msh\n"
+                            "  set Polynomial degree = 2\n"
+                            "end\n",
+                        3 * 21 * 21,
                         checks);
   const int code = checks.exit_code();
   return dealii::Utilities::MPI::max(code, MPI_COMM_WORLD);

@@ -40,7 +40,8 @@ namespace liftoff
    * from the working directory, so that a scene whose includes lie beside
    * it could only be run from its own folder. Here an include is relative
    * to the folder of the file that holds the include line (to the working
-   * directory for standard input).
+   * directory for standard input), and so is the file of a line `set Mesh
+   * file = NAME`.
    */
   struct SceneText
   {

@@ -5,9 +5,11 @@
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/grid/tria.h>
 
+#include <liftoff/fem/mesh_file.h>
 #include <liftoff/fem/mindlin_plate.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,17 +24,19 @@ namespace liftoff
     free,
     hard_simply_supported, // w = 0 and the tangential rotation is zero
     soft_simply_supported, // w = 0 only
-    clamped                // w = psi_x = psi_y = 0
+    clamped,               // w = psi_x = psi_y = 0
+    symmetry_plane         // the rotation normal to the edge is zero
   };
 
   /// The plate's outline: the rectangle [-1/2, 1/2] x [-mu/2, mu/2], the
-  /// disc of radius R about the origin or the annulus between the circles
-  /// of radii R_i and R about it.
+  /// disc of radius R about the origin, the annulus between the circles
+  /// of radii R_i and R about it, or the mesh of a gmsh file.
   enum class PlateShape
   {
     rectangle,
     disc,
-    annulus
+    annulus,
+    mesh_file
   };
 
   /// Which part of the plate is meshed. The scene always describes the full
@@ -46,11 +50,14 @@ namespace liftoff
 
   /**
    * The shape of the plate and how it is held: the rectangle
-   * [-1/2, 1/2] x [-mu/2, mu/2], the part of it that is meshed (full, half,
-   * quarter), its coarse mesh with the boundary ids of edges and symmetry
-   * planes, and the condition on each edge. Every question of the form "is
-   * this point on the plate" or "which part carries this load" is answered
-   * here, so that another shape is a change of this class alone.
+   * [-1/2, 1/2] x [-mu/2, mu/2], a disc, an annulus or the mesh of a gmsh
+   * file (MeshFile), the part of it that is meshed (full, half, quarter;
+   * the rectangle only), its coarse mesh with the boundary ids of edges
+   * and symmetry planes, and the condition on each edge (on each physical
+   * curve of a mesh file that `Boundary conditions/Mesh tags` names). Every
+   * question of the form "is this point on the plate" or "which part carries
+   * this load" is answered here, so that another shape is a change of this
+   * class alone.
    */
   class PlateGeometry
   {
@@ -72,8 +79,8 @@ namespace liftoff
 
     PlateGeometry();
 
-    /// Entries in "Discretization" (Shape, Radius, Symmetry, Cells along x
-    /// and y) and "Boundary conditions".
+    /// Entries in "Discretization" (Shape, Radius, Inner radius, Mesh file,
+    /// Symmetry, Cells along x and y) and "Boundary conditions".
     static void
     declare_parameters(ParameterHandler &prm);
     /// The plate's aspect ratio is taken here, so that every check of a
@@ -156,19 +163,35 @@ namespace liftoff
     check_shape_choices(const std::string &symmetry_name) const;
     void
     check_circle_conditions() const;
+    void
+    check_mesh_file_choices() const;
+    /// The conditions of `Boundary conditions/Mesh tags` on the tags of the
+    /// mesh file, each tag once.
+    void
+    parse_mesh_tags(const std::string &text);
     /// Cells of the coarse ring GridGenerator::hyper_shell makes.
     unsigned int
     n_ring_cells() const;
 
-    PlateShape                   outline       = PlateShape::rectangle;
-    double                       radius        = 0.5;
-    double                       inner_radius  = 0.25;
-    EdgeCondition                outer         = EdgeCondition::free;
-    EdgeCondition                inner         = EdgeCondition::free;
-    double                       aspect_ratio  = 1.0;
-    Symmetry                     modelled_part = Symmetry::full;
-    unsigned int                 n_cells_x     = 10;
-    unsigned int                 n_cells_y     = 10;
-    std::array<EdgeCondition, 4> edges;
+    PlateShape                      outline       = PlateShape::rectangle;
+    double                          radius        = 0.5;
+    double                          inner_radius  = 0.25;
+    EdgeCondition                   outer         = EdgeCondition::free;
+    EdgeCondition                   inner         = EdgeCondition::free;
+    double                          aspect_ratio  = 1.0;
+    Symmetry                        modelled_part = Symmetry::full;
+    unsigned int                    n_cells_x     = 10;
+    unsigned int                    n_cells_y     = 10;
+    std::array<EdgeCondition, 4>    edges;
+    std::shared_ptr<const MeshFile> mesh;
+    /// Boundary id of a tag of the mesh file, its name in the scene and
+    /// its condition, for the tags the scene holds.
+    struct HeldTag
+    {
+      types::boundary_id id;
+      std::string        name;
+      EdgeCondition      condition;
+    };
+    std::vector<HeldTag> mesh_tags;
   };
 } // namespace liftoff

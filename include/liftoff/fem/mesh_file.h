@@ -1,0 +1,72 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/grid/tria.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * A plate's coarse mesh read from a gmsh file (`Discretization/Mesh
+   * file`): quadrilaterals in the plane, read by GridIn::read_msh, whose
+   * physical curves name parts of the boundary. A physical curve's number
+   * is the boundary id of its faces (GridIn's rule); its name, read here
+   * from the file's $PhysicalNames, stands for that number. Faces of no
+   * physical curve have the boundary id 0. Also answers which points the
+   * mesh covers, its edges included.
+   */
+  class MeshFile
+  {
+  public:
+    /// Read `file_name`. Refused in one line that names Discretization/Mesh
+    /// file and the cause: no file, a file GridIn cannot read as a planar
+    /// mesh (a 3D mesh among them), cells that are not quadrilaterals, one
+    /// physical name given to two curves.
+    explicit MeshFile(const std::string &file_name);
+
+    /// The coarse mesh, with the boundary ids of the file, into an empty
+    /// triangulation (a distributed one too).
+    void
+    copy_to(Triangulation<2> &triangulation) const;
+    unsigned int
+    n_cells() const;
+
+    /// The boundary id of the physical curve called `tag`, by its name or
+    /// its number; refused, with the names and numbers of the file, if it
+    /// has none such. `parameter` names the entry in the message.
+    types::boundary_id
+    boundary_id(const std::string &tag, const std::string &parameter) const;
+    /// 0 if every face of the boundary `id` is parallel to the x axis, 1 if
+    /// every one is parallel to the y axis, else numbers::invalid_unsigned_int.
+    unsigned int
+    direction_of(const types::boundary_id id) const;
+
+    /// True for a point of a cell of the mesh, its edges included.
+    bool
+    contains(const Point<2> &p) const;
+    BoundingBox<2>
+    bounding_box() const;
+    /// "the mesh of FILE (inside the box [x0, x1] x [y0, y1])", for messages.
+    std::string
+    description() const;
+
+  private:
+    void
+    read_physical_names(const std::string &text);
+    void
+    read_cells(const std::string &text);
+    /// The named tags of the file and the unnamed boundary ids, for messages.
+    std::string
+    known_tags() const;
+
+    std::string                               name;
+    std::unique_ptr<Triangulation<2>>         coarse;
+    std::map<std::string, types::boundary_id> physical_names;
+  };
+} // namespace liftoff

@@ -1,0 +1,233 @@
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/reference_cell.h>
+
+#include <liftoff/base/output_files.h>
+#include <liftoff/fem/mesh_file.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace liftoff
+{
+  namespace
+  {
+    // The first line of a message, its blanks run together: deal.II's
+    // exceptions span several lines.
+    std::string
+    first_line(const std::string &message)
+    {
+      std::istringstream words(message.substr(0, message.find('\n')));
+      std::string        word, line;
+      while (words >> word)
+        line += (line.empty() ? "" : " ") + word;
+      return line;
+    }
+  } // namespace
+
+
+  MeshFile::MeshFile(const std::string &file_name)
+      : name(file_name)
+      , coarse(std::make_unique<Triangulation<2>>())
+  {
+    const std::string parameter = "Discretization/Mesh file = " + name;
+    AssertThrow(!name.empty(),
+                ExcMessage("Discretization/Mesh file must name a gmsh .msh "
+                           "file for Discretization/Shape = mesh file."));
+    AssertThrow(!std::filesystem::is_directory(name),
+                ExcMessage(parameter + " is a folder, not a mesh file."));
+    AssertThrow(std::filesystem::is_regular_file(name),
+                ExcMessage(parameter + ": there is no such file."));
+    std::ifstream      file(name);
+    std::ostringstream text;
+    text << file.rdbuf();
+    AssertThrow(file.good() || file.eof(),
+                ExcMessage(parameter + ": the file cannot be read."));
+    read_physical_names(text.str());
+    read_cells(text.str());
+  }
+
+
+  void
+  MeshFile::read_physical_names(const std::string &text)
+  {
+    // GridIn reads the numbers of physical curves, not their names.
+    const std::size_t start = text.find("$PhysicalNames");
+    if (start == std::string::npos)
+      return;
+    std::istringstream section(text.substr(start + 14));
+    unsigned int       n_names = 0;
+    section >> n_names;
+    for (unsigned int i = 0; i < n_names && section; ++i)
+      {
+        int         dimension = 0, tag = 0;
+        std::string line;
+        section >> dimension >> tag;
+        std::getline(section, line);
+        const std::string quoted = Utilities::trim(line);
+        const std::string tag_name =
+          quoted.size() >= 2 ? quoted.substr(1, quoted.size() - 2) : quoted;
+        // Names of surfaces or volumes name no boundary.
+        if (dimension != 1)
+          continue;
+        const auto known = physical_names.find(tag_name);
+        AssertThrow(known == physical_names.end()
+                      || known->second == static_cast<types::boundary_id>(tag),
+                    ExcMessage("Discretization/Mesh file = " + name
+                               + ": the physical name \"" + tag_name
+                               + "\" is given to the curves "
+                               + std::to_string(known->second) + " and "
+                               + std::to_string(tag)
+                               + "; a name must stand for one tag."));
+        physical_names[tag_name] = tag;
+      }
+  }
+
+
+  void
+  MeshFile::read_cells(const std::string &text)
+  {
+    const std::string parameter = "Discretization/Mesh file = " + name;
+    try
+      {
+        GridIn<2> grid_in;
+        grid_in.attach_triangulation(*coarse);
+        std::istringstream in(text);
+        grid_in.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(parameter
+                               + ": GridIn cannot read it as a planar gmsh "
+                                 "mesh (msh 2.2 or 4.1 in ASCII, 2D cells "
+                                 "only): "
+                               + first_line(message_of(e))));
+      }
+    for (const auto &cell : coarse->active_cell_iterators())
+      AssertThrow(cell->reference_cell() == ReferenceCells::Quadrilateral,
+                  ExcMessage(parameter
+                             + ": it holds cells that are not quadrilaterals "
+                               "(triangles?); liftoff's elements are "
+                               "quadrilaterals (gmsh: Mesh.RecombineAll = 1, "
+                               "or Recombine Surface)."));
+  }
+
+
+  void
+  MeshFile::copy_to(Triangulation<2> &triangulation) const
+  {
+    triangulation.copy_triangulation(*coarse);
+  }
+
+
+  unsigned int
+  MeshFile::n_cells() const
+  {
+    return coarse->n_active_cells();
+  }
+
+
+  types::boundary_id
+  MeshFile::boundary_id(const std::string &tag,
+                        const std::string &parameter) const
+  {
+    const auto named = physical_names.find(tag);
+    if (named != physical_names.end())
+      return named->second;
+    const std::vector<types::boundary_id> ids = coarse->get_boundary_ids();
+    for (const types::boundary_id id : ids)
+      if (tag == std::to_string(id))
+        return id;
+    AssertThrow(false,
+                ExcMessage(parameter + ": " + name
+                           + " has no physical curve called \"" + tag
+                           + "\"; it has " + known_tags() + "."));
+    return 0;
+  }
+
+
+  std::string
+  MeshFile::known_tags() const
+  {
+    std::string            list;
+    std::set<unsigned int> named;
+    for (const auto &[tag_name, id] : physical_names)
+      {
+        list += (list.empty() ? "" : ", ") + tag_name + " ("
+                + std::to_string(id) + ")";
+        named.insert(id);
+      }
+    for (const types::boundary_id id : coarse->get_boundary_ids())
+      if (named.count(id) == 0)
+        list += (list.empty() ? "" : ", ") + std::to_string(id)
+                + (id == 0 ? " (faces of no physical curve)" : " (unnamed)");
+    return list.empty() ? "no boundary" : list;
+  }
+
+
+  unsigned int
+  MeshFile::direction_of(const types::boundary_id id) const
+  {
+    std::set<unsigned int> directions;
+    for (const auto &face : coarse->active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == id)
+        {
+          const Tensor<1, 2> d = face->vertex(1) - face->vertex(0);
+          // Parallel to x: the face's y extent is round-off of its length.
+          const double tolerance = 1e-12 * d.norm();
+          directions.insert(std::abs(d[1]) <= tolerance   ? 0u
+                            : std::abs(d[0]) <= tolerance ? 1u
+                                                          : 2u);
+        }
+    return (directions.size() == 1 && *directions.begin() < 2)
+             ? *directions.begin()
+             : numbers::invalid_unsigned_int;
+  }
+
+
+  bool
+  MeshFile::contains(const Point<2> &p) const
+  {
+    // Exact for the coarse mesh's straight-sided cells; a point on an edge
+    // is inside to round-off of the cell's size.
+    const auto &mapping =
+      ReferenceCells::Quadrilateral.get_default_linear_mapping<2, 2>();
+    for (const auto &cell : coarse->active_cell_iterators())
+      if (cell->bounding_box().point_inside(p, 1e-12))
+        try
+          {
+            const Point<2> unit = mapping.transform_real_to_unit_cell(cell, p);
+            if (GeometryInfo<2>::is_inside_unit_cell(unit, 1e-12))
+              return true;
+          }
+        catch (const Mapping<2>::ExcTransformationFailed &)
+          {
+            // Not in this cell.
+          }
+    return false;
+  }
+
+
+  BoundingBox<2>
+  MeshFile::bounding_box() const
+  {
+    return GridTools::compute_bounding_box(*coarse);
+  }
+
+
+  std::string
+  MeshFile::description() const
+  {
+    const auto         corners = bounding_box().get_boundary_points();
+    std::ostringstream text;
+    text.precision(6);
+    text << "the mesh of " << name << " (inside [" << corners.first[0] << ", "
+         << corners.second[0] << "] x [" << corners.first[1] << ", "
+         << corners.second[1] << "])";
+    return text.str();
+  }
+} // namespace liftoff
