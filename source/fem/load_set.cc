@@ -77,6 +77,23 @@ namespace liftoff
                         path_documentation);
     }
 
+    // The comma-separated numbers of `text`, or refused with `message`.
+    std::vector<double>
+    numbers_or_refuse(const std::string &text, const std::string &message)
+    {
+      try
+        {
+          return Utilities::string_to_double(
+            Utilities::split_string_list(text, ','));
+        }
+      catch (...)
+        {
+          AssertThrow(false, ExcMessage(message));
+        }
+      return {};
+    }
+
+
     // "a, b" of a rectangle, "d" of a disc: both widths, or refused.
     std::array<double, 2>
     patch_size(const std::string   &text,
@@ -87,16 +104,7 @@ namespace liftoff
         parameter + " = <" + text
         + "> must be 'a, b' (widths along x and y, > 0) for a rectangle or "
           "'d' (the diameter, > 0) for a disc.";
-      std::vector<double> v;
-      try
-        {
-          v = Utilities::string_to_double(
-            Utilities::split_string_list(text, ','));
-        }
-      catch (...)
-        {
-          AssertThrow(false, ExcMessage(message));
-        }
+      const std::vector<double> v = numbers_or_refuse(text, message);
       const unsigned int n = (shape == LoadSet::Shape::rectangle ? 2 : 1);
       AssertThrow(v.size() == n && v[0] > 0 && v[n - 1] > 0
                     && std::isfinite(v[0]) && std::isfinite(v[n - 1]),
@@ -114,16 +122,7 @@ namespace liftoff
         parameter + " = <" + abbreviated(text)
         + "> must be 'x1, y1, x2, y2', the ends of the line (finite "
           "numbers, two different points), or empty for an Edge.";
-      std::vector<double> v;
-      try
-        {
-          v = Utilities::string_to_double(
-            Utilities::split_string_list(text, ','));
-        }
-      catch (...)
-        {
-          AssertThrow(false, ExcMessage(message));
-        }
+      const std::vector<double> v = numbers_or_refuse(text, message);
       AssertThrow(v.size() == 4
                     && std::all_of(v.begin(),
                                    v.end(),
@@ -200,6 +199,23 @@ namespace liftoff
       return (image_lo - b.get_boundary_points().first).norm() <= 1e-12
              && (image_hi - b.get_boundary_points().second).norm() <= 1e-12;
     }
+    // Whether segment b is segment a mirrored normal to `axis`, either
+    // way round.
+    bool
+    is_mirrored_segment(const PatchIntegrator::Segment &a,
+                        const PatchIntegrator::Segment &b,
+                        const unsigned int              axis)
+    {
+      const Point<2> start = mirrored(a.start, axis),
+                     end   = mirrored(a.end, axis);
+      const auto near      = [](const Point<2> &p, const Point<2> &q) {
+        return p.distance(q) < 1e-12;
+      };
+      return (near(start, b.start) && near(end, b.end))
+             || (near(start, b.end) && near(end, b.start));
+    }
+
+
     // "dx, dy, share; ..." of a vehicle, or refused naming `parameter`.
     std::vector<std::array<double, 3>>
     parse_wheels(const std::string &text, const std::string &parameter)
@@ -763,17 +779,8 @@ namespace liftoff
       + "> must be 'whole plate' or 'x_min, x_max, y_min, y_max' with "
         "x_min < x_max, y_min < y_max, inside the plate [-1/2, 1/2] x [-mu/2, "
         "mu/2].";
-    const auto parts = Utilities::split_string_list(load.region, ',');
-    AssertThrow(parts.size() == 4, ExcMessage(message));
-    std::vector<double> v;
-    try
-      {
-        v = Utilities::string_to_double(parts);
-      }
-    catch (...)
-      {
-        AssertThrow(false, ExcMessage(message));
-      }
+    const std::vector<double> v = numbers_or_refuse(load.region, message);
+    AssertThrow(v.size() == 4, ExcMessage(message));
     AssertThrow(v[0] < v[1] && v[2] < v[3], ExcMessage(message));
     const BoundingBox<2> box(
       std::make_pair(Point<2>(v[0], v[2]), Point<2>(v[1], v[3])));
@@ -1006,21 +1013,12 @@ namespace liftoff
           return false;
         break;
       case Kind::line:
-        {
-          // Lines on a reduced model stand (check_symmetry()); the image
-          // may run either way.
-          const auto     line = load.line_at(plate, 0);
-          const auto     seen = other.line_at(plate, 0);
-          const Point<2> a    = mirrored(line.start, axis),
-                         b    = mirrored(line.end, axis);
-          const auto near     = [](const Point<2> &p, const Point<2> &q) {
-            return p.distance(q) < 1e-12;
-          };
-          if (!(near(a, seen.start) && near(b, seen.end))
-              && !(near(a, seen.end) && near(b, seen.start)))
-            return false;
-          break;
-        }
+        // Lines on a reduced model stand (check_symmetry()).
+        if (!is_mirrored_segment(load.line_at(plate, 0),
+                                 other.line_at(plate, 0),
+                                 axis))
+          return false;
+        break;
       }
 
     for (const double tau : times)

@@ -88,7 +88,6 @@ namespace liftoff
       for (Output *output : outputs)
         output->write_in_units_of(units);
       checkpoint.parse_parameters(scene);
-
       check_scene();
     });
   }

@@ -28,6 +28,7 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -203,24 +204,52 @@ namespace pressure_patches
     double                scale = 0;
   };
 
-  Moments
-  load_moments(const Case &c, const MPI_Comm comm)
+  /// A scene's discretization (the cells whose centre has x + y below
+  /// `refine_below` refined once) and the load vector of its loads at tau,
+  /// checked (mirror images) and assembled as a run does.
+  struct AssembledLoad
+  {
+    std::unique_ptr<liftoff::Discretization> disc;
+    liftoff::LA::MPI::Vector                 vector;
+
+    /// vector . I(x^i y^j), I the interpolant in the w component: the
+    /// integral of the load against x^i y^j where that is in the
+    /// element's space.
+    double
+    moment(const unsigned int i, const unsigned int j) const
+    {
+      liftoff::LA::MPI::Vector g;
+      disc->reinit_vector(g);
+      VectorTools::interpolate(disc->mapping(),
+                               disc->dof_handler,
+                               InWComponent(i, j),
+                               g);
+      return vector * g;
+    }
+  };
+
+  AssembledLoad
+  assemble_load(const std::string &scene,
+                const double       refine_below,
+                const double       tau,
+                const MPI_Comm     comm)
   {
     ParameterHandler prm;
     liftoff::MindlinPlate::declare_parameters(prm);
     liftoff::Discretization::declare_parameters(prm);
     liftoff::LoadSet::declare_parameters(prm);
-    prm.parse_input_from_string(c.scene(), "test scene");
+    prm.parse_input_from_string(scene, "test scene");
     liftoff::MindlinPlate plate;
     plate.parse_parameters(prm);
-    liftoff::Discretization disc(comm);
+    AssembledLoad result{std::make_unique<liftoff::Discretization>(comm), {}};
+    liftoff::Discretization &disc = *result.disc;
     disc.parse_parameters(prm, plate);
     disc.setup();
-    if (c.refine_below > -1e300)
+    if (refine_below > -1e300)
       {
         for (const auto &cell : disc.triangulation.active_cell_iterators())
           if (cell->is_locally_owned()
-              && cell->center()[0] + cell->center()[1] < c.refine_below)
+              && cell->center()[0] + cell->center()[1] < refine_below)
             cell->set_refine_flag();
         disc.triangulation.execute_coarsening_and_refinement();
         disc.distribute_dofs();
@@ -230,24 +259,25 @@ namespace pressure_patches
     // The symmetry check (mirror images) as a run does it.
     loads.check_against(disc, 0.01, 1);
     loads.setup(disc);
-    liftoff::LA::MPI::Vector load, g;
-    disc.reinit_vector(load);
-    disc.reinit_vector(g);
-    loads.assemble(0, load);
+    disc.reinit_vector(result.vector);
+    loads.assemble(tau, result.vector);
+    return result;
+  }
 
+  Moments
+  load_moments(const Case &c, const MPI_Comm comm)
+  {
+    const AssembledLoad load =
+      assemble_load(c.scene(), c.refine_below, 0, comm);
     Moments                                          m;
     const std::array<std::array<unsigned int, 2>, 3> powers = {
       {{{0, 0}}, {{1, 0}}, {{0, 1}}}};
     for (unsigned int k = 0; k < 3; ++k)
       {
-        VectorTools::interpolate(disc.mapping(),
-                                 disc.dof_handler,
-                                 InWComponent(powers[k][0], powers[k][1]),
-                                 g);
-        m.assembled[k] = load * g;
+        m.assembled[k] = load.moment(powers[k][0], powers[k][1]);
         m.exact[k]     = 0;
         for (const auto &patch : c.patches)
-          m.exact[k] += patch.moment(disc.geometry().modelled_box(),
+          m.exact[k] += patch.moment(load.disc->geometry().modelled_box(),
                                      powers[k][0],
                                      powers[k][1]);
       }
