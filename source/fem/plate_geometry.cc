@@ -1,4 +1,5 @@
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/manifold_lib.h>
 
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
@@ -6,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 namespace liftoff
@@ -225,7 +227,8 @@ namespace liftoff
     const auto refuse = [](const bool wrong, const std::string &message) {
       AssertThrow(!wrong, ExcMessage(message));
     };
-    refuse(outline != PlateShape::rectangle && modelled_part != Symmetry::full,
+    // A mesh file models a symmetric part by its symmetry-plane curves.
+    refuse(outline == PlateShape::mesh_file && modelled_part != Symmetry::full,
            "Discretization/Symmetry = " + symmetry_name
              + " is not available on " + shape_setting() + " yet; use full.");
     if (outline == PlateShape::mesh_file)
@@ -351,6 +354,76 @@ namespace liftoff
         mesh->copy_to(triangulation);
         return;
       }
+    if (outline == PlateShape::rectangle)
+      {
+        create_rectangle(triangulation);
+        return;
+      }
+    if (modelled_part == Symmetry::full)
+      {
+        create_round_plate(triangulation);
+        return;
+      }
+    // The cells of the whole plate's coarse mesh on the modelled side of
+    // the planes (both generators put cell faces on x = 0 and y = 0): the
+    // cells, the manifolds and so every refined point are those of the
+    // whole plate, and a reduced model of a symmetric scene gives the whole
+    // plate's answer to round-off.
+    Triangulation<2> whole;
+    create_round_plate(whole);
+    std::set<Triangulation<2>::active_cell_iterator> beyond;
+    for (const auto &cell : whole.active_cell_iterators())
+      for (const unsigned int axis : symmetry_axes())
+        if (cell->center()[axis] < 0)
+          beyond.insert(cell);
+    GridGenerator::create_triangulation_with_removed_cells(whole,
+                                                           beyond,
+                                                           triangulation);
+    copy_round_plate_marks(whole, triangulation);
+  }
+
+
+  void
+  PlateGeometry::copy_round_plate_marks(const Triangulation<2> &whole,
+                                        Triangulation<2>       &part) const
+  {
+    // The removal keeps the cells but drops the boundary and manifold ids;
+    // they are found again on the whole plate's cells and faces at the same
+    // places. A face that was inside the whole plate lies on a plane.
+    const auto same_place = [](const auto &a, const auto &b) {
+      return a->center().distance(b->center()) < 1e-10 * a->diameter();
+    };
+    for (const auto &cell : part.active_cell_iterators())
+      for (const auto &original : whole.active_cell_iterators())
+        if (same_place(cell, original))
+          {
+            cell->set_manifold_id(original->manifold_id());
+            for (const auto &face : cell->face_iterators())
+              for (const auto &was : original->face_iterators())
+                if (same_place(face, was))
+                  {
+                    face->set_manifold_id(was->manifold_id());
+                    if (face->at_boundary())
+                      face->set_boundary_id(
+                        was->at_boundary() ? was->boundary_id()
+                        : std::abs(face->center()[0]) < 1e-12
+                          ? x_symmetry_plane
+                          : y_symmetry_plane);
+                  }
+          }
+    part.set_manifold(0, SphericalManifold<2>(Point<2>()));
+    if (outline == PlateShape::disc)
+      {
+        TransfiniteInterpolationManifold<2> inside;
+        inside.initialize(part);
+        part.set_manifold(1, inside);
+      }
+  }
+
+
+  void
+  PlateGeometry::create_round_plate(Triangulation<2> &triangulation) const
+  {
     if (outline == PlateShape::disc)
       {
         // The generator attaches a SphericalManifold to the boundary and a
@@ -376,8 +449,13 @@ namespace liftoff
           if (face->at_boundary())
             face->set_boundary_id(face->boundary_id() == 0 ? inner_boundary
                                                            : outer_boundary);
-        return;
       }
+  }
+
+
+  void
+  PlateGeometry::create_rectangle(Triangulation<2> &triangulation) const
+  {
     const BoundingBox<2> box = modelled_box();
     GridGenerator::subdivided_hyper_rectangle(triangulation,
                                               {n_cells_x, n_cells_y},
@@ -407,12 +485,15 @@ namespace liftoff
     // A mesh file's cells count as one row of them.
     if (outline == PlateShape::mesh_file)
       return axis == 0 ? mesh->n_cells() : 1;
-    // The 12 cells of hyper_ball_balanced count as 4 x 4 in estimates.
+    // The 12 cells of hyper_ball_balanced count as 4 x 4 in estimates, a
+    // half or quarter of them as 2 x 4 or 2 x 2.
+    const auto &axes   = symmetry_axes();
+    const bool  halved = std::count(axes.begin(), axes.end(), axis) > 0;
     if (outline == PlateShape::disc)
-      return 4;
+      return halved ? 2 : 4;
     // The ring's cells count as one row of them.
     if (outline == PlateShape::annulus)
-      return axis == 0 ? n_ring_cells() : 1;
+      return axis == 0 ? n_ring_cells() / n_symmetry_copies() : 1;
     return axis == 0 ? n_cells_x : n_cells_y;
   }
 
@@ -422,10 +503,13 @@ namespace liftoff
   {
     // About as many as make the cells square at the mean radius, the
     // choice hyper_shell makes for n_cells = 0, and at least 3 for a ring.
-    return std::max(3u,
-                    static_cast<unsigned int>(
-                      std::ceil(numbers::PI * (radius + inner_radius)
-                                / (radius - inner_radius))));
+    const unsigned int n = std::max(3u,
+                                    static_cast<unsigned int>(std::ceil(
+                                      numbers::PI * (radius + inner_radius)
+                                      / (radius - inner_radius))));
+    // hyper_shell's first vertex lies on the x axis, so faces lie on both
+    // axes when n is a multiple of 4.
+    return modelled_part == Symmetry::full ? n : 4 * ((n + 3) / 4);
   }
 
 
@@ -591,10 +675,12 @@ namespace liftoff
   bool
   PlateGeometry::is_on_modelled_part(const Point<2> &p) const
   {
-    // The other shapes are always modelled in full (check_shape_choices).
-    if (outline != PlateShape::rectangle)
-      return is_on_plate(p);
-    return modelled_box().point_inside(p, 1e-12);
+    if (outline == PlateShape::rectangle)
+      return modelled_box().point_inside(p, 1e-12);
+    for (const unsigned int axis : symmetry_axes())
+      if (p[axis] < -1e-12 * radius)
+        return false;
+    return is_on_plate(p);
   }
 
 

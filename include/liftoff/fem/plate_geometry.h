@@ -40,7 +40,8 @@ namespace liftoff
   };
 
   /// Which part of the plate is meshed. The scene always describes the full
-  /// plate; symmetry planes are x = 0 (half and quarter) and y = 0 (quarter).
+  /// plate; symmetry planes are x = 0 (half and quarter) and y = 0 (quarter),
+  /// on every shape.
   enum class Symmetry
   {
     full,
@@ -169,9 +170,21 @@ namespace liftoff
     /// mesh file, each tag once.
     void
     parse_mesh_tags(const std::string &text);
-    /// Cells of the coarse ring GridGenerator::hyper_shell makes.
+    /// Cells of the coarse ring GridGenerator::hyper_shell makes: a
+    /// multiple of 4 (2) on a quarter (half) model, so that the planes
+    /// x = 0 and y = 0 run along cell faces.
     unsigned int
     n_ring_cells() const;
+    void
+    create_rectangle(Triangulation<2> &triangulation) const;
+    /// The whole disc or annulus.
+    void
+    create_round_plate(Triangulation<2> &triangulation) const;
+    /// The boundary and manifold ids of `whole` on the cells of `part`
+    /// (cut from it), the planes' ids on the cut, and the manifolds.
+    void
+    copy_round_plate_marks(const Triangulation<2> &whole,
+                           Triangulation<2>       &part) const;
 
     PlateShape                      outline       = PlateShape::rectangle;
     double                          radius        = 0.5;
