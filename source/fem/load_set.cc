@@ -291,6 +291,15 @@ namespace liftoff
                             "As Size of a Patch load, for patch wheels.");
         });
     }
+
+    /// The plate as messages about loads off it name it.
+    std::string
+    plate_named(const PlateGeometry &geometry)
+    {
+      return geometry.shape() == PlateShape::rectangle
+               ? std::string("the plate [-1/2, 1/2] x [-mu/2, mu/2]")
+               : geometry.plate_description();
+    }
   } // namespace
 
 
@@ -340,11 +349,50 @@ namespace liftoff
 
 
   bool
-  LoadSet::Load::touches(const BoundingBox<2> &plate, const double tau) const
+  LoadSet::Load::touches(const PlateGeometry &geometry, const double tau) const
   {
     const Point<2> p = position_at(tau);
     if (kind == Kind::point)
-      return plate.point_inside(p, 1e-12);
+      return geometry.is_on_plate(p);
+    const BoundingBox<2> plate = geometry.plate_box();
+    if (geometry.shape() != PlateShape::rectangle)
+      {
+        // Other outlines are asked point by point.
+        std::vector<Point<2>> samples;
+        if (kind == Kind::line)
+          {
+            const auto line = line_at(plate, tau);
+            for (unsigned int k = 0; k <= 64; ++k)
+              samples.push_back(line.start
+                                + k / 64.0 * (line.end - line.start));
+            return std::any_of(samples.begin(),
+                               samples.end(),
+                               [&](const Point<2> &x) {
+                                 return geometry.is_on_plate(x);
+                               });
+          }
+        // A pressure's box or a patch about its centre.
+        const BoundingBox<2> box =
+          kind == Kind::pressure ? region_of(*this, plate) : BoundingBox<2>();
+        const Point<2> centre = kind == Kind::pressure ? box.center() : p;
+        const std::array<double, 2> sides = {
+          {kind == Kind::pressure ? box.side_length(0) : size[0],
+           kind == Kind::pressure ? box.side_length(1) : size[1]}};
+        for (unsigned int i = 0; i <= 16; ++i)
+          for (unsigned int j = 0; j <= 16; ++j)
+            {
+              const Tensor<1, 2> offset(
+                {(i / 16.0 - 0.5) * sides[0], (j / 16.0 - 0.5) * sides[1]});
+              if (kind != Kind::patch || shape != Shape::disc
+                  || offset.norm() <= sides[0] / 2)
+                samples.push_back(centre + offset);
+            }
+        return std::any_of(samples.begin(),
+                           samples.end(),
+                           [&](const Point<2> &x) {
+                             return geometry.is_on_plate(x);
+                           });
+      }
     if (kind == Kind::line)
       return PatchIntegrator::length_inside(line_at(plate, tau), plate) > 0;
     // Some area on the plate: the nearest point of the plate lies within
@@ -723,7 +771,7 @@ namespace liftoff
   std::vector<double>
   LoadSet::moving_load_positions(const double tau) const
   {
-    const BoundingBox<2> plate = discretization->geometry().plate_box();
+    const PlateGeometry &geometry = discretization->geometry();
     std::vector<double>  values;
     for (const Track &track : tracks)
       {
@@ -732,7 +780,7 @@ namespace liftoff
         const Point<2> p     = first.position_at(tau) - first.offset;
         unsigned int   on    = 0;
         for (const unsigned int k : track.members)
-          on += loads[k].touches(plate, tau);
+          on += loads[k].touches(geometry, tau);
         values.insert(values.end(), {p[0], p[1], double(on)});
       }
     return values;
@@ -742,7 +790,7 @@ namespace liftoff
   void
   LoadSet::require_path_on_plate(const Load                &load,
                                  const std::vector<double> &times,
-                                 const BoundingBox<2>      &plate) const
+                                 const PlateGeometry       &geometry) const
   {
     // The loads on this path: one, or a vehicle's wheels, of which one on
     // the plate is enough.
@@ -756,15 +804,16 @@ namespace liftoff
                                + "tau = " + time_text(tau) + "."));
         for (const Load &other : loads)
           touches =
-            touches || (other.path == load.path && other.touches(plate, tau));
+            touches
+            || (other.path == load.path && other.touches(geometry, tau));
       }
     AssertThrow(touches,
                 ExcMessage(load.path_owner + "/Path = <"
                            + abbreviated(load.path_expression)
                            + "> keeps the load off the plate at every step "
                              "time from tau = 0 to the End time: it would "
-                             "carry nothing. Move the path onto the plate "
-                             "[-1/2, 1/2] x [-mu/2, mu/2]."));
+                             "carry nothing. Move the path onto "
+                           + plate_named(geometry) + "."));
   }
 
 
@@ -778,7 +827,7 @@ namespace liftoff
       load.name + "/Region = <" + abbreviated(load.region)
       + "> must be 'whole plate' or 'x_min, x_max, y_min, y_max' with "
         "x_min < x_max, y_min < y_max, inside the plate [-1/2, 1/2] x [-mu/2, "
-        "mu/2].";
+        "mu/2] (on other shapes: inside the outline's bounding box).";
     const std::vector<double> v = numbers_or_refuse(load.region, message);
     AssertThrow(v.size() == 4, ExcMessage(message));
     AssertThrow(v[0] < v[1] && v[2] < v[3], ExcMessage(message));
@@ -800,10 +849,7 @@ namespace liftoff
     std::vector<double> times(n_steps + 1);
     for (unsigned int k = 0; k <= n_steps; ++k)
       times[k] = k * time_step;
-    if (disc.geometry().shape() != PlateShape::rectangle)
-      require_on_outline(disc.geometry());
-    else
-      require_on_plate(times, disc.geometry().plate_box());
+    require_on_plate(times, disc.geometry());
     if (disc.geometry().symmetry() == Symmetry::full)
       return;
     check_symmetry(times, disc);
@@ -811,84 +857,57 @@ namespace liftoff
 
 
   void
-  LoadSet::require_on_outline(const PlateGeometry &geometry) const
+  LoadSet::require_on_plate(const std::vector<double> &times,
+                            const PlateGeometry       &geometry) const
   {
-    // Paths are checked against a box so far: refused, not half checked.
+    const BoundingBox<2> plate = geometry.plate_box();
     for (const auto &load : loads)
       {
-        AssertThrow(load.path == nullptr,
-                    ExcMessage(load.name
-                               + " moves along a path, which is not "
-                                 "available on "
-                               + geometry.shape_setting()
-                               + " yet; use fixed loads."));
-        AssertThrow(load.kind != Kind::line || load.segment,
+        AssertThrow(geometry.shape() == PlateShape::rectangle
+                      || load.kind != Kind::line || load.segment,
                     ExcMessage(load.name
                                + " acts along an edge of the rectangle, "
                                  "which "
                                + geometry.shape_setting()
-                               + " does not have; use a Pressure on a "
-                                 "ring."));
-        // Lines are clipped by cells that are axis-aligned rectangles.
-        AssertThrow(load.kind != Kind::line,
-                    ExcMessage(load.name + "/Segment: line loads are not "
-                               + "available on " + geometry.shape_setting()
-                               + " yet; use a narrow Pressure."));
-        // Clipping a box at a cell's edges needs the rectangle's
-        // axis-aligned cells (PatchIntegrator); a cell the box cuts would
-        // stop the run. (Patch loads have a path, refused above.)
-        AssertThrow(load.kind != Kind::pressure || load.region == "whole plate",
-                    ExcMessage(load.name + "/Region = <"
-                               + abbreviated(load.region)
-                               + "> is a box, which is not available on "
-                               + geometry.shape_setting()
-                               + " yet; use a Pressure on the whole plate "
-                                 "whose Intensity is 0 off the box."));
-        if (load.kind == Kind::point)
-          AssertThrow(geometry.is_on_plate(load.position),
-                      ExcMessage(load.name + "/Position = "
-                                 + std::to_string(load.position[0]) + ", "
-                                 + std::to_string(load.position[1])
-                                 + " lies outside "
-                                 + geometry.plate_description() + "."));
-      }
-  }
-
-
-  void
-  LoadSet::require_on_plate(const std::vector<double> &times,
-                            const BoundingBox<2>      &plate) const
-  {
-    for (const auto &load : loads)
-      {
+                               + " does not have; use a Segment."));
         // Once per path (a vehicle's wheels share theirs).
         const auto first_on_path =
           std::find_if(loads.begin(), loads.end(), [&](const Load &other) {
             return other.path == load.path;
           });
         if (load.path != nullptr && &*first_on_path == &load)
-          require_path_on_plate(load, times, plate);
+          require_path_on_plate(load, times, geometry);
         else if (load.kind == Kind::point)
           {
-            AssertThrow(plate.point_inside(load.position, 1e-12),
+            AssertThrow(geometry.is_on_plate(load.position),
                         ExcMessage(load.name + "/Position = "
                                    + std::to_string(load.position[0]) + ", "
                                    + std::to_string(load.position[1])
-                                   + " lies outside the plate [-1/2, 1/2] x "
-                                     "[-mu/2, mu/2]."));
+                                   + " lies outside " + plate_named(geometry)
+                                   + "."));
           }
         else if (load.kind == Kind::line && load.segment)
           {
             for (const Point<2> &end : *load.segment)
-              AssertThrow(plate.point_inside(end, 1e-12),
+              AssertThrow(geometry.is_on_plate(end),
                           ExcMessage(load.name + "/Segment: its end "
                                      + std::to_string(end[0]) + ", "
-                                     + std::to_string(end[1])
-                                     + " lies outside the plate [-1/2, 1/2] "
-                                       "x [-mu/2, mu/2]."));
+                                     + std::to_string(end[1]) + " lies outside "
+                                     + plate_named(geometry) + "."));
           }
         if (load.kind == Kind::pressure)
           region_of(load, plate);
+        // A box within a round or meshed outline's bounding box may still
+        // miss the plate.
+        if (load.kind == Kind::pressure
+            && geometry.shape() != PlateShape::rectangle)
+          {
+            AssertThrow(load.touches(geometry, 0),
+                        ExcMessage(load.name + "/Region = <"
+                                   + abbreviated(load.region) + "> lies off "
+                                   + plate_named(geometry)
+                                   + ": it would carry nothing."));
+          }
       }
   }
 
@@ -1168,10 +1187,13 @@ namespace liftoff
         add_point_load(load, tau, vector);
         break;
       case Kind::pressure:
-        PatchIntegrator(*discretization)
-          .add(density,
-               region_of(load, discretization->geometry().plate_box()),
-               vector);
+        if (load.region == "whole plate")
+          PatchIntegrator(*discretization).add(density, vector);
+        else
+          PatchIntegrator(*discretization)
+            .add(density,
+                 region_of(load, discretization->geometry().plate_box()),
+                 vector);
         break;
       case Kind::line:
         PatchIntegrator(*discretization)
@@ -1283,14 +1305,12 @@ namespace liftoff
     body_force->set_time(tau);
     // Functions may implement only vector_value(); ask for all components.
     Vector<double> values(3);
-    // The whole plate as the patch: every cell lies inside it.
     PatchIntegrator(*discretization)
       .add(
         [&](const Point<2> &x) {
           body_force->vector_value(x, values);
           return std::array<double, 3>{{values[0], values[1], values[2]}};
         },
-        discretization->geometry().plate_box(),
         load_vector);
   }
 

@@ -1,6 +1,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/fem/patch_integrator.h>
+#include <liftoff/fem/plate_geometry.h>
 
 #include <algorithm>
 #include <sstream>
@@ -9,39 +10,50 @@ namespace liftoff
 {
   namespace
   {
-    /// The cell as the rectangle [x0, x1] x [y0, y1] with its vertices in
-    /// deal.II's order, (x0, y0), (x1, y0), (x0, y1), (x1, y1), so that
-    /// the reference coordinates are (x - x0) / (x1 - x0) and
-    /// (y - y0) / (y1 - y0). Every cell is such a rectangle today
-    /// (subdivided_hyper_rectangle and its refinements). Plates of other
-    /// shapes (non-rectangular cells) extend the clipping here: patch ∩ cell
-    /// is then a polygon in reference coordinates, to be cut into
-    /// triangles and quadrilaterals with rules of their own.
-    BoundingBox<2>
-    rectangle_of(const DoFHandler<2>::active_cell_iterator &cell)
+    /// True for a cell that is the rectangle [x0, x1] x [y0, y1] with its
+    /// vertices in deal.II's order, (x0, y0), (x1, y0), (x0, y1), (x1, y1),
+    /// so that the reference coordinates are (x - x0) / (x1 - x0) and
+    /// (y - y0) / (y1 - y0): every cell of the rectangle. Such cells are
+    /// clipped here by hand, exactly; others by CellClipping.
+    bool
+    is_axis_aligned_rectangle(const DoFHandler<2>::active_cell_iterator &cell)
     {
       const BoundingBox<2> box       = cell->bounding_box();
       const Point<2>      &lo        = box.get_boundary_points().first;
       const Point<2>      &hi        = box.get_boundary_points().second;
       const double         tolerance = 1e-12 * cell->diameter();
-      const bool           is_axis_aligned_rectangle =
-        (cell->vertex(0) - lo).norm() <= tolerance
-        && (cell->vertex(1) - Point<2>(hi[0], lo[1])).norm() <= tolerance
-        && (cell->vertex(2) - Point<2>(lo[0], hi[1])).norm() <= tolerance
-        && (cell->vertex(3) - hi).norm() <= tolerance;
-      if (!is_axis_aligned_rectangle)
-        {
-          std::ostringstream message;
-          message << "PatchIntegrator: the cell with vertices "
-                  << cell->vertex(0) << "; " << cell->vertex(1) << "; "
-                  << cell->vertex(2) << "; " << cell->vertex(3)
-                  << " is not an axis-aligned rectangle in lexicographic "
-                     "order, which the clipping of pressure patches needs "
-                     "(extend rectangle_of() in source/patch_integrator.cc "
-                     "for other cells).";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
+      return (cell->vertex(0) - lo).norm() <= tolerance
+             && (cell->vertex(1) - Point<2>(hi[0], lo[1])).norm() <= tolerance
+             && (cell->vertex(2) - Point<2>(lo[0], hi[1])).norm() <= tolerance
+             && (cell->vertex(3) - hi).norm() <= tolerance;
+    }
+
+    /// A box that holds the cell: its vertices' box, and for other cells
+    /// than rectangles a quarter of its diameter around, more than a curved
+    /// edge bulges beyond its vertices on any mesh of a disc or annulus.
+    BoundingBox<2>
+    reach_of(const DoFHandler<2>::active_cell_iterator &cell,
+             const bool                                 rectangle)
+    {
+      BoundingBox<2> box = cell->bounding_box();
+      if (!rectangle)
+        box.extend(0.25 * cell->diameter());
       return box;
+    }
+
+    /// The share of a line along face `f` that the cell carries: half of one
+    /// between two cells (the other half from the cell behind it) or on a
+    /// symmetry plane (the modelled part's share), all of one on an edge.
+    double
+    share_along_face(const DoFHandler<2>::active_cell_iterator &cell,
+                     const unsigned int                         f,
+                     const PlateGeometry                       &geometry)
+    {
+      const auto face = cell->face(f);
+      return (!face->at_boundary()
+              || geometry.is_symmetry_plane(face->boundary_id()))
+               ? 0.5
+               : 1.0;
     }
 
     /// A 1d rule on [0, 1] moved onto [a, b].
@@ -118,6 +130,7 @@ namespace liftoff
       , cell_rule(discretization.dof_handler.get_fe().degree + 2)
       , line_rule(discretization.dof_handler.get_fe().degree + 2)
       , arc_rule(n_arc_points > 0 ? n_arc_points : default_arc_points)
+      , column_rule(2 * arc_rule.size())
   {}
 
 
@@ -126,7 +139,7 @@ namespace liftoff
     const DoFHandler<2>::active_cell_iterator &cell,
     const BoundingBox<2>                      &patch) const
   {
-    const BoundingBox<2> rectangle = rectangle_of(cell);
+    const BoundingBox<2> rectangle = cell->bounding_box();
     Point<2>             lo, hi;
     for (unsigned int d = 0; d < 2; ++d)
       {
@@ -148,10 +161,11 @@ namespace liftoff
   PatchIntegrator::cover(const DoFHandler<2>::active_cell_iterator &cell,
                          const BoundingBox<2>                      &patch) const
   {
-    // Cells inside the patch or away from it are decided on their
-    // bounding boxes, whatever their shape: only the cut cells need
-    // the clipping (and rectangles).
-    const BoundingBox<2> box       = cell->bounding_box();
+    // Cells inside the patch or away from it are decided on boxes that
+    // hold them, whatever their shape: only the cut cells need the
+    // clipping.
+    const bool           rectangle = is_axis_aligned_rectangle(cell);
+    const BoundingBox<2> box       = reach_of(cell, rectangle);
     const double         tolerance = 1e-12 * cell->diameter();
     bool                 inside = true, away = false;
     for (unsigned int d = 0; d < 2; ++d)
@@ -166,13 +180,28 @@ namespace liftoff
     if (away)
       return result;
     result.whole = inside;
-    if (!inside)
+    if (inside)
+      return result;
+    if (!rectangle)
       {
-        const BoundingBox<2> part = reference_part(cell, patch);
-        result.part               = Quadrature<2>(
-          on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
-          on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
+        // The box as four half-planes; its corners and centre are seeds.
+        std::vector<CellClipping::Boundary> sides(4);
+        std::vector<Point<2>>               seeds = {patch.center()};
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            sides[2 * d].normal[d]     = 1;
+            sides[2 * d].offset        = patch.lower_bound(d);
+            sides[2 * d + 1].normal[d] = -1;
+            sides[2 * d + 1].offset    = -patch.upper_bound(d);
+          }
+        for (unsigned int v = 0; v < 4; ++v)
+          seeds.push_back(patch.vertex(v));
+        return clipped_cover(cell, sides, seeds);
       }
+    const BoundingBox<2> part = reference_part(cell, patch);
+    result.part               = Quadrature<2>(
+      on_interval(line_rule, part.lower_bound(0), part.upper_bound(0)),
+      on_interval(line_rule, part.lower_bound(1), part.upper_bound(1)));
     return result;
   }
 
@@ -181,27 +210,53 @@ namespace liftoff
   PatchIntegrator::cover(const DoFHandler<2>::active_cell_iterator &cell,
                          const Disc                                &disc) const
   {
-    const BoundingBox<2> box = cell->bounding_box();
-    const Point<2>      &c   = disc.centre;
-    const double         r   = disc.radius;
+    const bool           rectangle = is_axis_aligned_rectangle(cell);
+    const BoundingBox<2> box       = reach_of(cell, rectangle);
+    const Point<2>      &c         = disc.centre;
+    const double         r         = disc.radius;
     Cover                result;
     // Most cells are away from the disc: its bounding box tells them.
     for (unsigned int d = 0; d < 2; ++d)
       if (box.lower_bound(d) >= c[d] + r || box.upper_bound(d) <= c[d] - r)
         return result;
     bool inside = true;
-    for (const unsigned int v : cell->vertex_indices())
-      inside = inside && (cell->vertex(v) - c).norm() <= r;
+    for (unsigned int v = 0; v < 4; ++v)
+      inside =
+        inside
+        && ((rectangle ? cell->vertex(v) : box.vertex(v)) - c).norm() <= r;
     result.whole = inside;
     if (inside)
       return result;
+    if (!rectangle)
+      {
+        CellClipping::Boundary circle;
+        circle.is_circle            = true;
+        circle.centre               = c;
+        circle.radius               = r;
+        std::vector<Point<2>> seeds = {c};
+        for (unsigned int d = 0; d < 2; ++d)
+          for (const double sign : {-1.0, 1.0})
+            seeds.push_back(c + sign * r * Point<2>::unit_vector(d));
+        return clipped_cover(cell, {circle}, seeds);
+      }
 
-    const BoundingBox<2> cell_box = rectangle_of(cell);
-    const double x0 = cell_box.lower_bound(0), x1 = cell_box.upper_bound(0),
-                 y0 = cell_box.lower_bound(1), y1 = cell_box.upper_bound(1);
+    result.part = slices_of(cell, disc);
+    return result;
+  }
+
+
+  Quadrature<2>
+  PatchIntegrator::slices_of(const DoFHandler<2>::active_cell_iterator &cell,
+                             const Disc &disc) const
+  {
+    const BoundingBox<2> box = cell->bounding_box();
+    const Point<2>      &c   = disc.centre;
+    const double         r   = disc.radius;
+    const double         x0 = box.lower_bound(0), x1 = box.upper_bound(0),
+                 y0 = box.lower_bound(1), y1 = box.upper_bound(1);
     const double a = std::max(x0, c[0] - r), b = std::min(x1, c[0] + r);
     if (b - a <= 1e-12 * cell->diameter())
-      return result;
+      return Quadrature<2>();
     const std::vector<double> ends      = slice_ends(a, b, y0, y1, c, r);
     const auto                arc_angle = [&](const double x) {
       return std::asin(std::clamp((x - c[0]) / r, -1.0, 1.0));
@@ -233,8 +288,18 @@ namespace liftoff
               }
           }
       }
-    result.part = Quadrature<2>(points, weights);
-    return result;
+    return Quadrature<2>(points, weights);
+  }
+
+
+  PatchIntegrator::Cover
+  PatchIntegrator::clipped_cover(
+    const DoFHandler<2>::active_cell_iterator &cell,
+    const std::vector<CellClipping::Boundary> &region,
+    const std::vector<Point<2>>               &seeds) const
+  {
+    return CellClipping(discretization.mapping(), cell)
+      .inside(region, seeds, line_rule, column_rule);
   }
 
 
@@ -245,27 +310,26 @@ namespace liftoff
     Cover          result;
     const Point<2> a = segment.start, b = segment.end;
     const double   tolerance = 1e-12 * cell->diameter();
-    const auto [t0, t1]      = clipped(a, b, cell->bounding_box(), tolerance);
-    const double length      = (b - a).norm();
+    const bool     rectangle = is_axis_aligned_rectangle(cell);
+    const auto [t0, t1] = clipped(a, b, reach_of(cell, rectangle), tolerance);
+    const double length = (b - a).norm();
     if ((t1 - t0) * length <= tolerance)
       return result;
+    if (!rectangle)
+      return cover_along(cell, segment);
 
     // A piece along a face is met again from the cell behind it, unless
-    // the face is a plate edge; on a symmetry plane half is the modelled
-    // part's share.
-    const BoundingBox<2> box    = rectangle_of(cell);
+    // the face is a plate edge.
+    const BoundingBox<2> box    = cell->bounding_box();
     double               weight = 1;
     for (unsigned int d = 0; d < 2; ++d)
       for (unsigned int side = 0; side < 2; ++side)
         {
           const double at = side == 0 ? box.lower_bound(d) : box.upper_bound(d);
-          if (std::abs(a[d] - at) > tolerance
-              || std::abs(b[d] - at) > tolerance)
-            continue;
-          const auto face = cell->face(2 * d + side);
-          if (!face->at_boundary()
-              || face->boundary_id() >= PlateGeometry::x_symmetry_plane)
-            weight = 0.5;
+          if (std::abs(a[d] - at) <= tolerance
+              && std::abs(b[d] - at) <= tolerance)
+            weight =
+              share_along_face(cell, 2 * d + side, discretization.geometry());
         }
     const Quadrature<1>   in_t = on_interval(line_rule, t0, t1);
     std::vector<Point<2>> points;
@@ -282,6 +346,51 @@ namespace liftoff
         // FEValues multiplies by the cell's area; ds = |b - a| dt.
         weights.push_back(weight * in_t.weight(q) * length / box.volume());
       }
+    result.part = Quadrature<2>(points, weights);
+    return result;
+  }
+
+
+  PatchIntegrator::Cover
+  PatchIntegrator::cover_along(const DoFHandler<2>::active_cell_iterator &cell,
+                               const Segment &segment) const
+  {
+    const Point<2>        a = segment.start, b = segment.end;
+    const double          length = (b - a).norm();
+    const CellClipping    clipping(discretization.mapping(), cell);
+    std::vector<Point<2>> points;
+    std::vector<double>   weights;
+    for (const auto &[t0, t1] : clipping.pieces(a, b))
+      {
+        // A piece along a (straight) face: its ends and middle on it.
+        double weight = 1;
+        for (unsigned int d = 0; d < 2; ++d)
+          for (unsigned int side = 0; side < 2; ++side)
+            {
+              bool on_face = true;
+              for (const double t : {t0, 0.5 * (t0 + t1), t1})
+                on_face =
+                  on_face
+                  && std::abs(clipping.to_unit(a + t * (b - a))[d] - side)
+                       <= 1e-10;
+              if (on_face)
+                weight = share_along_face(cell,
+                                          2 * d + side,
+                                          discretization.geometry());
+            }
+        const Quadrature<1> in_t = on_interval(line_rule, t0, t1);
+        for (unsigned int q = 0; q < in_t.size(); ++q)
+          {
+            Point<2> unit = clipping.to_unit(a + in_t.point(q)[0] * (b - a));
+            for (unsigned int d = 0; d < 2; ++d)
+              unit[d] = std::clamp(unit[d], 0.0, 1.0);
+            points.push_back(unit);
+            // FEValues multiplies by |det J|; ds = |b - a| dt.
+            weights.push_back(weight * in_t.weight(q) * length
+                              / clipping.jacobian_determinant(unit));
+          }
+      }
+    Cover result;
     result.part = Quadrature<2>(points, weights);
     return result;
   }
@@ -384,6 +493,20 @@ namespace liftoff
                        LA::MPI::Vector      &vector) const
   {
     add_covered(density, covering(patch), vector);
+  }
+
+
+  void
+  PatchIntegrator::add(const Density &density, LA::MPI::Vector &vector) const
+  {
+    add_covered(
+      density,
+      [](const DoFHandler<2>::active_cell_iterator &) {
+        Cover whole;
+        whole.whole = true;
+        return whole;
+      },
+      vector);
   }
 
 

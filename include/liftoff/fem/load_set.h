@@ -176,9 +176,11 @@ namespace liftoff
       /// Where the point load or the patch's centre is at tau.
       Point<2>
       position_at(const double tau) const;
-      /// Whether some of it acts on `plate` at tau.
+      /// Whether some of it acts on the plate at tau: exactly on the
+      /// rectangle; on other shapes a load is on the plate if one of 17 x
+      /// 17 points over its area (65 along a line) is.
       bool
-      touches(const BoundingBox<2> &plate, const double tau) const;
+      touches(const PlateGeometry &geometry, const double tau) const;
       /// Where a line load lies at tau (the plate's box places an Edge) ...
       PatchIntegrator::Segment
       line_at(const BoundingBox<2> &plate, const double tau) const;
@@ -236,11 +238,7 @@ namespace liftoff
     /// model. Collective.
     void
     require_on_plate(const std::vector<double> &times,
-                     const BoundingBox<2>      &plate) const;
-    /// check_against() on a shape other than the rectangle: fixed loads
-    /// only, point loads on the plate.
-    void
-    require_on_outline(const PlateGeometry &geometry) const;
+                     const PlateGeometry       &geometry) const;
     void
     check_symmetry(const std::vector<double> &times,
                    const Discretization      &disc) const;
@@ -250,7 +248,7 @@ namespace liftoff
     void
     require_path_on_plate(const Load                &load,
                           const std::vector<double> &times,
-                          const BoundingBox<2>      &plate) const;
+                          const PlateGeometry       &geometry) const;
 
     /// b_k(tau) = magnitude * int f(x, y, tau) phi_i (without h).
     void
