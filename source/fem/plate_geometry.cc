@@ -1,6 +1,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/manifold_lib.h>
 
+#include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/fem/plate_geometry.h>
@@ -104,10 +105,11 @@ namespace liftoff
                       Patterns::Anything(),
                       "The gmsh mesh of Shape = mesh file: a .msh file (msh "
                       "2.2 or 4.1, ASCII) of quadrilaterals in the plane "
-                      "z = 0, its coordinates in the length unit L (also in "
-                      "a scene with Units/System = SI: scale the mesh by "
-                      "1/L). A relative path is relative "
-                      "to the folder of the scene file that names it, as "
+                      "z = 0, its coordinates in the length unit L, or in "
+                      "metres in a scene with Units/System = SI (whose "
+                      "Units/Length must then be the mesh's length along "
+                      "x). A relative path is relative to the folder of the "
+                      "scene file that names it, as "
                       "include lines are (to the working directory for a "
                       "scene on standard input).");
     prm.declare_entry("Symmetry",
@@ -172,8 +174,9 @@ namespace liftoff
 
 
   void
-  PlateGeometry::parse_parameters(ParameterHandler   &prm,
-                                  const MindlinPlate &plate)
+  PlateGeometry::parse_parameters(ParameterHandler    &prm,
+                                  const MindlinPlate  &plate,
+                                  const PhysicalUnits &units)
   {
     aspect_ratio = plate.aspect_ratio;
     prm.enter_subsection("Discretization");
@@ -181,7 +184,12 @@ namespace liftoff
     radius  = prm.get_double("Radius");
     mesh.reset();
     if (outline == PlateShape::mesh_file)
-      mesh = std::make_shared<const MeshFile>(prm.get("Mesh file"));
+      {
+        const double length = units.scale(PhysicalUnits::Quantity::length);
+        mesh = std::make_shared<const MeshFile>(prm.get("Mesh file"), length);
+        if (units.is_physical())
+          check_mesh_length(prm.get("Mesh file"), length);
+      }
     else
       AssertThrow(prm.get("Mesh file").empty(),
                   ExcMessage("Discretization/Mesh file is read only with "
@@ -280,6 +288,26 @@ namespace liftoff
                              + shape_setting()
                              + " holds the physical curves of its file by "
                                "Boundary conditions/Mesh tags."));
+  }
+
+
+  void
+  PlateGeometry::check_mesh_length(const std::string &file_name,
+                                   const double       length) const
+  {
+    // Units/Length is the plate along x on every shape that has no radius:
+    // the groups (Gamma = k L^4 / D, t0, ...) are those of the rectangle
+    // of the same length, and a mesh drawn in another unit (in L, in mm)
+    // is caught rather than run as a plate of another size.
+    const double along_x = mesh->bounding_box().side_length(0);
+    AssertThrow(std::abs(along_x - 1.0) <= 1e-6,
+                ExcMessage("Units/Length = " + format_number(length)
+                           + " m is not the length along x of the mesh of "
+                           + file_name + ", " + format_number(along_x * length)
+                           + " m: with Units/System = SI the mesh file is in "
+                             "metres and Units/Length is its length along x "
+                             "(set Units/Length = "
+                           + format_number(along_x * length) + ")."));
   }
 
 
