@@ -1,5 +1,9 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/reference_cell.h>
 
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
@@ -544,14 +548,22 @@ namespace liftoff
   double
   PlateGeometry::largest_cell_aspect_ratio() const
   {
-    // hyper_ball_balanced's and hyper_shell's cells are close to square;
-    // a mesh file's are not estimated.
-    if (outline != PlateShape::rectangle)
-      return 1.0;
     // Refinement splits cells in both directions: the coarse cells' ratio.
-    const double width  = 1.0 / n_cells_x;
-    const double height = aspect_ratio / n_cells_y;
-    return std::max(width / height, height / width);
+    if (outline == PlateShape::rectangle)
+      {
+        const double width  = 1.0 / n_cells_x;
+        const double height = aspect_ratio / n_cells_y;
+        return std::max(width / height, height / width);
+      }
+    // The other coarse meshes, the same on every rank: the largest ratio of
+    // the singular values of the bilinear map's Jacobian at a cell's 2 x 2
+    // Gauss points (deal.II's measure, width / height on a rectangle).
+    Triangulation<2> coarse;
+    create_coarse_mesh(coarse);
+    return GridTools::compute_maximum_aspect_ratio(
+      ReferenceCells::Quadrilateral.get_default_linear_mapping<2, 2>(),
+      coarse,
+      QGauss<2>(2));
   }
 
 

@@ -102,7 +102,10 @@ namespace liftoff
     /// Cells of the coarse mesh along x (axis 0) or y (axis 1).
     unsigned int
     coarse_cells_along(const unsigned int axis) const;
-    /// The larger of width / height and height / width of the cells.
+    /// The largest aspect ratio of the coarse cells (refinement keeps it):
+    /// the larger of width / height and height / width of the rectangle's
+    /// cells; on the other shapes the largest ratio of the singular values
+    /// of a cell's Jacobian at its 2 x 2 Gauss points.
     double
     largest_cell_aspect_ratio() const;
 
