@@ -471,8 +471,8 @@ namespace liftoff
                         documentation);
       physical.push_back("Units/" + name);
     };
-    declare("Length", "0", "SI: L, the plate along x [m].");
-    declare("Width", "0", "SI: the plate along y [m]; 0: as long as Length.");
+    declare("Length", "0", "SI: L, the plate (a mesh file) along x [m].");
+    declare("Width", "0", "SI: the rectangle along y [m]; 0: = Length.");
     declare("Thickness", "0", "SI: H [m].");
     declare("Young's modulus",
             "0",
@@ -575,6 +575,16 @@ namespace liftoff
                 ExcMessage("Units/Subgrade modulus must be given (> 0, in "
                            "N/m^3) in a scene with Units/System = SI and a "
                            "Foundation/Model other than none."));
+    // A mesh file's outline is its own; its length along x is checked
+    // against Units/Length where the mesh is read (PlateGeometry).
+    scene.enter_subsection("Discretization");
+    const bool is_mesh_file = scene.get("Shape") == "mesh file";
+    scene.leave_subsection();
+    AssertThrow(!is_mesh_file || !is_set(scene, "Units/Width"),
+                ExcMessage("Units/Width is the width of the rectangle; with "
+                           "Discretization/Shape = mesh file the mesh, in "
+                           "metres, is the plate and Units/Length its length "
+                           "along x: leave Units/Width out."));
   }
 
 

@@ -37,10 +37,11 @@ namespace liftoff
 
 
   void
-  Discretization::parse_parameters(ParameterHandler   &prm,
-                                   const MindlinPlate &plate)
+  Discretization::parse_parameters(ParameterHandler    &prm,
+                                   const MindlinPlate  &plate,
+                                   const PhysicalUnits &units)
   {
-    plate_geometry.parse_parameters(prm, plate);
+    plate_geometry.parse_parameters(prm, plate, units);
     plate_element.parse_parameters(prm);
     if (plate_geometry.has_curved_boundary())
       cell_mapping =

@@ -29,7 +29,7 @@ namespace liftoff
   } // namespace
 
 
-  MeshFile::MeshFile(const std::string &file_name)
+  MeshFile::MeshFile(const std::string &file_name, const double length_scale)
       : name(file_name)
       , coarse(std::make_unique<Triangulation<2>>())
   {
@@ -48,6 +48,14 @@ namespace liftoff
                 ExcMessage(parameter + ": the file cannot be read."));
     read_physical_names(text.str());
     read_cells(text.str());
+    // Divided rather than multiplied by 1 / L, as the SI scene's other
+    // lengths are, so that a mesh in metres lands where they do.
+    if (length_scale != 1.0)
+      GridTools::transform(
+        [length_scale](const Point<2> &p) {
+          return Point<2>(p[0] / length_scale, p[1] / length_scale);
+        },
+        *coarse);
   }
 
 

@@ -1,6 +1,11 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/reference_cell.h>
 
+#include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/fem/plate_geometry.h>
@@ -104,10 +109,11 @@ namespace liftoff
                       Patterns::Anything(),
                       "The gmsh mesh of Shape = mesh file: a .msh file (msh "
                       "2.2 or 4.1, ASCII) of quadrilaterals in the plane "
-                      "z = 0, its coordinates in the length unit L (also in "
-                      "a scene with Units/System = SI: scale the mesh by "
-                      "1/L). A relative path is relative "
-                      "to the folder of the scene file that names it, as "
+                      "z = 0, its coordinates in the length unit L, or in "
+                      "metres in a scene with Units/System = SI (whose "
+                      "Units/Length must then be the mesh's length along "
+                      "x). A relative path is relative to the folder of the "
+                      "scene file that names it, as "
                       "include lines are (to the working directory for a "
                       "scene on standard input).");
     prm.declare_entry("Symmetry",
@@ -172,8 +178,9 @@ namespace liftoff
 
 
   void
-  PlateGeometry::parse_parameters(ParameterHandler   &prm,
-                                  const MindlinPlate &plate)
+  PlateGeometry::parse_parameters(ParameterHandler    &prm,
+                                  const MindlinPlate  &plate,
+                                  const PhysicalUnits &units)
   {
     aspect_ratio = plate.aspect_ratio;
     prm.enter_subsection("Discretization");
@@ -181,7 +188,12 @@ namespace liftoff
     radius  = prm.get_double("Radius");
     mesh.reset();
     if (outline == PlateShape::mesh_file)
-      mesh = std::make_shared<const MeshFile>(prm.get("Mesh file"));
+      {
+        const double length = units.scale(PhysicalUnits::Quantity::length);
+        mesh = std::make_shared<const MeshFile>(prm.get("Mesh file"), length);
+        if (units.is_physical())
+          check_mesh_length(prm.get("Mesh file"), length);
+      }
     else
       AssertThrow(prm.get("Mesh file").empty(),
                   ExcMessage("Discretization/Mesh file is read only with "
@@ -280,6 +292,26 @@ namespace liftoff
                              + shape_setting()
                              + " holds the physical curves of its file by "
                                "Boundary conditions/Mesh tags."));
+  }
+
+
+  void
+  PlateGeometry::check_mesh_length(const std::string &file_name,
+                                   const double       length) const
+  {
+    // Units/Length is the plate along x on every shape that has no radius:
+    // the groups (Gamma = k L^4 / D, t0, ...) are those of the rectangle
+    // of the same length, and a mesh drawn in another unit (in L, in mm)
+    // is caught rather than run as a plate of another size.
+    const double along_x = mesh->bounding_box().side_length(0);
+    AssertThrow(std::abs(along_x - 1.0) <= 1e-6,
+                ExcMessage("Units/Length = " + format_number(length)
+                           + " m is not the length along x of the mesh of "
+                           + file_name + ", " + format_number(along_x * length)
+                           + " m: with Units/System = SI the mesh file is in "
+                             "metres and Units/Length is its length along x "
+                             "(set Units/Length = "
+                           + format_number(along_x * length) + ")."));
   }
 
 
@@ -516,14 +548,22 @@ namespace liftoff
   double
   PlateGeometry::largest_cell_aspect_ratio() const
   {
-    // hyper_ball_balanced's and hyper_shell's cells are close to square;
-    // a mesh file's are not estimated.
-    if (outline != PlateShape::rectangle)
-      return 1.0;
     // Refinement splits cells in both directions: the coarse cells' ratio.
-    const double width  = 1.0 / n_cells_x;
-    const double height = aspect_ratio / n_cells_y;
-    return std::max(width / height, height / width);
+    if (outline == PlateShape::rectangle)
+      {
+        const double width  = 1.0 / n_cells_x;
+        const double height = aspect_ratio / n_cells_y;
+        return std::max(width / height, height / width);
+      }
+    // The other coarse meshes, the same on every rank: the largest ratio of
+    // the singular values of the bilinear map's Jacobian at a cell's 2 x 2
+    // Gauss points (deal.II's measure, width / height on a rectangle).
+    Triangulation<2> coarse;
+    create_coarse_mesh(coarse);
+    return GridTools::compute_maximum_aspect_ratio(
+      ReferenceCells::Quadrilateral.get_default_linear_mapping<2, 2>(),
+      coarse,
+      QGauss<2>(2));
   }
 
 

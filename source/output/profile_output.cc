@@ -90,14 +90,20 @@ namespace liftoff
   }
 
 
-  Point<2>
-  ProfileOutput::point_at(const unsigned int i, const double tau) const
+  std::vector<Point<2>>
+  ProfileOutput::line_at(const double tau) const
   {
+    std::vector<Point<2>> at(n_points);
+    for (unsigned int i = 0; i < n_points; ++i)
+      at[i] = point(i);
     if (rider.empty())
-      return point(i);
+      return at;
+    // The followed load's centre, asked of the loads once for the line.
     const std::vector<double> xy = load_positions(tau);
-    return point(i)
-           + Tensor<1, 2>({xy[3 * rider_index], xy[3 * rider_index + 1]});
+    const Tensor<1, 2> centre({xy[3 * rider_index], xy[3 * rider_index + 1]});
+    for (Point<2> &p : at)
+      p = p + centre;
+    return at;
   }
 
 
@@ -216,10 +222,12 @@ namespace liftoff
     const PlateGeometry &geometry = discretization->geometry();
     points.clear();
     located.clear();
+    line = line_at(tau);
     for (unsigned int i = 0; i < n_points; ++i)
-      if (const Point<2> p = point_at(i, tau); geometry.is_on_plate(p))
+      if (geometry.is_on_plate(line[i]))
         {
-          points.emplace_back(*discretization, geometry.to_modelled_part(p));
+          points.emplace_back(*discretization,
+                              geometry.to_modelled_part(line[i]));
           located.push_back(i);
         }
   }
@@ -253,7 +261,7 @@ namespace liftoff
     for (unsigned int k = 0; k < located.size(); ++k)
       {
         const unsigned int i = located[k];
-        const Point<2>     p = point_at(i, tau);
+        const Point<2>    &p = line[i];
         out << units.scale(Quantity::time) * tau << ','
             << length * point(i).distance(start) << ',' << length * p[0] << ','
             << length * p[1] << ',' << units.scale(Quantity::deflection) * w[k]

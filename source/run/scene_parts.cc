@@ -43,14 +43,15 @@ namespace liftoff
 
 
   void
-  SceneParts::parse_parameters(ParameterHandler &prm)
+  SceneParts::parse_parameters(ParameterHandler    &prm,
+                               const PhysicalUnits &units)
   {
     prm.enter_subsection("Analysis");
     analysis = analyses.parse(prm.get("Type"), "Analysis/Type");
     prm.leave_subsection();
     initial_conditions.parse_parameters(prm);
     plate.parse_parameters(prm);
-    discretization.parse_parameters(prm, plate);
+    discretization.parse_parameters(prm, plate, units);
     mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);

@@ -71,7 +71,7 @@ namespace liftoff
     units.parse_parameters(prm);
     ParameterHandler &scene = units.solver_scene(prm, declare_parameters);
     units.explain_errors_of([&]() {
-      parts.parse_parameters(scene);
+      parts.parse_parameters(scene, units);
       scene.enter_subsection("Output");
       output_directory = scene.get("Directory");
       time_history.parse_parameters(scene, parts.plate);

@@ -315,13 +315,16 @@ namespace liftoff
                        + "), about which it can turn: a mechanism that "
                          "only the foundation's contact holds; clamp that "
                          "edge or support another");
-    const double elongation =
-      discretization.geometry().largest_cell_aspect_ratio();
+    const PlateGeometry &geometry   = discretization.geometry();
+    const double         elongation = geometry.largest_cell_aspect_ratio();
     if (elongation > 100)
-      causes.push_back("the cells are " + format_number(elongation)
-                       + " times longer than wide (Plate/Aspect ratio against "
-                         "Discretization/Cells along x and y); use cells "
-                         "closer to square");
+      causes.push_back(
+        "the cells are " + format_number(elongation)
+        + " times longer than wide ("
+        + (geometry.shape() == PlateShape::mesh_file
+             ? "the cells of Discretization/Mesh file"
+             : "Plate/Aspect ratio against Discretization/Cells along x and y")
+        + "); use cells closer to square");
     if (causes.empty())
       causes.push_back(
         "a very small Foundation/Stiffness under a thin plate (Plate/Thickness "

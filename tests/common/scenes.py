@@ -69,20 +69,64 @@ def prm_text(sections, indent=""):
     return "\n".join(lines)
 
 
-def static_disc_scene(radius, refinements, plate, foundation, point_load,
+def merged(base, changes):
+    """A copy of BASE (nested dicts, as prm_text takes them) with CHANGES
+    put in: subsections merge, an entry of CHANGES replaces BASE's."""
+    result = dict(base)
+    for name, value in changes.items():
+        if isinstance(value, dict) and isinstance(result.get(name), dict):
+            result[name] = merged(result[name], value)
+        else:
+            result[name] = value
+    return result
+
+
+def scene_text(*parts):
+    """The scene of a verification test as prm text: PARTS (nested dicts)
+    merged one after the other over what these scenes share, Q2 elements
+    and no VTU files."""
+    sections = {"Discretization": {"Polynomial degree": 2},
+                "Output": {"VTU interval": 0}}
+    for part in parts:
+        sections = merged(sections, part)
+    return prm_text(sections) + "\n"
+
+
+def point_load(k, x, y, magnitude):
+    """Loads/Point load K at (x, y), as a part of scene_text."""
+    return {"Loads": {f"Point load {k}": {"Magnitude": magnitude,
+                                          "Position": f"{x}, {y}"}}}
+
+
+def pressure(magnitude, intensity=None):
+    """Loads/Pressure 1 on the whole plate, with its Intensity if given."""
+    entries = {"Region": "whole plate", "Magnitude": magnitude}
+    if intensity is not None:
+        entries["Intensity"] = intensity
+    return {"Loads": {"Pressure 1": entries}}
+
+
+def pressed_plate(thickness_ratio, poisson_ratio, magnitude):
+    """A static plate without foundation under a uniform pressure, no
+    energies written: the closed-form tests of round plates."""
+    return merged({"Analysis": {"Type": "static"},
+                   "Plate": {"Thickness ratio": thickness_ratio,
+                             "Poisson ratio": poisson_ratio},
+                   "Foundation": {"Model": "none"},
+                   "Output": {"Write energies": "false"}},
+                  pressure(magnitude))
+
+
+def static_disc_scene(radius, refinements, plate, foundation, load,
                       output):
     """A static scene of a Q2 disc under one point load (magnitude, x) on
     the x axis; PLATE, FOUNDATION and OUTPUT are entries of those
     subsections (no VTU files, no energies unless OUTPUT says so)."""
-    magnitude, x = point_load
-    return prm_text({
-        "Analysis": {"Type": "static"},
-        "Plate": plate,
-        "Foundation": foundation,
-        "Discretization": {"Shape": "disc", "Radius": radius,
-                           "Global refinements": refinements,
-                           "Polynomial degree": 2},
-        "Loads": {"Point load 1": {"Magnitude": magnitude,
-                                   "Position": f"{x}, 0"}},
-        "Output": {"VTU interval": 0, "Write energies": "false", **output},
-    }) + "\n"
+    magnitude, x = load
+    return scene_text(
+        {"Analysis": {"Type": "static"}, "Plate": plate,
+         "Foundation": foundation,
+         "Discretization": {"Shape": "disc", "Radius": radius,
+                            "Global refinements": refinements},
+         "Output": {"Write energies": "false"}},
+        point_load(1, x, 0, magnitude), {"Output": output})

@@ -39,21 +39,14 @@ import numpy as np
 from scipy.integrate import quad, solve_bvp
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
-from scenes import read_history, run_scene_or_fail  # noqa: E402
+from checks import check, finish  # noqa: E402
+from scenes import (pressed_plate, read_history,  # noqa: E402
+                    run_scene_or_fail, scene_text)
 
 LIFTOFF = sys.argv[1]
 AI, A, Q, NU, CHI, DELTA = 0.2, 0.5, 1.0, 0.3, 5.0 / 6.0, 0.05
 S = 6 * CHI * (1 - NU) / DELTA**2
 RADII = (AI, (AI + A) / 2, A)
-
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
-
 
 def radial(r, y):
     """y = (w, beta, r m_r, r Q)."""
@@ -105,40 +98,13 @@ def kirchhoff_simply_supported_rim(r):
 
 
 def scene(inner, outer, refinements):
-    return f"""
-subsection Analysis
-  set Type = static
-end
-subsection Plate
-  set Thickness ratio = {DELTA}
-  set Poisson ratio = {NU}
-end
-subsection Foundation
-  set Model = none
-end
-subsection Discretization
-  set Shape = annulus
-  set Radius = {A}
-  set Inner radius = {AI}
-  set Global refinements = {refinements}
-  set Polynomial degree = 2
-end
-subsection Boundary conditions
-  set Inner = {inner}
-  set Outer = {outer}
-end
-subsection Loads
-  subsection Pressure 1
-    set Region = whole plate
-    set Magnitude = {Q}
-  end
-end
-subsection Output
-  set VTU interval = 0
-  set Write energies = false
-  set Probe points = {'; '.join(f'{r}, 0' for r in RADII)}
-end
-"""
+    return scene_text(
+        pressed_plate(DELTA, NU, Q),
+        {"Discretization": {"Shape": "annulus", "Radius": A,
+                            "Inner radius": AI,
+                            "Global refinements": refinements},
+         "Boundary conditions": {"Inner": inner, "Outer": outer},
+         "Output": {"Probe points": "; ".join(f"{r}, 0" for r in RADII)}})
 
 
 def run(work, name, text):
@@ -171,4 +137,4 @@ with tempfile.TemporaryDirectory() as work:
         check(errors[-1] < 1e-4, f"Inner {inner}, Outer {outer}: error "
               f"{errors[-1]:.2e} < 1e-4 on 3 refinements")
 
-sys.exit(1 if failures else 0)
+finish()

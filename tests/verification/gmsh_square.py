@@ -13,7 +13,11 @@ by gmsh from square.geo) and made by GridGenerator (Shape = rectangle,
   - symmetry planes: the quarter [0, 1/2]^2 of tests/meshes/quarter.msh
     with its edges x = 0 and y = 0 held as symmetry planes and a quarter of
     the load, against the rectangle's Symmetry = quarter (probe columns
-    only: the rectangle reports its energies for the full plate).
+    only: the rectangle reports its energies for the full plate);
+  - in SI units: tests/meshes/slab_5x3m.msh, a 5 m x 3 m slab in metres
+    (Units/Length = 5, no Width), against the rectangle of Units/Length =
+    5 and Width = 3 on 10 x 6 cells, a 50 kN force dropped on it; the
+    columns are in metres, newtons and seconds.
 
 Every column is compared relative to its largest magnitude (balance_error,
 itself round-off, relative to the work); the limit is 1e-11. The meshes
@@ -32,77 +36,64 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
-from scenes import read_history, run_scene_or_fail  # noqa: E402
+from checks import check, finish  # noqa: E402
+from scenes import (point_load, pressure, read_history,  # noqa: E402
+                    run_scene_or_fail, scene_text)
 
 LIFTOFF = sys.argv[1]
 MESHES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
                       "meshes")
 LIMIT = 1e-11
-failures = 0
+def scene(shape, analysis, *extra):
+    """The scene on `shape` (entries of Discretization), with the EXTRA
+    parts of scene_text."""
+    return scene_text(
+        {"Analysis": {"Type": analysis},
+         "Plate": {"Thickness ratio": 0.05, "Poisson ratio": 0.3},
+         "Foundation": {"Model": "tensionless", "Stiffness": 100},
+         "Discretization": shape,
+         "Time integration": {"Time step": 2e-3, "End time": 0.04},
+         "Output": {"Probe points": "0.13, -0.07; 0, 0; 0.5, 0.5; "
+                                    "-0.5, 0.2; 0.3, -0.5"}},
+        point_load(1, 0.13, -0.07, 1), *extra)
 
 
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
+def mesh(name):
+    return {"Shape": "mesh file", "Mesh file": f"{MESHES}/{name}"}
 
 
-def scene(shape, analysis, extra=""):
-    """The scene on `shape` (the text of subsection Discretization)."""
-    return f"""
-subsection Analysis
-  set Type = {analysis}
-end
-subsection Plate
-  set Thickness ratio = 0.05
-  set Poisson ratio = 0.3
-end
-subsection Foundation
-  set Model = tensionless
-  set Stiffness = 100
-end
-subsection Discretization
-  set Polynomial degree = 2
-{shape}
-end
-subsection Loads
-  subsection Point load 1
-    set Position = 0.13, -0.07
-    set Magnitude = 1
-  end
-end
-subsection Time integration
-  set Time step = 2e-3
-  set End time = 0.04
-end
-subsection Output
-  set VTU interval = 0
-  set Probe points = 0.13, -0.07; 0, 0; 0.5, 0.5; -0.5, 0.2; 0.3, -0.5
-end
-{extra}"""
-
-
-MESH = f"  set Shape = mesh file\n  set Mesh file = {MESHES}/square.msh"
 # Down over most of the plate, up near the corner (1/2, 1/2), which
 # lifts off.
-PRESSURE = """
-subsection Loads
-  subsection Pressure 1
-    set Region = whole plate
-    set Magnitude = 1
-    set Intensity = if(x * y > 0.06, -3, 0.2)
-  end
-end
-"""
+PRESSURE = pressure(1, "if(x * y > 0.06, -3, 0.2)")
+
+
+def si_scene(shape, units=None):
+    """A concrete slab 5 m long in SI units on a tensionless bed, a 50 kN
+    force dropped off its centre; `shape` and `units` are entries of
+    Discretization and Units."""
+    return scene_text(
+        {"Units": {"System": "SI", "Length": 5, "Thickness": 0.25,
+                   "Young's modulus": 30e9, "Density": 2400, "Gravity": 0,
+                   "Subgrade modulus": 50e6, **(units or {})},
+         "Plate": {"Poisson ratio": 0.2},
+         "Foundation": {"Model": "tensionless"},
+         "Discretization": shape,
+         "Time integration": {"Time step": 2e-4, "End time": 4e-3},
+         "Output": {"Probe points": "0.65, -0.35; 0, 0; 2.5, 1.5; "
+                                    "-2.5, 0.5; 1.5, -1.5"}},
+        point_load(1, 0.65, -0.35, 5e4))
 
 
 def largest_difference(a, b, columns):
     """Largest difference of the columns relative to the column's largest
-    magnitude (balance_error, itself round-off, relative to the work)."""
+    magnitude (balance_error, itself round-off, relative to the work; both
+    named with their unit in an SI run)."""
+    work = next((c for c in a if c.split(" ")[0] == "work"), None)
     worst = 0.0
     for column in columns:
-        scale = max(np.max(np.abs(a["work" if column == "balance_error"
-                                    else column])), 1e-300)
+        scale = max(np.max(np.abs(
+            a[work if column.startswith("balance_error") else column])),
+            1e-300)
         worst = max(worst, np.max(np.abs(a[column] - b[column])) / scale)
     return worst
 
@@ -114,8 +105,9 @@ def compare(work, name, mesh_scene, rectangle_scene, probes_only=False):
                                                name + "_rectangle",
                                                rectangle_scene))
     same_columns = list(mesh) == list(rectangle)
-    check(same_columns and len(mesh["tau"]) == len(rectangle["tau"]),
-          f"{name}: the same columns and rows ({len(mesh['tau'])} rows)")
+    rows = len(next(iter(mesh.values())))  # of tau, or t [s] in SI
+    check(same_columns and rows == len(next(iter(rectangle.values()))),
+          f"{name}: the same columns and rows ({rows} rows)")
     columns = [c for c in rectangle if c.startswith("w(")] if probes_only \
         else list(rectangle)
     if not same_columns:
@@ -130,47 +122,30 @@ def compare(work, name, mesh_scene, rectangle_scene, probes_only=False):
 
 
 with tempfile.TemporaryDirectory() as work:
-    compare(work, "free_dynamic", scene(MESH, "dynamic"),
-            scene("", "dynamic"))
-    compare(work, "free_static", scene(MESH, "static", PRESSURE),
-            scene("", "static", PRESSURE))
-    held = """
-subsection Boundary conditions
-  set Mesh tags = West: clamped, 1: soft simply supported, \\
-                  East: hard simply supported
-end
-"""
-    held_rectangle = """
-subsection Boundary conditions
-  set Left = clamped
-  set Bottom = soft simply supported
-  set Right = hard simply supported
-end
-"""
-    compare(work, "held_static", scene(MESH, "static", PRESSURE + held),
-            scene("", "static", PRESSURE + held_rectangle))
-    quarter_mesh = f"""  set Shape = mesh file
-  set Mesh file = {MESHES}/quarter.msh"""
-    planes = """
-subsection Boundary conditions
-  set Mesh tags = Plane x: symmetry plane, Plane y: symmetry plane
-end
-"""
-    quarter_load = """
-subsection Loads
-  subsection Point load 1
-    set Position = 0, 0
-    set Magnitude = 0.25
-  end
-end
-subsection Output
-  set Probe points = 0, 0; 0.25, 0; 0.5, 0.5; 0.5, 0; 0.2, 0.3
-end
-"""
+    square = mesh("square.msh")
+    compare(work, "free_dynamic", scene(square, "dynamic"),
+            scene({}, "dynamic"))
+    compare(work, "free_static", scene(square, "static", PRESSURE),
+            scene({}, "static", PRESSURE))
+    held = {"Mesh tags": "West: clamped, 1: soft simply supported, "
+                         "East: hard simply supported"}
+    held_rectangle = {"Left": "clamped", "Bottom": "soft simply supported",
+                      "Right": "hard simply supported"}
+    compare(work, "held_static",
+            scene(square, "static", PRESSURE, {"Boundary conditions": held}),
+            scene({}, "static", PRESSURE,
+                  {"Boundary conditions": held_rectangle}))
+    compare(work, "si_metres", si_scene(mesh("slab_5x3m.msh")),
+            si_scene({"Cells along x": 10, "Cells along y": 6},
+                     {"Width": 3}))
+    planes = {"Boundary conditions": {
+        "Mesh tags": "Plane x: symmetry plane, Plane y: symmetry plane"}}
+    centre_probes = {"Output": {
+        "Probe points": "0, 0; 0.25, 0; 0.5, 0.5; 0.5, 0; 0.2, 0.3"}}
     compare(work, "symmetry_planes",
-            scene(quarter_mesh, "dynamic", planes + quarter_load),
-            scene("  set Symmetry = quarter", "dynamic",
-                  quarter_load.replace("0.25\n", "1\n")), probes_only=True)
+            scene(mesh("quarter.msh"), "dynamic", planes,
+                  point_load(1, 0, 0, 0.25), centre_probes),
+            scene({"Symmetry": "quarter"}, "dynamic",
+                  point_load(1, 0, 0, 1), centre_probes), probes_only=True)
 
-print(f"{failures} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

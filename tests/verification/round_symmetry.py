@@ -37,52 +37,34 @@ import os
 import sys
 import tempfile
 
-import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
-from scenes import read_history, run_scene_or_fail  # noqa: E402
+from scenes import (point_load, pressure,  # noqa: E402
+                    read_history, run_scene_or_fail, scene_text)
 
 LIFTOFF = None
 
 
-def scene(shape, symmetry, loads, boundary="", probes="0, 0"):
-    return f"""
-subsection Plate
-  set Thickness ratio = 0.05
-  set Poisson ratio = 0.2
-end
-subsection Foundation
-  set Model = tensionless
-  set Stiffness = 200
-end
-subsection Discretization
-  set Shape = {shape}
-  set Radius = 0.5
-  set Inner radius = 0.2
-  set Symmetry = {symmetry}
-  set Global refinements = 2
-  set Polynomial degree = 2
-end
-subsection Boundary conditions
-{boundary}
-end
-subsection Loads
-{loads}
-end
-subsection Time integration
-  set Time step = 2e-3
-  set End time = 0.04
-end
-subsection Output
-  set VTU interval = 0
-  set Probe points = {probes}
-  set Write foundation resultant = true
-end
-"""
+def scene(shape, symmetry, loads, boundary=None, probes="0, 0"):
+    """A short dynamic run of a disc or an annulus (R = 0.5, R_i = 0.2) on a
+    tensionless bed under LOADS (parts of scene_text), its edges held as
+    BOUNDARY (entries of Boundary conditions) says."""
+    return scene_text(
+        {"Plate": {"Thickness ratio": 0.05, "Poisson ratio": 0.2},
+         "Foundation": {"Model": "tensionless", "Stiffness": 200},
+         "Discretization": {"Shape": shape, "Radius": 0.5,
+                            "Inner radius": 0.2, "Symmetry": symmetry,
+                            "Global refinements": 2},
+         "Boundary conditions": boundary or {},
+         "Time integration": {"Time step": 2e-3, "End time": 0.04},
+         "Output": {"Probe points": probes,
+                    "Write foundation resultant": "true"}},
+        *loads)
 
 
-def compare(work, name, shape, symmetries, loads, boundary="", probes=""):
+def compare(work, name, shape, symmetries, loads, boundary=None,
+            probes=""):
     runs = {}
     for symmetry in ("full",) + symmetries:
         folder = run_scene_or_fail(
@@ -127,39 +109,25 @@ def compare(work, name, shape, symmetries, loads, boundary="", probes=""):
 OWN_COLUMNS = {"cells", "dofs", "resultant_x", "resultant_y",
                "max_pressure_x", "max_pressure_y", "balance_error"}
 
-RING = """
-  subsection Pressure 1
-    set Region = whole plate
-    set Magnitude = 200
-    set Intensity = if(x^2 + y^2 >= 0.16, if(x^2 + y^2 <= 0.2025, 1, 0), 0)
-  end
-"""
-
-
-def point(k, x, y, magnitude):
-    return f"""
-  subsection Point load {k}
-    set Magnitude = {magnitude}
-    set Position = {x}, {y}
-  end
-"""
+RING_INTENSITY = "if(x^2 + y^2 >= 0.16, if(x^2 + y^2 <= 0.2025, 1, 0), 0)"
+RING = pressure(200, RING_INTENSITY)
 
 
 if __name__ == "__main__":
     LIFTOFF = sys.argv[1]
     with tempfile.TemporaryDirectory() as work:
         compare(work, "disc, ring pressure and central load", "disc",
-                ("half", "quarter"), RING + point(1, 0, 0, 5),
+                ("half", "quarter"), [RING, point_load(1, 0, 0, 5)],
                 probes="0, 0; 0.25, 0; 0, -0.3; 0.3, 0.3; -0.45, 0.1")
-        four = "".join(point(k + 1, x, y, 3) for k, (x, y) in enumerate(
-            [(0.35, 0), (-0.35, 0), (0, 0.35), (0, -0.35)]))
+        four = [point_load(k + 1, x, y, 3) for k, (x, y) in enumerate(
+            [(0.35, 0), (-0.35, 0), (0, 0.35), (0, -0.35)])]
         compare(work, "annulus, four loads, hole supported", "annulus",
-                ("half", "quarter"), RING + four,
-                boundary="  set Inner = soft simply supported",
+                ("half", "quarter"), [RING, *four],
+                boundary={"Inner": "soft simply supported"},
                 probes="0.35, 0; 0.3, 0.3; -0.45, 0.1; 0.25, 0")
         compare(work, "disc, loads symmetric about x = 0 only", "disc",
                 ("half",),
-                RING.replace("set Intensity = ", "set Intensity = (1 + 2*y)*")
-                + point(1, 0, 0.2, 4),
+                [pressure(200, "(1 + 2*y)*" + RING_INTENSITY),
+                 point_load(1, 0, 0.2, 4)],
                 probes="0, 0.2; 0.2, -0.3; -0.3, 0.1")
     finish()

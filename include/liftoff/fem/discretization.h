@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <liftoff/base/linear_algebra.h>
+#include <liftoff/base/physical_units.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/plate_element.h>
 #include <liftoff/fem/plate_geometry.h>
@@ -39,8 +40,12 @@ namespace liftoff
     /// refinements`.
     static void
     declare_parameters(ParameterHandler &prm);
+    /// `units` are the scene's as written: a mesh file is in its length
+    /// unit (PlateGeometry::parse_parameters()).
     void
-    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
+    parse_parameters(ParameterHandler    &prm,
+                     const MindlinPlate  &plate,
+                     const PhysicalUnits &units = PhysicalUnits());
 
     /// The plate's shape, supports and symmetry.
     const PlateGeometry &

@@ -24,11 +24,15 @@ namespace liftoff
   class MeshFile
   {
   public:
-    /// Read `file_name`. Refused in one line that names Discretization/Mesh
-    /// file and the cause: no file, a file GridIn cannot read as a planar
-    /// mesh (a 3D mesh among them), cells that are not quadrilaterals, one
-    /// physical name given to two curves.
-    explicit MeshFile(const std::string &file_name);
+    /// Read `file_name`, whose coordinates are in a unit of which the
+    /// solver's length unit L is `length_scale` (1 in a dimensionless
+    /// scene, L in metres in an SI one): they are divided by it. Refused in
+    /// one line that names Discretization/Mesh file and the cause: no file,
+    /// a file GridIn cannot read as a planar mesh (a 3D mesh among them),
+    /// cells that are not quadrilaterals, one physical name given to two
+    /// curves.
+    explicit MeshFile(const std::string &file_name,
+                      const double       length_scale = 1.0);
 
     /// The coarse mesh, with the boundary ids of the file, into an empty
     /// triangulation (a distributed one too).

@@ -5,6 +5,7 @@
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/grid/tria.h>
 
+#include <liftoff/base/physical_units.h>
 #include <liftoff/fem/mesh_file.h>
 #include <liftoff/fem/mindlin_plate.h>
 
@@ -86,8 +87,12 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     /// The plate's aspect ratio is taken here, so that every check of a
     /// point against the plate made while parsing sees the real plate.
+    /// A mesh file is in the length unit of the scene as written (`units`):
+    /// L in a dimensionless scene, metres in an SI one.
     void
-    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
+    parse_parameters(ParameterHandler    &prm,
+                     const MindlinPlate  &plate,
+                     const PhysicalUnits &units);
 
     /// The `Cells along x` x `Cells along y` cells of the meshed part with
     /// the boundary ids of edges and symmetry planes, in an empty
@@ -97,7 +102,10 @@ namespace liftoff
     /// Cells of the coarse mesh along x (axis 0) or y (axis 1).
     unsigned int
     coarse_cells_along(const unsigned int axis) const;
-    /// The larger of width / height and height / width of the cells.
+    /// The largest aspect ratio of the coarse cells (refinement keeps it):
+    /// the larger of width / height and height / width of the rectangle's
+    /// cells; on the other shapes the largest ratio of the singular values
+    /// of a cell's Jacobian at its 2 x 2 Gauss points.
     double
     largest_cell_aspect_ratio() const;
 
@@ -171,6 +179,10 @@ namespace liftoff
     check_circle_conditions() const;
     void
     check_mesh_file_choices() const;
+    /// An SI scene's Units/Length (`length`, in m) against the length of
+    /// the mesh in metres along x, which it must be.
+    void
+    check_mesh_length(const std::string &file_name, const double length) const;
     /// The conditions of `Boundary conditions/Mesh tags` on the tags of the
     /// mesh file, each tag once.
     void

@@ -105,13 +105,14 @@ namespace liftoff
     /// load for a riding profile) ...
     Point<2>
     point(const unsigned int i) const;
-    /// ... and where it is on the plate at tau.
-    Point<2>
-    point_at(const unsigned int i, const double tau) const;
+    /// ... and where the line's points are on the plate at tau.
+    std::vector<Point<2>>
+    line_at(const double tau) const;
     /// The functionals of the points on the plate at tau (all of them for
-    /// a standing line), and which points they are.
+    /// a standing line), which points they are and where the line is.
     void
                               locate_points(const double tau);
     std::vector<unsigned int> located;
+    std::vector<Point<2>>     line;
   };
 } // namespace liftoff

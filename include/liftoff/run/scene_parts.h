@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 #include <liftoff/contact/active_set_iteration.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
@@ -41,9 +42,11 @@ namespace liftoff
     /// checkpoint's).
     static void
     declare_parameters(ParameterHandler &prm);
-    /// Read them; throws with a message naming the offending parameter.
+    /// Read them from the dimensionless scene `prm` (the solver's), whose
+    /// scene as written is in `units`; throws with a message naming the
+    /// offending parameter.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const PhysicalUnits &units);
     /// The checks across parts that need no mesh.
     void
     check() const;
