@@ -16,7 +16,14 @@ round-off, the probes at the turned points:
   - the half x >= 0 turned (tests/meshes/half_rotated.msh), its cut a
     symmetry plane along no axis (psi . n = 0) and the other edges hard
     simply supported, against the rectangle's Symmetry = half (probe
-    columns only: the rectangle reports energies for the whole plate).
+    columns only: the rectangle reports energies for the whole plate);
+  - a re-entrant corner: prm/l-shaped-slab.msh with its tag Re-entrant
+    (the edges y = 0 and x = 0 of the notch, one tag along neither axis)
+    hard simply supported, against the same mesh with the two edges
+    tagged apart (tests/meshes/l_shaped_split.msh), each holding its
+    component: where the edges meet, met by faces of two cells, both
+    hold the whole rotation (deal.II's flux constraints alone would
+    average the two normals there and hold one projection).
 
 The turned meshes' nodes are gmsh's (the transfinite lines place them to
 about 1e-13), so the answers differ by round-off of that size; the limit
@@ -197,6 +204,16 @@ def main(work, condition):
             scene("  set Symmetry = half\n  set Cells along x = 5", "dynamic",
                   edges("hard simply supported", rectangle_edges),
                   on_plane, half_probes), probes_only=True)
+    l_probes = [(0.13, -0.07), (-0.2, 0.3), (0.3, -0.2), (-0.05, -0.05)]
+    compare(work, "re_entrant_corner",
+            scene(f"  set Shape = mesh file\n  set Mesh file = {MESHES}/"
+                  "../../prm/l-shaped-slab.msh", "static",
+                  tags(condition, ["Re-entrant"]) + ", Wall: clamped",
+                  LOAD, l_probes, pressure=pressure(LIFTING)),
+            scene(mesh("l_shaped_split.msh"), "static",
+                  tags("hard simply supported", ["ReX", "ReY"])
+                  + ", Wall: clamped", LOAD, l_probes,
+                  pressure=pressure(LIFTING)))
 
 
 with tempfile.TemporaryDirectory() as work:
