@@ -215,7 +215,7 @@ namespace liftoff
   void
   Discretization::hold_projected_rotations()
   {
-    const PlateGeometry::HeldRotations held = plate_geometry.held_rotations();
+    const HeldRotations held = plate_geometry.held_rotations();
     if (held.projected.empty())
       return;
     // After the hanging nodes and the components held directly (clamped
@@ -243,8 +243,7 @@ namespace liftoff
 
 
   void
-  Discretization::hold_rotation_at_corners(
-    const PlateGeometry::HeldRotations &held)
+  Discretization::hold_rotation_at_corners(const HeldRotations &held)
   {
     // At a vertex where two held straight faces meet at an angle, w = 0
     // along both sides (or two symmetry planes) holds two independent

@@ -544,7 +544,7 @@ namespace liftoff
   }
 
 
-  PlateGeometry::HeldRotations
+  HeldRotations
   PlateGeometry::held_rotations() const
   {
     HeldRotations held;

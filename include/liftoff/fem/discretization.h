@@ -142,7 +142,7 @@ namespace liftoff
     void
     hold_projected_rotations();
     void
-    hold_rotation_at_corners(const PlateGeometry::HeldRotations &held);
+    hold_rotation_at_corners(const HeldRotations &held);
     /// The pattern of the couplings `coupling` allows, with the
     /// constraints condensed, of the rows this rank owns and those it
     /// writes to.

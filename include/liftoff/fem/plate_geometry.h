@@ -50,6 +50,19 @@ namespace liftoff
     quarter
   };
 
+  /// The boundaries that hold the rotation along them, psi . t = 0 (hard
+  /// simple support), and across them, psi . n = 0 (symmetry planes);
+  /// `projected` those of them along no axis (circles, oblique curves of a
+  /// mesh file), where that rotation is no component of psi and
+  /// PlateGeometry::held_components() holds w alone: Discretization
+  /// constrains psi there by normal-tangential constraints.
+  struct HeldRotations
+  {
+    std::set<types::boundary_id> along;
+    std::set<types::boundary_id> across;
+    std::set<types::boundary_id> projected;
+  };
+
   /**
    * The shape of the plate and how it is held: the rectangle
    * [-1/2, 1/2] x [-mu/2, mu/2], a disc, an annulus or the mesh of a gmsh
@@ -106,18 +119,7 @@ namespace liftoff
     /// that holds any: the supported edges, then the symmetry planes.
     std::vector<std::pair<types::boundary_id, ComponentMask>>
     held_components() const;
-    /// The boundaries that hold the rotation along them, psi . t = 0 (hard
-    /// simple support), and across them, psi . n = 0 (symmetry planes);
-    /// `projected` those of them along no axis (circles, oblique curves of
-    /// a mesh file), where that rotation is no component of psi and
-    /// held_components() holds w alone: Discretization constrains psi
-    /// there by normal-tangential constraints.
-    struct HeldRotations
-    {
-      std::set<types::boundary_id> along;
-      std::set<types::boundary_id> across;
-      std::set<types::boundary_id> projected;
-    };
+    /// The boundaries that hold a rotation, and those along no axis.
     HeldRotations
     held_rotations() const;
     /// True when some edge restrains w, so the stiffness alone is regular
