@@ -10,7 +10,10 @@
 
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
+#include <map>
+#include <set>
 
 namespace liftoff
 {
@@ -198,6 +201,7 @@ namespace liftoff
     for (const auto &[id, mask] : plate_geometry.held_components())
       VectorTools::interpolate_boundary_values(
         mapping(), dof_handler, id, zero, constraints, mask);
+    hold_projected_rotations();
     constraints.close();
     // Collective: what depends on it (PlateMatrices::quadratic_form's
     // set_zero) communicates, and a rank without hanging nodes of its own
@@ -206,6 +210,73 @@ namespace liftoff
     for (const auto &line : constraints.get_lines())
       here = here || !line.entries.empty();
     has_hanging = Utilities::MPI::logical_or(here, mpi_communicator);
+  }
+
+
+  void
+  Discretization::hold_projected_rotations()
+  {
+    const HeldRotations held = plate_geometry.held_rotations();
+    if (held.projected.empty())
+      return;
+    // After the hanging nodes and the components held directly (clamped
+    // neighbours, symmetry planes along an axis): deal.II's functions leave
+    // a constrained dof as it is. Where a circle meets a symmetry plane at a
+    // right angle both hold the same component, so nothing is lost.
+    if (!plate_geometry.has_curved_boundary())
+      hold_rotation_at_corners(held);
+    std::set<types::boundary_id> along, across;
+    for (const types::boundary_id id : held.projected)
+      (held.along.count(id) > 0 ? along : across).insert(id);
+    // The normals are the manifolds' at the support points (a circle's
+    // exact radius, a straight face's normal), the same on every rank that
+    // sees the face. deal.II's name for psi x n = 0 (psi . t = 0) is
+    // compute_normal_flux_constraints, for psi . n = 0 it is
+    // compute_no_normal_flux_constraints.
+    const unsigned int psi_x = 1;
+    if (!along.empty())
+      VectorTools::compute_normal_flux_constraints(
+        dof_handler, psi_x, along, constraints, mapping());
+    if (!across.empty())
+      VectorTools::compute_no_normal_flux_constraints(
+        dof_handler, psi_x, across, constraints, mapping());
+  }
+
+
+  void
+  Discretization::hold_rotation_at_corners(const HeldRotations &held)
+  {
+    // At a vertex where two held straight faces meet at an angle, w = 0
+    // along both sides (or two symmetry planes) holds two independent
+    // projections of psi: the whole rotation, as at a rectangle's corner.
+    // deal.II's flux constraints would average the normals of faces of two
+    // cells there (a re-entrant corner) and hold one projection only.
+    std::map<std::array<types::global_dof_index, 2>, std::vector<Tensor<1, 2>>>
+      held_directions;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto &face : cell->face_iterators())
+          {
+            if (!face->at_boundary())
+              continue;
+            const bool along = held.along.count(face->boundary_id()) > 0;
+            if (!along && held.across.count(face->boundary_id()) == 0)
+              continue;
+            Tensor<1, 2> direction = face->vertex(1) - face->vertex(0);
+            direction /= direction.norm();
+            if (!along)
+              direction = cross_product_2d(direction);
+            for (const unsigned int v : face->vertex_indices())
+              held_directions[{face->vertex_dof_index(v, 1),
+                               face->vertex_dof_index(v, 2)}]
+                .push_back(direction);
+          }
+    for (const auto &[psi, directions] : held_directions)
+      for (const Tensor<1, 2> &direction : directions)
+        if (std::abs(cross_product_2d(direction) * directions[0]) > 1e-10)
+          for (const types::global_dof_index dof : psi)
+            if (constraints.can_store_line(dof))
+              constraints.add_line(dof);
   }
 
 

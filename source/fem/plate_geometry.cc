@@ -41,22 +41,29 @@ namespace liftoff
                                           {"annulus", PlateShape::annulus},
                                           {"mesh file", PlateShape::mesh_file}};
 
-    // The components of (w, psi_x, psi_y) an edge held by `condition`
-    // holds; the rotation along an edge is psi_y on an edge along y
-    // (x = const), psi_x on an edge along x.
+    // The components of (w, psi_x, psi_y) a boundary held by `condition`
+    // holds, `direction` being 0 for a boundary along x, 1 along y and
+    // another value for one along neither (a circle, an oblique curve). With
+    // psi the slopes (gamma = grad w - psi), hard simple support holds the
+    // rotation along the boundary, psi . t (w = 0 along it makes its
+    // derivative along it vanish): psi_y on x = const, psi_x on y = const.
+    // A symmetry plane holds the rotation across it, psi . n. Along neither
+    // axis these are no components: held_rotations() names those
+    // boundaries for normal-tangential constraints.
     ComponentMask
-    held_on_edge(const EdgeCondition condition, const bool along_y)
+    held_on_edge(const EdgeCondition condition, const unsigned int direction)
     {
+      const bool along_x = direction == 0, along_y = direction == 1;
       switch (condition)
         {
         case EdgeCondition::soft_simply_supported:
           return ComponentMask(std::vector<bool>{true, false, false});
         case EdgeCondition::hard_simply_supported:
-          return ComponentMask(std::vector<bool>{true, !along_y, along_y});
+          return ComponentMask(std::vector<bool>{true, along_x, along_y});
         case EdgeCondition::clamped:
           return ComponentMask(std::vector<bool>{true, true, true});
         case EdgeCondition::symmetry_plane:
-          return ComponentMask(std::vector<bool>{false, along_y, !along_y});
+          return ComponentMask(std::vector<bool>{false, along_y, along_x});
         default:
           return ComponentMask(std::vector<bool>{false, false, false});
         }
@@ -152,13 +159,12 @@ namespace liftoff
                       "free",
                       edge_conditions.pattern(),
                       "Condition on the circle of a disc or the outer circle "
-                      "of an annulus: free, soft simply supported or "
-                      "clamped.");
+                      "of an annulus.");
     prm.declare_entry("Inner",
                       "free",
                       edge_conditions.pattern(),
                       "Condition on the hole's circle of an annulus (Shape "
-                      "= annulus): free, soft simply supported or clamped.");
+                      "= annulus).");
     prm.declare_entry(
       "Mesh tags",
       "",
@@ -171,8 +177,9 @@ namespace liftoff
       "Conditions on the edges of a mesh file (Discretization/Shape = mesh "
       "file), as 'tag: condition, tag: condition', a tag being the name or "
       "the number of a physical curve of the file (e.g. 'Wall: clamped, "
-      "Hole: free'). Tags not listed are free. Hard simply supported and "
-      "symmetry plane need the tag's faces all parallel to x or all to y.");
+      "Hole: free'). Tags not listed are free. Where a held curve turns "
+      "(two faces meet at an angle), hard simple support and symmetry "
+      "planes hold the whole rotation, as at a rectangle's corner.");
     prm.leave_subsection();
   }
 
@@ -273,7 +280,6 @@ namespace liftoff
                + " has the edges "
                + (outline == PlateShape::annulus ? "Inner and Outer."
                                                  : "Outer."));
-    check_circle_conditions();
   }
 
 
@@ -344,37 +350,8 @@ namespace liftoff
                                  + std::to_string(id) + " two conditions ("
                                  + other.name + " and " + parts[0]
                                  + "); give each tag one."));
-        const bool along_an_axis =
-          mesh->direction_of(id) != numbers::invalid_unsigned_int;
-        AssertThrow(along_an_axis
-                      || (condition != EdgeCondition::hard_simply_supported
-                          && condition != EdgeCondition::symmetry_plane),
-                    ExcMessage(parameter + ": " + parts[0] + " = " + parts[1]
-                               + " needs the tag's faces all parallel to x "
-                                 "or all to y (the rotation along an oblique "
-                                 "edge is no component of (w, psi_x, "
-                                 "psi_y)); use soft simply supported or "
-                                 "clamped."));
         mesh_tags.push_back({id, parts[0], condition});
       }
-  }
-
-
-  void
-  PlateGeometry::check_circle_conditions() const
-  {
-    // The rotation along a circle is no component of (w, psi_x, psi_y);
-    // holding it needs normal-tangential constraints, not written yet.
-    const std::array<std::pair<std::string, EdgeCondition>, 2> circles = {
-      {{"Outer", outer}, {"Inner", inner}}};
-    for (const auto &[name, condition] : circles)
-      AssertThrow(condition != EdgeCondition::hard_simply_supported,
-                  ExcMessage("Boundary conditions/" + name
-                             + " = hard simply supported is not available "
-                               "on "
-                             + shape_setting()
-                             + " yet; use soft simply supported or "
-                               "clamped."));
   }
 
 
@@ -567,27 +544,60 @@ namespace liftoff
   }
 
 
+  std::vector<PlateGeometry::HeldBoundary>
+  PlateGeometry::held_boundaries() const
+  {
+    std::vector<HeldBoundary> held;
+    const auto                hold = [&](const types::boundary_id id,
+                          const EdgeCondition      condition,
+                          const unsigned int       direction) {
+      if (condition != EdgeCondition::free)
+        held.push_back({id, condition, direction});
+    };
+    const unsigned int curved = numbers::invalid_unsigned_int;
+    hold(outer_boundary, outer, curved);
+    hold(inner_boundary, inner, curved);
+    for (unsigned int e = 0; e < 4; ++e)
+      hold(e, edges[e], (e == left_edge || e == right_edge) ? 1 : 0);
+    for (const HeldTag &tag : mesh_tags)
+      hold(tag.id, tag.condition, mesh->direction_of(tag.id));
+    if (outline == PlateShape::mesh_file)
+      return held;
+    hold(x_symmetry_plane, EdgeCondition::symmetry_plane, 1);
+    hold(y_symmetry_plane, EdgeCondition::symmetry_plane, 0);
+    return held;
+  }
+
+
   std::vector<std::pair<types::boundary_id, ComponentMask>>
   PlateGeometry::held_components() const
   {
     std::vector<std::pair<types::boundary_id, ComponentMask>> held;
-    const auto hold = [&](const types::boundary_id id,
-                          const EdgeCondition      condition,
-                          const bool               along_y) {
-      if (condition != EdgeCondition::free)
-        held.emplace_back(id, held_on_edge(condition, along_y));
-    };
-    // The circles hold no rotation along them (check_circle_conditions).
-    hold(outer_boundary, outer, false);
-    hold(inner_boundary, inner, false);
-    for (unsigned int e = 0; e < 4; ++e)
-      hold(e, edges[e], e == left_edge || e == right_edge);
-    for (const HeldTag &tag : mesh_tags)
-      hold(tag.id, tag.condition, mesh->direction_of(tag.id) == 1);
-    if (outline == PlateShape::mesh_file)
-      return held;
-    hold(x_symmetry_plane, EdgeCondition::symmetry_plane, true);
-    hold(y_symmetry_plane, EdgeCondition::symmetry_plane, false);
+    for (const HeldBoundary &boundary : held_boundaries())
+      {
+        const ComponentMask mask =
+          held_on_edge(boundary.condition, boundary.direction);
+        if (mask.n_selected_components() > 0)
+          held.emplace_back(boundary.id, mask);
+      }
+    return held;
+  }
+
+
+  HeldRotations
+  PlateGeometry::held_rotations() const
+  {
+    HeldRotations held;
+    for (const HeldBoundary &boundary : held_boundaries())
+      {
+        const bool along =
+          boundary.condition == EdgeCondition::hard_simply_supported;
+        if (!along && boundary.condition != EdgeCondition::symmetry_plane)
+          continue;
+        (along ? held.along : held.across).insert(boundary.id);
+        if (boundary.direction > 1)
+          held.projected.insert(boundary.id);
+      }
     return held;
   }
 
@@ -602,7 +612,7 @@ namespace liftoff
     return std::any_of(conditions.begin(),
                        conditions.end(),
                        [](const EdgeCondition condition) {
-                         return held_on_edge(condition, true)[0];
+                         return held_on_edge(condition, 0)[0];
                        });
   }
 

@@ -9,7 +9,8 @@
 // whose meshes must be the same at every step. Beyond the rectangle
 // (issue 34): a disc (GridGenerator::hyper_ball_balanced, its manifolds and
 // a MappingQ2 on every rank) and a mesh read from a gmsh file, each under
-// a load off its centre on the tensionless bed.
+// a load off its centre on the tensionless bed, and an adaptive half disc
+// whose rim is hard simply supported (normal-tangential constraints).
 
 #include <deal.II/base/mpi.h>
 
@@ -149,6 +150,50 @@ end
                             "  set Global refinements = 1\n"
                             "  set Polynomial degree = 2\n"
                             "end\n",
+                        0,
+                        checks);
+  // Hard simple support on the rim: psi . t = 0 by normal-tangential
+  // constraints, whose normals must be the same on every rank that sees a
+  // rim face; the half disc, where the rim meets the plane x = 0, adapted
+  // (hanging nodes on the rim, refined and coarsened every 5 steps).
+  compare_1_and_2_ranks("Q2 half disc, hard simply supported, adaptive",
+                        R"(
+subsection Plate
+  set Thickness ratio = 0.05
+end
+subsection Foundation
+  set Model = tensionless
+  set Stiffness = 300
+end
+subsection Loads
+  subsection Point load 1
+    set Magnitude = 1
+    set Position = 0, -0.2
+    set Time history = 20*tau
+  end
+end
+subsection Time integration
+  set Time step = 2e-3
+  set End time = 0.04
+end
+subsection Output
+  set Probe points = 0, -0.2; 0, 0; 0.3, 0.1; 0.2, -0.4
+end
+subsection Boundary conditions
+  set Outer = hard simply supported
+end
+subsection Mesh refinement
+  set Adaptive = true
+  set Interval = 5
+  set Maximum level = 3
+end
+subsection Discretization
+  set Shape = disc
+  set Symmetry = half
+  set Global refinements = 1
+  set Polynomial degree = 2
+end
+)",
                         0,
                         checks);
   // 10 x 10 cells of the square: 21 x 21 nodes of Q2.

@@ -142,6 +142,12 @@ namespace liftoff
 
     void
     make_constraints();
+    /// psi . t = 0 and psi . n = 0 on the boundaries where these are no
+    /// components of psi (PlateGeometry::held_rotations()).
+    void
+    hold_projected_rotations();
+    void
+    hold_rotation_at_corners(const HeldRotations &held);
     /// The pattern of the couplings `coupling` allows, with the
     /// constraints condensed, of the rows this rank owns and those it
     /// writes to.

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +49,19 @@ namespace liftoff
     full,
     half,
     quarter
+  };
+
+  /// The boundaries that hold the rotation along them, psi . t = 0 (hard
+  /// simple support), and across them, psi . n = 0 (symmetry planes);
+  /// `projected` those of them along no axis (circles, oblique curves of a
+  /// mesh file), where that rotation is no component of psi and
+  /// PlateGeometry::held_components() holds w alone: Discretization
+  /// constrains psi there by normal-tangential constraints.
+  struct HeldRotations
+  {
+    std::set<types::boundary_id> along;
+    std::set<types::boundary_id> across;
+    std::set<types::boundary_id> projected;
   };
 
   /**
@@ -113,6 +127,9 @@ namespace liftoff
     /// that holds any: the supported edges, then the symmetry planes.
     std::vector<std::pair<types::boundary_id, ComponentMask>>
     held_components() const;
+    /// The boundaries that hold a rotation, and those along no axis.
+    HeldRotations
+    held_rotations() const;
     /// True when some edge restrains w, so the stiffness alone is regular
     /// enough for a static solve without foundation contact.
     bool
@@ -176,8 +193,6 @@ namespace liftoff
     void
     check_shape_choices(const std::string &symmetry_name) const;
     void
-    check_circle_conditions() const;
-    void
     check_mesh_file_choices() const;
     /// An SI scene's Units/Length (`length`, in m) against the length of
     /// the mesh in metres along x, which it must be.
@@ -214,6 +229,17 @@ namespace liftoff
     unsigned int                    n_cells_y     = 10;
     std::array<EdgeCondition, 4>    edges;
     std::shared_ptr<const MeshFile> mesh;
+    /// A boundary that is not free: its condition and its direction (0
+    /// along x, 1 along y, another value along neither).
+    struct HeldBoundary
+    {
+      types::boundary_id id;
+      EdgeCondition      condition;
+      unsigned int       direction;
+    };
+    std::vector<HeldBoundary>
+    held_boundaries() const;
+
     /// Boundary id of a tag of the mesh file, its name in the scene and
     /// its condition, for the tags the scene holds.
     struct HeldTag
