@@ -49,11 +49,14 @@ namespace liftoff
                      const unsigned int                         f,
                      const PlateGeometry                       &geometry)
     {
+      // The planes' ids mean planes only on a half or quarter model (a mesh
+      // file's tags may take any number; it is always a full model).
       const auto face = cell->face(f);
-      return (!face->at_boundary()
-              || geometry.is_symmetry_plane(face->boundary_id()))
-               ? 0.5
-               : 1.0;
+      const bool on_plane =
+        geometry.symmetry() != Symmetry::full
+        && (face->boundary_id() == PlateGeometry::x_symmetry_plane
+            || face->boundary_id() == PlateGeometry::y_symmetry_plane);
+      return (!face->at_boundary() || on_plane) ? 0.5 : 1.0;
     }
 
     /// A 1d rule on [0, 1] moved onto [a, b].

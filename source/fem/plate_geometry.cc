@@ -768,14 +768,6 @@ namespace liftoff
   }
 
 
-  bool
-  PlateGeometry::is_symmetry_plane(const types::boundary_id id) const
-  {
-    return outline != PlateShape::mesh_file
-           && (id == x_symmetry_plane || id == y_symmetry_plane);
-  }
-
-
   double
   PlateGeometry::share_of_point_load(const Point<2> &p) const
   {

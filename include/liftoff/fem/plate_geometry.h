@@ -174,11 +174,6 @@ namespace liftoff
     /// the plate in numbers, since mu is a parameter of another class.
     std::string
     plate_description() const;
-    /// True for the boundary id of a plane of a half or quarter model, where
-    /// the modelled part carries half of what lies on it. (A mesh file's
-    /// symmetry-plane curves bound the whole model the scene describes.)
-    bool
-    is_symmetry_plane(const types::boundary_id id) const;
     /// Mirror a point of the full plate into the modelled part.
     Point<2>
     to_modelled_part(const Point<2> &p) const;
