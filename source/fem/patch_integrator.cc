@@ -366,16 +366,16 @@ namespace liftoff
     for (const auto &[t0, t1] : clipping.pieces(a, b))
       {
         // A piece along a (straight) face: its ends and middle on it.
+        std::array<Point<2>, 3> marks;
+        for (unsigned int k = 0; k < 3; ++k)
+          marks[k] = clipping.to_unit(a + (t0 + k * (t1 - t0) / 2) * (b - a));
         double weight = 1;
         for (unsigned int d = 0; d < 2; ++d)
           for (unsigned int side = 0; side < 2; ++side)
             {
               bool on_face = true;
-              for (const double t : {t0, 0.5 * (t0 + t1), t1})
-                on_face =
-                  on_face
-                  && std::abs(clipping.to_unit(a + t * (b - a))[d] - side)
-                       <= 1e-10;
+              for (const Point<2> &unit : marks)
+                on_face = on_face && std::abs(unit[d] - side) <= 1e-10;
               if (on_face)
                 weight = share_along_face(cell,
                                           2 * d + side,
