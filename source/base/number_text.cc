@@ -1,5 +1,7 @@
 #include <liftoff/base/number_text.h>
 
+#include <array>
+#include <charconv>
 #include <iomanip>
 #include <sstream>
 
@@ -11,6 +13,22 @@ namespace liftoff
     std::ostringstream text;
     text << std::setprecision(8) << x;
     return text.str();
+  }
+
+
+  std::string
+  format_exact(const double x)
+  {
+    std::array<char, 32> text;
+    const auto end = std::to_chars(text.data(), text.data() + text.size(), x);
+    return std::string(text.data(), end.ptr);
+  }
+
+
+  std::string
+  format_point(const double x, const double y)
+  {
+    return format_exact(x) + ", " + format_exact(y);
   }
 
 

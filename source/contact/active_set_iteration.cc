@@ -201,6 +201,13 @@ namespace liftoff
   }
 
 
+  const LA::MPI::SparseMatrix &
+  ActiveSetIteration::system_matrix() const
+  {
+    return matrix;
+  }
+
+
   double
   ActiveSetIteration::refinement_change(const LA::MPI::Vector &x,
                                         const System          &system)

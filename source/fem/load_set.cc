@@ -240,9 +240,23 @@ namespace liftoff
           AssertThrow(false, ExcMessage(message));
         }
       AssertThrow(!wheels.empty(), ExcMessage(message));
+      double total_share = 0;
       for (const auto &wheel : wheels)
-        for (const double v : wheel)
-          AssertThrow(std::isfinite(v), ExcMessage(message));
+        {
+          for (const double v : wheel)
+            AssertThrow(std::isfinite(v), ExcMessage(message));
+          // A wheel presses; a vehicle whose wheels carry nothing is no
+          // load at all, which a scene never means.
+          AssertThrow(wheel[2] >= 0,
+                      ExcMessage(parameter + " = <" + abbreviated(text)
+                                 + ">: a wheel's share must be >= 0."));
+          total_share += wheel[2];
+        }
+      AssertThrow(total_share > 0,
+                  ExcMessage(parameter + " = <" + abbreviated(text)
+                             + ">: the wheels' shares add up to 0, so the "
+                               "vehicle carries no load; give each wheel "
+                               "its share of Magnitude (> 0 in all)."));
       return wheels;
     }
 

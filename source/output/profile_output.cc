@@ -138,14 +138,13 @@ namespace liftoff
                   ExcMessage("Output/Profile start and Profile end must lie "
                              "on "
                              + disc.geometry().plate_description() + "; "
-                             + std::to_string(p[0]) + ", "
-                             + std::to_string(p[1]) + " does not."));
+                             + format_point(p[0], p[1]) + " does not."));
     // Between its ends a line may cross a hole (an annulus).
     for (unsigned int i = 0; i < n_points; ++i)
       AssertThrow(disc.geometry().is_on_plate(point(i)),
                   ExcMessage("Output/Profile points: the profile's point "
-                             + std::to_string(point(i)[0]) + ", "
-                             + std::to_string(point(i)[1]) + " lies outside "
+                             + format_point(point(i)[0], point(i)[1])
+                             + " lies outside "
                              + disc.geometry().plate_description()
                              + "; keep the line on the plate."));
   }

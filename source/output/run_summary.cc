@@ -157,9 +157,13 @@ namespace liftoff
       add("energy balance",
           "not checked: Time integration/Beta = " + format_number(beta)
             + " with Gamma = 1/2 conserves a modified energy");
-    if (stepper.static_equilibrium_imbalance() >= 0)
-      add("static equilibrium, bed against loads (relative)",
-          stepper.static_equilibrium_imbalance());
+    if (const auto &equilibrium = stepper.static_equilibrium();
+        equilibrium.imbalance >= 0)
+      {
+        add("static equilibrium, bed against loads (relative)",
+            equilibrium.imbalance);
+        add("static equilibrium, accepted", equilibrium.accepted());
+      }
     if (stepper.checks_energy())
       {
         add("energy balance error, largest share of the energy scale",

@@ -118,7 +118,12 @@ namespace liftoff
                                  + joined(fields, ", ")
                                  + " and LOAD a moving load's name, e.g. "
                                    "w@patch_load_1."));
-          probes.emplace_back(parts[0], parts[1]);
+          const std::pair<std::string, std::string> probe(parts[0], parts[1]);
+          AssertThrow(std::find(probes.begin(), probes.end(), probe)
+                        == probes.end(),
+                      ExcMessage("Output/Riding probes: <" + entry
+                                 + "> is given twice."));
+          probes.push_back(probe);
         }
       return probes;
     }
@@ -202,7 +207,9 @@ namespace liftoff
                      Patterns::List::max_int_value,
                      ";"),
       "Points x, y of the full plate, separated by ';', whose "
-      "deflection w is written to history.csv at every step.");
+      "deflection w is written to history.csv at every step. On an "
+      "annulus the point 0, 0 lies in the hole and gives no probe (the "
+      "run says so), so that the default needs no change there.");
     prm.declare_entry("Write energies",
                       "true",
                       Patterns::Bool(),
@@ -256,10 +263,10 @@ namespace liftoff
     for (unsigned int i = 0; i < probe_points.size(); ++i)
       for (unsigned int j = 0; j < i; ++j)
         AssertThrow(probe_points[i] != probe_points[j],
-                    ExcMessage("Output/Probe points: the point "
-                               + std::to_string(probe_points[i][0]) + ", "
-                               + std::to_string(probe_points[i][1])
-                               + " is given twice."));
+                    ExcMessage(
+                      "Output/Probe points: the point "
+                      + format_point(probe_points[i][0], probe_points[i][1])
+                      + " is given twice."));
     write_energies        = prm.get_bool("Write energies");
     write_resultant       = prm.get_bool("Write foundation resultant");
     write_moment_extremes = prm.get_bool("Write moment extremes");
@@ -281,16 +288,26 @@ namespace liftoff
     for (const auto &p : probe_points)
       AssertThrow(disc.geometry().is_on_plate(p),
                   ExcMessage("Output/Probe points: the point "
-                             + std::to_string(p[0]) + ", "
-                             + std::to_string(p[1]) + " lies outside "
+                             + format_point(p[0], p[1]) + " lies outside "
                              + disc.geometry().plate_description() + "."));
     for (const auto &probe : quantity_probes)
       AssertThrow(disc.geometry().is_on_plate(probe.point),
                   ExcMessage("Output/Probe quantities: the point "
-                             + std::to_string(probe.point[0]) + ", "
-                             + std::to_string(probe.point[1]) + " of "
-                             + probe.quantity + " lies outside "
+                             + format_point(probe.point[0], probe.point[1])
+                             + " of " + probe.quantity + " lies outside "
                              + disc.geometry().plate_description() + "."));
+  }
+
+
+  bool
+  TimeHistory::drop_default_probe_off(const PlateGeometry &geometry)
+  {
+    if (probe_points != std::vector<Point<2>>{Point<2>()}
+        || geometry.is_on_plate(Point<2>()))
+      return false;
+    probe_points.clear();
+    make_columns();
+    return true;
   }
 
 

@@ -33,7 +33,11 @@ namespace liftoff
       , parts(comm, timer)
       , progress_line(comm, std::cout)
   {
-    outputs = {&time_history, &profile_output, &field_output, &envelopes};
+    outputs = {&time_history,
+               &profile_output,
+               &field_output,
+               &envelopes,
+               &small_deflection};
     if (verbose && show_progress)
       outputs.push_back(&progress_line);
   }
@@ -79,12 +83,17 @@ namespace liftoff
       field_output.parse_parameters(scene, parts.plate);
       envelopes.parse_parameters(scene);
       scene.leave_subsection();
+      if (time_history.drop_default_probe_off(parts.discretization.geometry()))
+        pcout << "liftoff: Output/Probe points = 0, 0 lies in the hole of "
+                 "the annulus: no probe is written."
+              << std::endl;
       time_history.show_dissipated_energy(parts.foundation.has_damping());
       const auto load_positions = [this](const double tau) {
         return parts.loads.moving_load_positions(tau);
       };
       time_history.follow(parts.loads.moving_load_names(), load_positions);
       profile_output.follow(parts.loads.moving_load_names(), load_positions);
+      small_deflection.set_thickness_ratio(parts.plate.thickness_ratio);
       for (Output *output : outputs)
         output->write_in_units_of(units);
       checkpoint.parse_parameters(scene);
@@ -294,9 +303,7 @@ namespace liftoff
           }
         throw;
       }
-    write_summary(stepper->energy_warning().empty()
-                    ? "completed"
-                    : "completed with warnings");
+    write_summary(warnings().empty() ? "completed" : "completed with warnings");
   }
 
 
@@ -540,6 +547,17 @@ namespace liftoff
   }
 
 
+  std::string
+  Simulator::warnings() const
+  {
+    std::string       text       = stepper->energy_warning();
+    const std::string deflection = small_deflection.warning();
+    if (!deflection.empty())
+      text += (text.empty() ? "" : " ") + deflection;
+    return text;
+  }
+
+
   RunSummary
   Simulator::summary_of_run(const std::string &status) const
   {
@@ -547,8 +565,8 @@ namespace liftoff
     const auto  iterations = time_history.iteration_statistics();
     RunSummary  summary;
     summary.add("status", status);
-    if (!stepper->energy_warning().empty())
-      summary.add("warning", stepper->energy_warning());
+    if (!warnings().empty())
+      summary.add("warning", warnings());
     summary.add("liftoff",
                 std::string(LIFTOFF_VERSION) + " (git " + LIFTOFF_GIT_COMMIT
                   + ")");
@@ -572,6 +590,7 @@ namespace liftoff
     summary.add("active-set iterations per step, max", double(iterations.max));
     summary.add("steps whose active set cycled", double(iterations.n_cycled));
     envelopes.add_to(summary);
+    small_deflection.add_to(summary);
     summary.add_linear_solver(parts.active_set.linear_solver());
     summary.add_resources(timer, wall_clock.wall_time(), mpi_communicator);
     return summary;

@@ -7,52 +7,110 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 namespace liftoff
 {
   namespace
   {
-    /// loads . r for the rigid motion r given as "w; psi_x; psi_y".
-    double
-    work_on(const Discretization  &disc,
-            const LA::MPI::Vector &load,
-            const std::string     &motion)
+    /// The rigid motion r given as "w; psi_x; psi_y" at the unknowns, laid
+    /// out as `like`.
+    LA::MPI::Vector
+    rigid_motion(const Discretization  &disc,
+                 const LA::MPI::Vector &like,
+                 const std::string     &motion)
     {
       FunctionParser<2> rigid(3);
       rigid.initialize("x,y", motion, {});
-      LA::MPI::Vector r(load);
+      LA::MPI::Vector r(like);
       VectorTools::interpolate(disc.mapping(), disc.dof_handler, rigid, r);
-      return load * r;
+      return r;
+    }
+
+    /// |A| |u| row by row, laid out as `like` (`u` ghosted).
+    LA::MPI::Vector
+    absolute_product(const LA::MPI::SparseMatrix &a,
+                     const LA::MPI::Vector       &u,
+                     const LA::MPI::Vector       &like)
+    {
+      LA::MPI::Vector result(like);
+      result = 0;
+      for (const auto row : a.locally_owned_range_indices())
+        {
+          double sum = 0;
+          for (auto entry = a.begin(row); entry != a.end(row); ++entry)
+            sum += std::abs(entry->value()) * std::abs(u(entry->column()));
+          result(row) = sum;
+        }
+      result.compress(VectorOperation::insert);
+      return result;
+    }
+
+    /// (sum (a_i b_i)^2)^(1/2) over all ranks.
+    double
+    weighted_norm(const LA::MPI::Vector &a,
+                  const LA::MPI::Vector &b,
+                  const MPI_Comm         comm)
+    {
+      double sum = 0;
+      for (auto x = a.begin(), y = b.begin(); x != a.end(); ++x, ++y)
+        sum += (*x) * (*x) * (*y) * (*y);
+      return std::sqrt(Utilities::MPI::sum(sum, comm));
     }
   } // namespace
 
 
   double
-  StaticEquilibrium::imbalance(const Discretization               &disc,
-                               const TensionlessWinklerFoundation &foundation,
-                               const LA::MPI::Vector              &u,
-                               const LA::MPI::Vector              &load)
+  StaticEquilibrium::Result::accepted() const
+  {
+    return std::max(tolerance, round_off);
+  }
+
+
+  bool
+  StaticEquilibrium::Result::holds() const
+  {
+    return imbalance <= accepted();
+  }
+
+
+  StaticEquilibrium::Result
+  StaticEquilibrium::check(const Discretization               &disc,
+                           const TensionlessWinklerFoundation &foundation,
+                           const LA::MPI::Vector              &u,
+                           const LA::MPI::Vector              &load,
+                           const LA::MPI::SparseMatrix        &matrix)
   {
     const double copies = disc.geometry().n_symmetry_copies();
     const double scale  = copies * load.l1_norm();
+    Result       result;
     if (disc.geometry().has_kinematic_support()
         || foundation.law().model() == ContactLaw::Model::none || scale == 0)
-      return -1;
+      return result;
     LA::MPI::Vector at_rest(u);
-    at_rest        = 0;
-    const auto bed = foundation.diagnostics().resultant(u, at_rest);
-    double     largest =
-      std::abs(copies * work_on(disc, load, "1; 0; 0") - bed.force);
+    at_rest                    = 0;
+    const auto            bed  = foundation.diagnostics().resultant(u, at_rest);
+    const LA::MPI::Vector size = absolute_product(matrix, u, load);
+    const auto compare = [&](const std::string &motion, const double bed_side) {
+      const LA::MPI::Vector r = rigid_motion(disc, load, motion);
+      result.imbalance =
+        std::max(result.imbalance, std::abs(copies * (load * r) - bed_side));
+      result.round_off =
+        std::max(result.round_off,
+                 16 * std::numeric_limits<double>::epsilon() * copies
+                   * weighted_norm(size, r, disc.mpi_communicator));
+    };
+    compare("1; 0; 0", bed.force);
     const auto &symmetric = disc.geometry().symmetry_axes();
     if (!foundation.law().has_layer())
       for (const unsigned int axis : {0u, 1u})
         if (std::find(symmetric.begin(), symmetric.end(), axis)
             == symmetric.end())
-          largest = std::max(
-            largest,
-            std::abs(copies
-                       * work_on(disc, load, axis == 0 ? "x; 1; 0" : "y; 0; 1")
-                     - bed.force * bed.centre[axis]));
-    return largest / scale;
+          compare(axis == 0 ? "x; 1; 0" : "y; 0; 1",
+                  bed.force * bed.centre[axis]);
+    result.imbalance /= scale;
+    result.round_off /= scale;
+    return result;
   }
 } // namespace liftoff

@@ -248,29 +248,31 @@ namespace liftoff
   void
   TimeStepper::check_static_equilibrium(const LA::MPI::Vector &load)
   {
-    equilibrium_imbalance = StaticEquilibrium::imbalance(discretization,
-                                                         foundation,
-                                                         state_.ghosted_u,
-                                                         load);
-    if (equilibrium_imbalance <= StaticEquilibrium::tolerance)
+    equilibrium = StaticEquilibrium::check(discretization,
+                                           foundation,
+                                           state_.ghosted_u,
+                                           load,
+                                           active_set.system_matrix());
+    if (equilibrium.holds())
       return;
-    warning = "The static solution is not in equilibrium: the bed's "
-              "resultant or moment differs from the loads' by "
-              + format_number(equilibrium_imbalance)
-              + " of the loads (accepted: "
-              + format_number(StaticEquilibrium::tolerance)
-              + "). Likely cause: an ill-conditioned system (a very soft "
-                "bed under a free plate) or a defect; do not use these "
-                "results.";
+    warning =
+      "The static solution is not in equilibrium: the bed's "
+      "resultant or moment differs from the loads' by "
+      + format_number(equilibrium.imbalance)
+      + " of the loads (accepted: " + format_number(equilibrium.accepted())
+      + ", the larger of " + format_number(StaticEquilibrium::tolerance)
+      + " and the round-off of the solve). Likely cause: an "
+        "ill-conditioned system (a very soft bed under a free "
+        "plate) or a defect; do not use these results.";
     if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
       std::cerr << "liftoff: warning: " << warning << std::endl;
   }
 
 
-  double
-  TimeStepper::static_equilibrium_imbalance() const
+  const StaticEquilibrium::Result &
+  TimeStepper::static_equilibrium() const
   {
-    return equilibrium_imbalance;
+    return equilibrium;
   }
 
 

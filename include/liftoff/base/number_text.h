@@ -10,6 +10,16 @@ namespace liftoff
   std::string
   format_number(const double x);
 
+  /// The shortest text that reads back as `x` exactly: a point or value
+  /// the user wrote, quoted in a message, must not look like another
+  /// (0.500000001 is not 0.5).
+  std::string
+  format_exact(const double x);
+
+  /// "x, y" of a point, each by format_exact().
+  std::string
+  format_point(const double x, const double y);
+
   /// The names one after the other, `separator` between them: the lists
   /// of allowed names that messages quote.
   std::string

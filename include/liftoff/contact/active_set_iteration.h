@@ -99,6 +99,10 @@ namespace liftoff
     LinearSolver &
     linear_solver();
 
+    /// B + K_f(S) for the current S.
+    const LA::MPI::SparseMatrix &
+    system_matrix() const;
+
     /// The system matrix B + K_f(S) as it is, round-off included, and the
     /// set of the matrix the solver's factor was built from.
     void

@@ -139,6 +139,13 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
 
+    /// The default probe is the plate's centre, which an annulus lacks
+    /// (it lies in the hole): there the default gives no probe. Returns
+    /// whether it was dropped.
+    bool
+    drop_default_probe_off(const PlateGeometry &geometry);
+
+
     /// Probes inside the plate (full plate coordinates); needs no mesh.
     void
     check_against(const Discretization &discretization) const;

@@ -14,6 +14,7 @@
 #include <liftoff/output/profile_output.h>
 #include <liftoff/output/progress_line.h>
 #include <liftoff/output/run_summary.h>
+#include <liftoff/output/small_deflection_check.h>
 #include <liftoff/output/time_history.h>
 #include <liftoff/run/checkpoint.h>
 #include <liftoff/run/output_directory.h>
@@ -96,7 +97,7 @@ namespace liftoff
     /// TensionlessWinklerFoundation::pressure_range()).
     FoundationDiagnostics::PressureRange
     contact_pressure_range() const;
-    /// StaticEquilibrium::imbalance() of a static run's solution (-1
+    /// StaticEquilibrium::check()'s imbalance of a static run's solution (-1
     /// where it does not apply).
     double
     static_equilibrium_imbalance() const;
@@ -127,13 +128,14 @@ namespace liftoff
 
     /// The scene's unit system; converts an SI scene before the parts
     /// read it, and gives the outputs their units.
-    PhysicalUnits units;
-    SceneParts    parts;
-    TimeHistory   time_history;
-    ProfileOutput profile_output;
-    FieldOutput   field_output;
-    Envelopes     envelopes;
-    ProgressLine  progress_line;
+    PhysicalUnits        units;
+    SceneParts           parts;
+    TimeHistory          time_history;
+    ProfileOutput        profile_output;
+    FieldOutput          field_output;
+    Envelopes            envelopes;
+    SmallDeflectionCheck small_deflection;
+    ProgressLine         progress_line;
     /// What is written after each step, in this order.
     std::vector<Output *> outputs;
     Checkpoint            checkpoint;
@@ -158,6 +160,11 @@ namespace liftoff
     /// foundation) a transfer to a new mesh caused, relative to the energy
     /// before it.
     double largest_energy_jump = 0;
+
+    /// The warnings of the checks the run made of its answer (the energy
+    /// balance or static equilibrium, small deflections), one text.
+    std::string
+    warnings() const;
     /// The mesh was due to adapt after the last step, which skips it: a
     /// checkpoint of that step keeps this, and a resume that goes further
     /// adapts before its first step, as a run without the stop did.
@@ -265,7 +272,7 @@ namespace liftoff
   inline double
   Simulator::static_equilibrium_imbalance() const
   {
-    return stepper->static_equilibrium_imbalance();
+    return stepper->static_equilibrium().imbalance;
   }
 
 

@@ -7,6 +7,7 @@
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/time/energy_balance.h>
 #include <liftoff/time/plate_state.h>
+#include <liftoff/time/static_equilibrium.h>
 
 #include <functional>
 #include <optional>
@@ -133,10 +134,10 @@ namespace liftoff
     /// summary ("" if none).
     const std::string &
     energy_warning() const;
-    /// StaticEquilibrium::imbalance() of the static solution (-1 where it
-    /// does not apply or the run is dynamic).
-    double
-    static_equilibrium_imbalance() const;
+    /// StaticEquilibrium::check() of the static solution (an imbalance of
+    /// -1 where it does not apply or the run is dynamic).
+    const StaticEquilibrium::Result &
+    static_equilibrium() const;
     /// New meshes of the time loop or the static cycles.
     unsigned int
     n_adaptations() const;
@@ -173,10 +174,10 @@ namespace liftoff
     /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
     /// estimate from below), once it was needed; 0 before (and after the
     /// mesh changed).
-    double       largest_eigenvalue = 0;
-    unsigned int n_new_meshes       = 0;
-    std::string  warning;
-    double       equilibrium_imbalance = -1;
+    double                    largest_eigenvalue = 0;
+    unsigned int              n_new_meshes       = 0;
+    std::string               warning;
+    StaticEquilibrium::Result equilibrium;
 
     /// Matrices, foundation points, loads and the layout of every vector
     /// on the current mesh; u, v and a are kept unless `keep_motion` is
