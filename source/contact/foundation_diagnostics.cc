@@ -1,14 +1,43 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 
 #include <liftoff/base/located_maximum.h>
 #include <liftoff/contact/foundation_diagnostics.h>
 
 #include <array>
+#include <cmath>
 #include <limits>
 
 namespace liftoff
 {
+  namespace
+  {
+    // The smallest eigenvalue of `a` relative to the positive definite
+    // `b`: that of L^-1 a L^-T with b = L L^T (Cholesky).
+    double
+    smallest_relative_eigenvalue(const Tensor<2, 3> &a, const Tensor<2, 3> &b)
+    {
+      Tensor<2, 3> lower;
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          double diagonal = b[j][j];
+          for (unsigned int k = 0; k < j; ++k)
+            diagonal -= lower[j][k] * lower[j][k];
+          lower[j][j] = std::sqrt(diagonal);
+          for (unsigned int i = j + 1; i < 3; ++i)
+            {
+              double entry = b[i][j];
+              for (unsigned int k = 0; k < j; ++k)
+                entry -= lower[i][k] * lower[j][k];
+              lower[i][j] = entry / lower[j][j];
+            }
+        }
+      const Tensor<2, 3> inverse = invert(lower);
+      return eigenvalues(symmetrize(inverse * a * transpose(inverse)))[2];
+    }
+  } // namespace
+
   FoundationDiagnostics::FoundationDiagnostics(
     const FoundationPoints           &points,
     const ContactLaw                 &law,
@@ -182,21 +211,40 @@ namespace liftoff
   }
 
 
+  Point<2>
+  FoundationDiagnostics::centroid() const
+  {
+    std::vector<double> sums(3, 0.0);
+    for (unsigned int i = 0; i < points.n_points(); ++i)
+      {
+        sums[0] += points.JxW(i);
+        sums[1] += points.JxW(i) * points.point(i)[0];
+        sums[2] += points.JxW(i) * points.point(i)[1];
+      }
+    Utilities::MPI::sum(sums, points.discretization().mpi_communicator, sums);
+    return Point<2>(sums[1] / sums[0], sums[2] / sums[0]);
+  }
+
+
   double
   FoundationDiagnostics::rigid_body_restraint() const
   {
-    // Modes r = (1, x, y); a symmetry plane x = 0 (y = 0) fixes the
-    // rotation that w = x (w = y) needs, so that mode is held already.
+    // Modes r = (1, x - x_c, y - y_c) about the meshed part's centroid: about
+    // the origin, a plate far from it (a mesh in site coordinates) has
+    // modes 1, x and y nearly parallel, and the measure would be round-off.
+    // A symmetry plane x = 0 (y = 0) fixes the rotation that w = x (w = y)
+    // needs, so that mode is held already.
     std::array<bool, 3> is_free = {{true, true, true}};
     for (const unsigned int axis :
          points.discretization().geometry().symmetry_axes())
       is_free[1 + axis] = false;
+    const Point<2> c = centroid();
     // Moments of the contact set and of the whole part, entry by entry.
     std::vector<double> moments(18, 0.0);
     for (unsigned int i = 0; i < points.n_points(); ++i)
       {
         const Point<2>             &p = points.point(i);
-        const std::array<double, 3> r = {{1.0, p[0], p[1]}};
+        const std::array<double, 3> r = {{1.0, p[0] - c[0], p[1] - c[1]}};
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = 0; b < 3; ++b)
             {
@@ -207,18 +255,19 @@ namespace liftoff
     Utilities::MPI::sum(moments,
                         points.discretization().mpi_communicator,
                         moments);
-    // The whole part's moment matrix is diagonal (it is symmetric about
-    // the axes of the modes kept): scale by it, so that full contact gives
-    // the identity; held modes enter as 1.
-    SymmetricTensor<2, 3> scaled;
+    // The contact set's moments relative to the whole part's, W^-1/2 C
+    // W^-T/2 with W = L L^T, so that full contact gives the identity on
+    // any outline (a part not symmetric about its centroid's axes has
+    // int x y != 0); held modes enter as 1.
+    Tensor<2, 3> contact, whole;
     for (unsigned int a = 0; a < 3; ++a)
-      for (unsigned int b = a; b < 3; ++b)
-        scaled[a][b] =
-          (is_free[a] && is_free[b]
-             ? moments[3 * a + b]
-                 / std::sqrt(moments[9 + 4 * a] * moments[9 + 4 * b])
-             : (a == b ? 1.0 : 0.0));
-    return eigenvalues(scaled)[2];
+      for (unsigned int b = 0; b < 3; ++b)
+        {
+          const bool free = is_free[a] && is_free[b];
+          contact[a][b]   = free ? moments[3 * a + b] : (a == b ? 1.0 : 0.0);
+          whole[a][b] = free ? moments[9 + 3 * a + b] : (a == b ? 1.0 : 0.0);
+        }
+    return smallest_relative_eigenvalue(contact, whole);
   }
 
 

@@ -3,9 +3,12 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/reference_cell.h>
 
+#include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/fem/mesh_file.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -17,6 +20,25 @@ namespace liftoff
   {
     // The first line of a message, its blanks run together: deal.II's
     // exceptions span several lines.
+    std::string
+    text_of(const Point<2> &p)
+    {
+      return "(" + format_number(p[0]) + ", " + format_number(p[1]) + ")";
+    }
+
+
+    // "(x0, y0), (x1, y1), ...": a cell by its corners in the file's
+    // coordinates, as messages name it.
+    std::string
+    corners_of(const Triangulation<2>::active_cell_iterator &cell)
+    {
+      std::string text;
+      for (const unsigned int v : {0u, 1u, 3u, 2u})
+        text += (text.empty() ? "" : ", ") + text_of(cell->vertex(v));
+      return text;
+    }
+
+
     std::string
     first_line(const std::string &message)
     {
@@ -122,6 +144,111 @@ namespace liftoff
                                "(triangles?); liftoff's elements are "
                                "quadrilaterals (gmsh: Mesh.RecombineAll = 1, "
                                "or Recombine Surface)."));
+    for (const auto &cell : coarse->active_cell_iterators())
+      check_cell_shape(cell);
+    check_conformity();
+  }
+
+
+  void
+  MeshFile::check_cell_shape(
+    const Triangulation<2>::active_cell_iterator &cell) const
+  {
+    const std::string parameter = "Discretization/Mesh file = " + name;
+    const double      size      = cell->diameter();
+    for (const unsigned int i : cell->vertex_indices())
+      for (unsigned int j = i + 1; j < cell->n_vertices(); ++j)
+        AssertThrow(cell->vertex(i).distance(cell->vertex(j)) > 1e-10 * size,
+                    ExcMessage(parameter + ": the cell " + corners_of(cell)
+                               + " has two nodes at " + text_of(cell->vertex(i))
+                               + "; a quadrilateral needs four distinct "
+                                 "corners (a triangle cannot be written as "
+                                 "a quadrilateral with a repeated node)."));
+    // The bilinear map is one to one where its Jacobian keeps its sign at
+    // the four corners (deal.II's vertices 0, 1, 3, 2 run round the cell):
+    // a non-convex or self-crossing cell fails at one of them.
+    const std::array<unsigned int, 4> round      = {{0, 1, 3, 2}};
+    unsigned int                      n_positive = 0, n_negative = 0;
+    for (unsigned int k = 0; k < 4; ++k)
+      {
+        const Point<2> &at = cell->vertex(round[k]);
+        const double    turn =
+          cross_product_2d(at - cell->vertex(round[(k + 3) % 4]))
+          * (cell->vertex(round[(k + 1) % 4]) - at);
+        n_positive += turn > 1e-10 * size * size;
+        n_negative += turn < -1e-10 * size * size;
+      }
+    AssertThrow(n_positive == 4 || n_negative == 4,
+                ExcMessage(parameter + ": the cell " + corners_of(cell)
+                           + " is not convex (or its corners are not in "
+                             "order round it); liftoff's cells must be "
+                             "convex quadrilaterals."));
+  }
+
+
+  void
+  MeshFile::check_conformity() const
+  {
+    // GridIn joins cells by shared node numbers only. A node lying on
+    // another cell's edge without being one of its nodes (a hanging node,
+    // or a second node at the place of one) leaves both edges at the
+    // boundary: the plate would be cut there, silently.
+    std::vector<unsigned int> by_x;
+    const auto               &vertices = coarse->get_vertices();
+    for (unsigned int v = 0; v < vertices.size(); ++v)
+      if (coarse->get_used_vertices()[v])
+        by_x.push_back(v);
+    std::sort(by_x.begin(), by_x.end(), [&](const auto a, const auto b) {
+      return vertices[a][0] < vertices[b][0];
+    });
+    for (const auto &face : coarse->active_face_iterators())
+      if (face->at_boundary())
+        check_edge(face, by_x);
+  }
+
+
+  void
+  MeshFile::check_edge(const Triangulation<2>::active_face_iterator &face,
+                       const std::vector<unsigned int>              &by_x) const
+  {
+    const auto        &vertices = coarse->get_vertices();
+    const Point<2>     a = face->vertex(0), b = face->vertex(1);
+    const Tensor<1, 2> along     = b - a;
+    const double       tolerance = 1e-10 * along.norm();
+    const auto         first =
+      std::lower_bound(by_x.begin(),
+                       by_x.end(),
+                       std::min(a[0], b[0]) - tolerance,
+                       [&](const unsigned int v, const double x) {
+                         return vertices[v][0] < x;
+                       });
+    for (auto v = first;
+         v != by_x.end() && vertices[*v][0] <= std::max(a[0], b[0]) + tolerance;
+         ++v)
+      {
+        if (*v == face->vertex_index(0) || *v == face->vertex_index(1))
+          continue;
+        const Point<2> &p = vertices[*v];
+        const double    s =
+          std::clamp((p - a) * along / along.norm_square(), 0.0, 1.0);
+        if (p.distance(a + s * along) > tolerance)
+          continue;
+        const std::string parameter = "Discretization/Mesh file = " + name;
+        AssertThrow(p.distance(a) > tolerance && p.distance(b) > tolerance,
+                    ExcMessage(parameter + ": two nodes lie at " + text_of(p)
+                               + ", and the cells of each are not joined "
+                                 "there: the plate would be cut. Let the "
+                                 "cells share one node (gmsh: one surface, "
+                                 "or Coherence)."));
+        AssertThrow(false,
+                    ExcMessage(parameter + ": the node at " + text_of(p)
+                               + " lies inside the edge from " + text_of(a)
+                               + " to " + text_of(b)
+                               + " of a cell that does not have it (a "
+                                 "hanging node): the plate would be cut "
+                                 "there. Mesh both sides with the node "
+                                 "shared (a conforming mesh)."));
+      }
   }
 
 
@@ -224,6 +351,13 @@ namespace liftoff
   MeshFile::bounding_box() const
   {
     return GridTools::compute_bounding_box(*coarse);
+  }
+
+
+  double
+  MeshFile::area() const
+  {
+    return GridTools::volume(*coarse);
   }
 
 

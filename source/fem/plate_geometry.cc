@@ -511,8 +511,10 @@ namespace liftoff
   PlateGeometry::n_ring_cells() const
   {
     // About as many as make the cells square at the mean radius, the
-    // choice hyper_shell makes for n_cells = 0, and at least 3 for a ring.
-    const unsigned int n = std::max(3u,
+    // choice hyper_shell makes for n_cells = 0, and at least 8: a mapping
+    // of degree 2 on arcs of 90 degrees (4 cells, a thin hole) loses 1.2 %
+    // of the area, on 45 degrees 7.8e-4 (the coarse disc's arcs).
+    const unsigned int n = std::max(8u,
                                     static_cast<unsigned int>(std::ceil(
                                       numbers::PI * (radius + inner_radius)
                                       / (radius - inner_radius))));
@@ -703,6 +705,20 @@ namespace liftoff
     for (const unsigned int axis : symmetry_axes())
       corners.first[axis] = 0.0;
     return BoundingBox<2>(corners);
+  }
+
+
+  double
+  PlateGeometry::modelled_area() const
+  {
+    double area = plate_box().volume();
+    if (outline == PlateShape::mesh_file)
+      area = mesh->area();
+    if (outline == PlateShape::disc)
+      area = numbers::PI * radius * radius;
+    if (outline == PlateShape::annulus)
+      area = numbers::PI * (radius * radius - inner_radius * inner_radius);
+    return area / n_symmetry_copies();
   }
 
 

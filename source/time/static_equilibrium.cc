@@ -15,14 +15,16 @@ namespace liftoff
   namespace
   {
     /// The rigid motion r given as "w; psi_x; psi_y" at the unknowns, laid
-    /// out as `like`.
+    /// out as `like`; x_c and y_c in `motion` are the coordinates of
+    /// `centre`.
     LA::MPI::Vector
     rigid_motion(const Discretization  &disc,
                  const LA::MPI::Vector &like,
-                 const std::string     &motion)
+                 const std::string     &motion,
+                 const Point<2>        &centre)
     {
       FunctionParser<2> rigid(3);
-      rigid.initialize("x,y", motion, {});
+      rigid.initialize("x,y", motion, {{"x_c", centre[0]}, {"y_c", centre[1]}});
       LA::MPI::Vector r(like);
       VectorTools::interpolate(disc.mapping(), disc.dof_handler, rigid, r);
       return r;
@@ -92,8 +94,14 @@ namespace liftoff
     at_rest                    = 0;
     const auto            bed  = foundation.diagnostics().resultant(u, at_rest);
     const LA::MPI::Vector size = absolute_product(matrix, u, load);
+    // Moments about the plate's middle: about the origin, those of a plate
+    // far from it (site coordinates) would be the force times a large arm,
+    // and their difference round-off of that.
+    const auto     box = disc.geometry().plate_box().get_boundary_points();
+    const Point<2> middle((box.first[0] + box.second[0]) / 2,
+                          (box.first[1] + box.second[1]) / 2);
     const auto compare = [&](const std::string &motion, const double bed_side) {
-      const LA::MPI::Vector r = rigid_motion(disc, load, motion);
+      const LA::MPI::Vector r = rigid_motion(disc, load, motion, middle);
       result.imbalance =
         std::max(result.imbalance, std::abs(copies * (load * r) - bed_side));
       result.round_off =
@@ -107,8 +115,8 @@ namespace liftoff
       for (const unsigned int axis : {0u, 1u})
         if (std::find(symmetric.begin(), symmetric.end(), axis)
             == symmetric.end())
-          compare(axis == 0 ? "x; 1; 0" : "y; 0; 1",
-                  bed.force * bed.centre[axis]);
+          compare(axis == 0 ? "x - x_c; 1; 0" : "y - y_c; 0; 1",
+                  bed.force * (bed.centre[axis] - middle[axis]));
     result.imbalance /= scale;
     result.round_off /= scale;
     return result;

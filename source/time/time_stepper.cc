@@ -68,6 +68,21 @@ namespace liftoff
   TimeStepper::setup()
   {
     build_on_current_mesh(false);
+    // A circle's cells follow it between their support points only: the
+    // run says how much area, and so how much of a pressure and of the bed,
+    // the mesh misses.
+    const double area_error = discretization.area_error();
+    if (area_error <= Discretization::area_tolerance)
+      return;
+    warning = "The mesh's area differs from the plate's by "
+              + format_number(area_error)
+              + " (accepted: " + format_number(Discretization::area_tolerance)
+              + "): its cells follow the circles only at their nodes; "
+                "loads over the plate and the bed are short by as much. "
+                "Refine (Discretization/Global refinements) or raise "
+                "Discretization/Polynomial degree.";
+    if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
+      std::cerr << "liftoff: warning: " << warning << std::endl;
   }
 
 

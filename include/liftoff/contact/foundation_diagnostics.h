@@ -84,7 +84,8 @@ namespace liftoff
     /// nothing else holds on a plate with free edges (w = 1, and w = x,
     /// w = y unless x = 0 or y = 0 is a symmetry plane): the smallest
     /// eigenvalue of the contact set's moment matrix int_S r_i r_j over
-    /// that of the whole meshed part, in [0, 1]. Zero exactly when the set
+    /// that of the whole meshed part (the modes taken about its centroid),
+    /// in [0, 1]. Zero exactly when the set
     /// is empty or lies on a line, i.e. when K + K_f(S) is singular for a
     /// free plate (collective).
     double
@@ -100,6 +101,9 @@ namespace liftoff
     const ContactLaw                 &law;
     const std::vector<unsigned char> &in_contact;
 
+    /// The centroid of the meshed part, by its Gauss points (collective).
+    Point<2>
+    centroid() const;
     /// 1/2 G_p int_S |grad w_h|^2 over this rank's cells.
     double
     layer_energy(const LA::MPI::Vector &ghosted_solution) const;

@@ -114,10 +114,20 @@ namespace liftoff
     const GridTools::Cache<2> &
     grid_cache() const;
     /// MappingQ1 on the rectangle; on a curved outline a MappingQ of the
-    /// element's degree (at least 2), which puts its support points on the
-    /// manifolds, so the cells follow the circle.
+    /// element's degree (2 for the serendipity element), which puts its
+    /// support points on the manifolds, so the cells follow the circle.
+    /// The same degree as the element (isoparametric): the element then
+    /// holds the rigid motions w = x, y exactly, which a free plate's
+    /// equilibrium needs; Q1 cells are straight, the disc a polygon.
     const Mapping<2> &
     mapping() const;
+    /// |area of the mesh (with its mapping) / the outline's - 1| of the
+    /// mesh setup() or load_mesh() made: the circles' cells lose area to
+    /// their mapping (a polygon with degree 1, arcs of parabolas with 2).
+    double
+    area_error() const;
+    /// The largest area_error() the summary does not warn of.
+    static constexpr double area_tolerance = 1e-3;
     /// Free the search trees once the scene's points are found: the time
     /// loop does not use them (L, p = 1: 248 MB of the peak).
     void
@@ -138,10 +148,14 @@ namespace liftoff
     TrilinosWrappers::SparsityPattern                sparsity_pattern;
     mutable std::unique_ptr<GridTools::Cache<2>>     cache;
     std::vector<DoFHandler<2>::active_cell_iterator> owned_cells;
-    bool                                             has_hanging = false;
+    bool                                             has_hanging     = false;
+    double                                           mesh_area_error = 0;
 
     void
     make_constraints();
+    /// area_error() of the mesh as it is now (collective).
+    double
+    measure_area_error() const;
     /// psi . t = 0 and psi . n = 0 on the boundaries where these are no
     /// components of psi (PlateGeometry::held_rotations()).
     void

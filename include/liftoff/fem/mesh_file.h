@@ -29,8 +29,10 @@ namespace liftoff
     /// scene, L in metres in an SI one): they are divided by it. Refused in
     /// one line that names Discretization/Mesh file and the cause: no file,
     /// a file GridIn cannot read as a planar mesh (a 3D mesh among them),
-    /// cells that are not quadrilaterals, one physical name given to two
-    /// curves.
+    /// cells that are not quadrilaterals, cells with two nodes at one place
+    /// or not convex, cells that touch without sharing their nodes (a
+    /// non-conforming mesh, which GridIn would take as a cut plate), one
+    /// physical name given to two curves.
     explicit MeshFile(const std::string &file_name,
                       const double       length_scale = 1.0);
 
@@ -56,6 +58,9 @@ namespace liftoff
     contains(const Point<2> &p) const;
     BoundingBox<2>
     bounding_box() const;
+    /// The area its cells cover.
+    double
+    area() const;
     /// "the mesh of FILE (inside the box [x0, x1] x [y0, y1])", for messages.
     std::string
     description() const;
@@ -65,6 +70,19 @@ namespace liftoff
     read_physical_names(const std::string &text);
     void
     read_cells(const std::string &text);
+    /// Refuses a cell with two nodes at one place, or one that is not
+    /// convex: its bilinear map would not be one to one.
+    void
+    check_cell_shape(const Triangulation<2>::active_cell_iterator &cell) const;
+    /// Refuses cells that touch without sharing nodes: a node on another
+    /// cell's edge (a hanging node) or two nodes at one place.
+    void
+    check_conformity() const;
+    /// The nodes (`by_x`: the used vertices sorted by x) on the boundary
+    /// edge `face` other than its own ends.
+    void
+    check_edge(const Triangulation<2>::active_face_iterator &face,
+               const std::vector<unsigned int>              &by_x) const;
     /// The named tags of the file and the unnamed boundary ids, for messages.
     std::string
     known_tags() const;

@@ -33,7 +33,9 @@ namespace liftoff
     /// On the rank that holds `point` (the lowest rank that owns a cell
     /// around it), that cell and the point's unit coordinates in it; an
     /// invalid iterator on the other ranks. Collective; refuses a point
-    /// outside the mesh.
+    /// off the meshed part of the plate. A point of the plate just outside
+    /// the mesh (on a circle, whose mapped cells lie inside it between
+    /// their support points) is taken at the mesh's nearest point.
     static std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
     holder_cell(const Discretization &discretization, const Point<2> &point);
 
