@@ -3,8 +3,10 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <liftoff/base/number_text.h>
 #include <liftoff/fem/point_functional.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <tuple>
@@ -19,11 +21,13 @@ namespace liftoff
 
     // The search trees find a cell around the point; a point on an edge or
     // a vertex lies in its neighbours too, some of them perhaps of other
-    // ranks. Of this rank's cells that hold it, take the first in the order
-    // of the active cells; the flag says whether there is one.
-    std::pair<Triangulation<2>::active_cell_iterator, bool>
-    first_owned_cell_around(const Discretization &discretization,
-                            const Point<2>       &point)
+    // ranks. This rank's cells that hold it (its own and its ghosts), the
+    // smallest CellId first: a rule of the mesh alone, where deal.II's own
+    // order of the cells depends on how the mesh was reached (refined in
+    // the run, or loaded from a checkpoint). A rank that owns one of them
+    // has all of them, owned or ghost, since they share the point.
+    std::vector<Triangulation<2>::active_cell_iterator>
+    cells_around(const Discretization &discretization, const Point<2> &point)
     {
       const auto first = GridTools::find_active_cell_around_point(
         discretization.grid_cache(),
@@ -31,8 +35,7 @@ namespace liftoff
         typename Triangulation<2>::active_cell_iterator(),
         {},
         tolerance);
-      typename Triangulation<2>::active_cell_iterator found;
-      bool                                            is_found = false;
+      std::vector<Triangulation<2>::active_cell_iterator> cells;
       if (first.first.state() == IteratorState::valid)
         for (const auto &[cell, unit] :
              GridTools::find_all_active_cells_around_point(
@@ -41,14 +44,12 @@ namespace liftoff
                point,
                tolerance,
                first))
-          if (cell->is_locally_owned()
-              && (!is_found
-                  || cell->active_cell_index() < found->active_cell_index()))
-            {
-              found    = cell;
-              is_found = true;
-            }
-      return {found, is_found};
+          if (!cell->is_artificial())
+            cells.push_back(cell);
+      std::sort(cells.begin(), cells.end(), [](const auto &a, const auto &b) {
+        return a->id() < b->id();
+      });
+      return cells;
     }
 
 
@@ -103,11 +104,10 @@ namespace liftoff
     std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
     nearest_holder(const Discretization &discretization, const Point<2> &point)
     {
-      const MPI_Comm    comm    = discretization.mpi_communicator;
-      const std::string outside = "The point (" + std::to_string(point[0])
-                                  + ", " + std::to_string(point[1])
-                                  + ") lies outside the meshed part of the "
-                                  + "plate.";
+      const MPI_Comm    comm = discretization.mpi_communicator;
+      const std::string outside =
+        "The point (" + format_point(point[0], point[1])
+        + ") lies outside the meshed part of the " + "plate.";
       AssertThrow(discretization.geometry().is_on_modelled_part(point),
                   ExcMessage(outside));
       const auto [cell, unit, distance] =
@@ -124,26 +124,46 @@ namespace liftoff
   } // namespace
 
 
-  std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
-  PointFunctional::holder_cell(const Discretization &discretization,
-                               const Point<2>       &point)
+  PointCells
+  PointFunctional::holder_cells(const Discretization &discretization,
+                                const Point<2>       &point)
   {
-    const MPI_Comm comm = discretization.mpi_communicator;
-    const auto [found, is_found] =
-      first_owned_cell_around(discretization, point);
+    const MPI_Comm comm  = discretization.mpi_communicator;
+    const auto     cells = cells_around(discretization, point);
+    // The owner of the first cell, whatever the partition.
+    const bool holds = !cells.empty() && cells.front()->is_locally_owned();
 
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int holder =
-      Utilities::MPI::min(is_found ? my_rank : n_ranks, comm);
+      Utilities::MPI::min(holds ? my_rank : n_ranks, comm);
+    PointCells found;
     if (holder == n_ranks)
-      return nearest_holder(discretization, point);
+      {
+        const auto nearest = nearest_holder(discretization, point);
+        if (nearest.first.state() == IteratorState::valid)
+          found.push_back(nearest);
+        return found;
+      }
     if (holder != my_rank)
+      return found;
+    for (const auto &cell : cells)
+      found.emplace_back(
+        dof_cell(discretization, cell),
+        GeometryInfo<2>::project_to_unit_cell(
+          discretization.mapping().transform_real_to_unit_cell(cell, point)));
+    return found;
+  }
+
+
+  std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
+  PointFunctional::holder_cell(const Discretization &discretization,
+                               const Point<2>       &point)
+  {
+    const auto cells = holder_cells(discretization, point);
+    if (cells.empty())
       return {};
-    return {dof_cell(discretization, found),
-            GeometryInfo<2>::project_to_unit_cell(
-              discretization.mapping().transform_real_to_unit_cell(found,
-                                                                   point))};
+    return cells.front();
   }
 
 

@@ -161,21 +161,23 @@ namespace liftoff
       field.reinit(point_dofs.locally_owned_dofs(), disc.mpi_communicator);
     std::vector<types::global_dof_index> indices(element.n_dofs_per_cell());
     unsigned int                         i = 0;
-    for (const auto &cell : point_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(indices);
-          for (const auto index : indices)
-            {
-              for (unsigned int e = 0; e < kinds.size(); ++e)
-                {
-                  fields[2 * e][index] =
-                    kinds[e].sign * envelopes[e].extreme[i];
-                  fields[2 * e + 1][index] = envelopes[e].time[i];
-                }
-              ++i;
-            }
-        }
+    for (const auto &owned : disc.locally_owned_cells())
+      {
+        const DoFHandler<2>::active_cell_iterator cell(&disc.triangulation,
+                                                       owned->level(),
+                                                       owned->index(),
+                                                       &point_dofs);
+        cell->get_dof_indices(indices);
+        for (const auto index : indices)
+          {
+            for (unsigned int e = 0; e < kinds.size(); ++e)
+              {
+                fields[2 * e][index] = kinds[e].sign * envelopes[e].extreme[i];
+                fields[2 * e + 1][index] = envelopes[e].time[i];
+              }
+            ++i;
+          }
+      }
     FieldDataOut                                   data_out;
     std::map<std::string, PhysicalUnits::Quantity> quantities;
     data_out.attach_dof_handler(point_dofs);

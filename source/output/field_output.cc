@@ -487,6 +487,7 @@ namespace liftoff
     plane.build_patches(disc.mapping(),
                         subdivisions > 0 ? subdivisions
                                          : disc.element().degree());
+    plane.sort_patches(disc.locally_owned_cells());
   }
 
 

@@ -63,26 +63,28 @@ namespace liftoff
     std::vector<double>         w(n);
     point_list.clear();
     value_list.clear();
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          resultants.evaluate(cell, fe_values, fields);
-          fe_values[FEValuesExtractors::Scalar(0)].get_function_values(solution,
-                                                                       w);
-          const auto &x = fe_values.get_quadrature_points();
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              const double g = (law.has_gap() ? law.gap_at(x[k]) : 0.0);
-              Values       v;
-              v.w        = w[k];
-              v.pressure = law.spring_pressure(w[k] - g);
-              v.m_1      = fields[k][m_1];
-              v.m_2      = fields[k][m_2];
-              v.shear    = std::hypot(fields[k][q_x], fields[k][q_y]);
-              point_list.push_back(x[k]);
-              value_list.push_back(v);
-            }
-        }
+    // In the order of the cells' CellId: of two equal extremes (a vertex
+    // of several cells) the first is taken, which must not depend on how
+    // the mesh was reached (refined in the run or loaded at a resume).
+    for (const auto &cell : disc.locally_owned_cells())
+      {
+        fe_values.reinit(cell);
+        resultants.evaluate(cell, fe_values, fields);
+        fe_values[FEValuesExtractors::Scalar(0)].get_function_values(solution,
+                                                                     w);
+        const auto &x = fe_values.get_quadrature_points();
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const double g = (law.has_gap() ? law.gap_at(x[k]) : 0.0);
+            Values       v;
+            v.w        = w[k];
+            v.pressure = law.spring_pressure(w[k] - g);
+            v.m_1      = fields[k][m_1];
+            v.m_2      = fields[k][m_2];
+            v.shear    = std::hypot(fields[k][q_x], fields[k][q_y]);
+            point_list.push_back(x[k]);
+            value_list.push_back(v);
+          }
+      }
   }
 } // namespace liftoff

@@ -169,12 +169,12 @@ namespace liftoff
 
     /// w or a stress resultant at a unit point of a cell.
     double
-    value_at(const Discretization                      &disc,
-             const StressResultants                    &resultants,
-             const LA::MPI::Vector                     &ghosted_u,
-             const std::string                         &quantity,
-             const DoFHandler<2>::active_cell_iterator &cell,
-             const Point<2>                            &unit_point)
+    value_in_cell(const Discretization                      &disc,
+                  const StressResultants                    &resultants,
+                  const LA::MPI::Vector                     &ghosted_u,
+                  const std::string                         &quantity,
+                  const DoFHandler<2>::active_cell_iterator &cell,
+                  const Point<2>                            &unit_point)
     {
       FEValues<2> fe_values(disc.mapping(),
                             disc.dof_handler.get_fe(),
@@ -192,6 +192,35 @@ namespace liftoff
       std::vector<Vector<double>> fields;
       resultants.evaluate(cell, fe_values, fields);
       return fields[0][StressResultants::field_index(quantity)];
+    }
+
+
+    /// w or a stress resultant at a point, from the cells around it (the
+    /// holder's, PointFunctional::holder_cells()). w is continuous: the
+    /// first cell's value, as a probe point takes it. A stress resultant
+    /// jumps across the edges of the cells (its derivatives of the
+    /// solution are continuous only inside a cell), so a point on an edge
+    /// or a vertex has one value on each side, and no side is the right
+    /// one: the mean of the sides', in the order of the cells' CellId,
+    /// which the exact, continuous field's value approaches as the mesh
+    /// is refined, and which does not depend on the order of the cells.
+    double
+    value_at(const Discretization   &disc,
+             const StressResultants &resultants,
+             const LA::MPI::Vector  &ghosted_u,
+             const std::string      &quantity,
+             const PointCells       &cells)
+    {
+      const unsigned int n   = quantity == "w" ? 1 : cells.size();
+      double             sum = 0;
+      for (unsigned int c = 0; c < n; ++c)
+        sum += value_in_cell(disc,
+                             resultants,
+                             ghosted_u,
+                             quantity,
+                             cells[c].first,
+                             cells[c].second);
+      return sum / n;
     }
   } // namespace
 
@@ -237,8 +266,9 @@ namespace liftoff
       "history.csv at every step: a comma-separated list of NAME(x; y) with "
       "NAME one of M_xx, M_yy, M_xy, Q_x, Q_y, M_1, M_2, M_1_angle, "
       "sigma_xx, sigma_yy, sigma_xy, sigma_max (the fields of `Moment "
-      "fields`, doc/model.md), e.g. `M_xx(0.25; 0), Q_x(0.5; 0)`. At a "
-      "point on a cell edge the value is that of one cell beside it.");
+      "fields`, doc/model.md), e.g. `M_xx(0.25; 0), Q_x(0.5; 0)`. The "
+      "fields jump across cell edges: at a point on an edge or a vertex the "
+      "value is the mean of the cells that meet there.");
     prm.declare_entry(
       "Write moment extremes",
       "false",
@@ -273,7 +303,7 @@ namespace liftoff
     quantity_probes.clear();
     for (const auto &[quantity, point] :
          parse_quantity_list(prm.get("Probe quantities")))
-      quantity_probes.push_back({quantity, point, {}, {}});
+      quantity_probes.push_back({quantity, point, {}});
     riding_probes.clear();
     for (const auto &[quantity, load] :
          parse_riding_probes(prm.get("Riding probes")))
@@ -541,8 +571,7 @@ namespace liftoff
     for (auto &probe : quantity_probes)
       {
         const Point<2> image = disc.geometry().to_modelled_part(probe.point);
-        std::tie(probe.cell, probe.unit_point) =
-          PointFunctional::holder_cell(disc, image);
+        probe.cells          = PointFunctional::holder_cells(disc, image);
         // A point of a mirrored part takes the value at its image, with
         // the sign the reflection gives the field.
         probe.sign = mirror_sign(probe.quantity, probe.point, image);
@@ -651,7 +680,6 @@ namespace liftoff
         QuantityProbe probe{rider.quantity,
                             Point<2>(row.moving_loads[3 * rider.index],
                                      row.moving_loads[3 * rider.index + 1]),
-                            {},
                             {}};
         // Every rank decides alike, so holder_cell() (collective) is
         // called by all or none; off the plate the cell stays invalid.
@@ -659,9 +687,8 @@ namespace liftoff
           {
             const Point<2> image =
               disc.geometry().to_modelled_part(probe.point);
-            std::tie(probe.cell, probe.unit_point) =
-              PointFunctional::holder_cell(disc, image);
-            probe.sign = mirror_sign(probe.quantity, probe.point, image);
+            probe.cells = PointFunctional::holder_cells(disc, image);
+            probe.sign  = mirror_sign(probe.quantity, probe.point, image);
           }
         probes.push_back(probe);
       }
@@ -684,14 +711,13 @@ namespace liftoff
     for (unsigned int k = 0; k < probes.size(); ++k)
       {
         const QuantityProbe &probe = probes[k];
-        if (probe.cell.state() == IteratorState::valid)
+        if (!probe.cells.empty())
           values[k] = probe.sign
                       * value_at(disc,
                                  resultants,
                                  step.state.ghosted_u,
                                  probe.quantity,
-                                 probe.cell,
-                                 probe.unit_point);
+                                 probe.cells);
       }
     Utilities::MPI::sum(values, disc.mpi_communicator, values);
     return values;

@@ -91,6 +91,37 @@ namespace liftoff
   }
 
 
+  void
+  FieldDataOut::sort_patches(
+    const std::vector<DoFHandler<2>::active_cell_iterator> &cells)
+  {
+    if (cells.empty())
+      return;
+    const Triangulation<2>   &tria = cells.front()->get_triangulation();
+    std::vector<unsigned int> position(tria.n_active_cells(),
+                                       numbers::invalid_unsigned_int);
+    for (unsigned int k = 0; k < cells.size(); ++k)
+      position[cells[k]->active_cell_index()] = k;
+    // Patch i is of the i-th own cell in deal.II's order.
+    std::vector<unsigned int> new_index;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        new_index.push_back(position[cell->active_cell_index()]);
+    AssertThrow(new_index.size() == patches.size(), ExcInternalError());
+    std::vector<Patch> sorted(patches.size());
+    for (unsigned int i = 0; i < patches.size(); ++i)
+      {
+        Patch &patch      = sorted[new_index[i]];
+        patch             = std::move(patches[i]);
+        patch.patch_index = new_index[i];
+        for (unsigned int &neighbor : patch.neighbors)
+          if (neighbor != Patch::no_neighbor)
+            neighbor = new_index[neighbor];
+      }
+    patches.swap(sorted);
+  }
+
+
   // Every file goes to a temporary name first and is renamed when
   // complete, and the record naming the pieces is written only after every
   // rank has renamed its piece: a viewer never finds a half-written file.

@@ -205,14 +205,14 @@ namespace liftoff
                        const std::vector<Point<2>>    &points) const;
 
     /// A probe of a stress resultant: its field, its point and, on the
-    /// rank that holds the point, its cell and unit point.
+    /// rank that holds the point, the cells around it with the point's
+    /// unit coordinates (PointFunctional::holder_cells()).
     struct QuantityProbe
     {
-      std::string                         quantity;
-      Point<2>                            point;
-      DoFHandler<2>::active_cell_iterator cell;
-      Point<2>                            unit_point;
-      double                              sign = 1;
+      std::string quantity;
+      Point<2>    point;
+      PointCells  cells;
+      double      sign = 1;
     };
     std::vector<QuantityProbe> quantity_probes;
     std::vector<double>

@@ -38,6 +38,15 @@ namespace liftoff
     put_in_units_of(
       const PhysicalUnits                                  &units,
       const std::map<std::string, PhysicalUnits::Quantity> &quantities);
+
+    /// Puts the patches of build_patches() (one per own cell, in deal.II's
+    /// order of the active cells) in the order of `cells`, this rank's own
+    /// cells. deal.II's order depends on how a mesh was reached: a resumed
+    /// adaptive run, whose mesh is loaded from its checkpoint, then writes
+    /// the cells in the order of the run without a stop. (deal.II 9.4's
+    /// DataOut::set_cell_selection() takes the cells in its own order only.)
+    void
+    sort_patches(const std::vector<DoFHandler<2>::active_cell_iterator> &cells);
   };
 
 
