@@ -41,7 +41,7 @@ from scipy.integrate import quad, solve_bvp
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
 from scenes import (pressed_plate, read_history,  # noqa: E402
-                    run_scene_or_fail, scene_text)
+                    run_scene, run_scene_or_fail, scene_text)
 
 LIFTOFF = sys.argv[1]
 AI, A, Q, NU, CHI, DELTA = 0.2, 0.5, 1.0, 0.3, 5.0 / 6.0, 0.05
@@ -136,5 +136,15 @@ with tempfile.TemporaryDirectory() as work:
               "falls at least like h^2")
         check(errors[-1] < 1e-4, f"Inner {inner}, Outer {outer}: error "
               f"{errors[-1]:.2e} < 1e-4 on 3 refinements")
+
+    # The default probe (0, 0) lies in the hole: the scene runs without it
+    # and says so.
+    text = scene("clamped", "free", 0).replace("set Probe points", "#")
+    folder, result = run_scene(LIFTOFF, work, "default_probe", text)
+    columns = read_history(folder) if result.returncode == 0 else {}
+    check(result.returncode == 0 and "lies in the hole" in result.stdout
+          and not any(c.startswith("w(") for c in columns),
+          "an annulus without Probe points runs, with no probe column and "
+          f"a note (exit {result.returncode}: {result.stderr.strip()})")
 
 finish()
