@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values_extractors.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/located_maximum.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
@@ -137,7 +138,8 @@ namespace liftoff
         "columns (point_load_N, patch_load_N, vehicle_N: the path's point), "
         "e.g. `w@patch_load_1, M_xx@patch_load_1`; the column is so named. "
         "The value is taken at the load's position of the row; 0 while it is "
-        "off the plate (its `_on` column says when).");
+        "off the plate (its `_on` column says when)."
+          + quantity("text"));
     }
 
 
@@ -202,7 +204,8 @@ namespace liftoff
                      Patterns::List::max_int_value,
                      ";"),
       "Points x, y of the full plate, separated by ';', whose "
-      "deflection w is written to history.csv at every step.");
+      "deflection w is written to history.csv at every step."
+        + quantity("position"));
     prm.declare_entry("Write energies",
                       "true",
                       Patterns::Bool(),
@@ -231,7 +234,8 @@ namespace liftoff
       "NAME one of M_xx, M_yy, M_xy, Q_x, Q_y, M_1, M_2, M_1_angle, "
       "sigma_xx, sigma_yy, sigma_xy, sigma_max (the fields of `Moment "
       "fields`, doc/model.md), e.g. `M_xx(0.25; 0), Q_x(0.5; 0)`. At a "
-      "point on a cell edge the value is that of one cell beside it.");
+      "point on a cell edge the value is that of one cell beside it."
+        + quantity("position"));
     prm.declare_entry(
       "Write moment extremes",
       "false",
