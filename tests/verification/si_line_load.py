@@ -23,12 +23,14 @@ its resultant [N] is Magnitude [N/m] times the segment's length [m].
     si_line_load.py LIFTOFF
 """
 
-import csv
 import math
 import os
-import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+from checks import check, finish  # noqa: E402
+from scenes import read_history, run_scene  # noqa: E402
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 
@@ -36,14 +38,6 @@ L, H, E, NU, RHO, K = 5.0, 0.25, 30e9, 0.2, 2400.0, 50e6
 D = E * H**3 / (12 * (1 - NU**2))
 F0 = D / L
 Q = 10e3
-
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print(("PASS " if ok else "FAIL ") + what)
-    failures += not ok
 
 
 BED = """
@@ -74,27 +68,25 @@ end
 """ % (L, H, E, RHO, K)
 
 
-def run(scene):
-    """history.csv's rows as dicts, or None with liftoff's message."""
+def resultant(scene):
+    """The bed's resultant of every row of history.csv, or None with
+    liftoff's message."""
     with tempfile.TemporaryDirectory() as work:
-        text = scene + "\nsubsection Output\n  set Directory = out\n" \
-            "  set Write foundation resultant = true\nend\n"
-        done = subprocess.run([LIFTOFF, "-q", "-"], input=text, cwd=work,
-                              capture_output=True, text=True)
+        folder, done = run_scene(LIFTOFF, work, "scene", scene + """
+subsection Output
+  set Write foundation resultant = true
+end
+""", ["-q"])
         if done.returncode != 0:
             print(done.stderr.strip())
             return None
-        with open(os.path.join(work, "out", "history.csv")) as f:
-            return list(csv.DictReader(f))
-
-
-def resultant(rows):
-    key = [k for k in rows[0] if k.startswith("resultant")][0]
-    return [float(r[key]) for r in rows]
+        history = read_history(folder)
+        key = [k for k in history if k.startswith("resultant")][0]
+        return [float(v) for v in history[key]]
 
 
 def static_si(segment):
-    return run(UNITS + BED % "" + """
+    return resultant(UNITS + BED % "" + """
 subsection Analysis
   set Type = static
 end
@@ -132,10 +124,10 @@ end
 def moving(gamma):
     """The moving line of the SI scene against the twin, row by row."""
     t0 = L * L * math.sqrt(RHO * H / D)
-    rows = run(UNITS + BED % "" + MOVING % (
+    si = resultant(UNITS + BED % "" + MOVING % (
         t0 / 100, t0 * 0.3, Q, -0.4, 0.4, "-1.5 + 100*t; 0.3", -4, 1,
         t0 * 0.1))
-    twin = run(BED % ("  set Stiffness = %.17g" % gamma) + """
+    twin = resultant(BED % ("  set Stiffness = %.17g" % gamma) + """
 subsection Plate
   set Thickness ratio = %.17g
 end
@@ -143,13 +135,12 @@ end
         0.01, 0.3, Q / (F0 / L), -0.4 / L, 0.4 / L,
         "(-1.5 + 100*(%.17g*tau))/%g; 0.3/%g" % (t0, L, L), -4 / L, 1 / L,
         0.1))
-    check(rows is not None, "a moving SI line with Profile follows and "
+    check(si is not None, "a moving SI line with Profile follows and "
           "Profile start = -4, 0 m (an offset) runs")
-    if rows is None or twin is None:
+    if si is None or twin is None:
         check(False, "the moving line's twin runs")
         return
-    si = resultant(rows)
-    dimensionless = [r * F0 for r in resultant(twin)]
+    dimensionless = [r * F0 for r in twin]
     error = max(abs(a - b) for a, b in zip(si, dimensionless))
     check(len(si) == len(dimensionless) and error < 1e-8 * Q,
           "moving SI line: bed resultant [N] against the twin's x F0 over %d "
@@ -159,12 +150,12 @@ end
 
 def main():
     rows = static_si("-0.4, 0, 0.4, 0")
-    got = resultant(rows)[0] if rows else math.nan
+    got = rows[0] if rows else math.nan
     check(abs(got - Q * 0.8) < 1e-6 * Q, "SI static line load: bed resultant "
           "%.6g N, Magnitude x length = %.6g N" % (got, Q * 0.8))
 
     gamma = K * L**4 / D
-    twin = run(BED % ("  set Stiffness = %.17g" % gamma) + """
+    twin = resultant(BED % ("  set Stiffness = %.17g" % gamma) + """
 subsection Analysis
   set Type = static
 end
@@ -178,19 +169,18 @@ subsection Loads
   end
 end
 """ % (H / L, Q / (F0 / L), -0.4 / L, 0.4 / L))
-    twin_n = resultant(twin)[0] * F0 if twin else math.nan
+    twin_n = twin[0] * F0 if twin else math.nan
     check(abs(twin_n - got) < 1e-9 * Q, "the dimensionless twin's resultant "
           "x F0 = %.6g N, the SI scene's %.6g N" % (twin_n, got))
 
     rows = static_si("-1, 0, 1, 0")
-    got = resultant(rows)[0] if rows else math.nan
+    got = rows[0] if rows else math.nan
     check(abs(got - Q * 2) < 1e-6 * Q, "Segment = -1, 0, 1, 0 m on a 5 m "
           "plate runs: %.6g N, expected %.6g N" % (got, Q * 2))
 
     moving(gamma)
-    print("%d failure(s)" % failures)
-    return 1 if failures else 0
+    finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()
