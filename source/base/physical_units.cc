@@ -1,9 +1,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/base/physical_units.h>
+#include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 
 #include <boost/property_tree/json_parser.hpp>
@@ -30,15 +32,26 @@ namespace liftoff
                                              System::dimensionless},
                                             {"SI", System::si}};
 
-    // The dimensionless groups an SI scene gives by its physical entries:
-    // a scene that sets both is refused, naming both.
-    const std::vector<std::pair<std::string, std::string>> replaced_entries = {
-      {"Plate/Aspect ratio", "Units/Width"},
-      {"Plate/Thickness ratio", "Units/Thickness"},
-      {"Foundation/Stiffness", "Units/Subgrade modulus"},
-      {"Foundation/Damping", "Units/Dashpot coefficient"},
-      {"Foundation/Shear modulus", "Units/Shear layer modulus"},
-      {"Loads/Self weight", "Units/Density and Units/Gravity"}};
+    // The dimensionless groups an SI scene gives by the entries of Units,
+    // by the names their owners declare them with (entry_quantity.h): the
+    // entries that give each, which a scene must not set beside the group,
+    // and the formula that errors of the group's range quote.
+    struct GroupSource
+    {
+      std::string physical, formula;
+    };
+    const std::map<std::string, GroupSource> group_sources = {
+      {"mu", {"Units/Width", "Units/Width / Length"}},
+      {"Delta", {"Units/Thickness", "Units/Thickness / Units/Length"}},
+      {"Gamma", {"Units/Subgrade modulus", "Units/Subgrade modulus k L^4 / D"}},
+      {"damping",
+       {"Units/Dashpot coefficient",
+        "Units/Dashpot coefficient C L^2 / sqrt(rho H D)"}},
+      {"shear layer",
+       {"Units/Shear layer modulus", "Units/Shear layer modulus G_f L^2 / D"}},
+      {"self weight",
+       {"Units/Density and Units/Gravity",
+        "Units/Density * Gravity * Thickness"}}};
 
     // The shortest text that reads back as x, so that the dimensionless
     // scene is the SI one exactly.
@@ -92,7 +105,7 @@ namespace liftoff
 
     struct Entry
     {
-      std::string value, default_value;
+      std::string value, default_value, documentation;
     };
 
     // Every entry of `prm` by its path "Subsection/Entry", with its value
@@ -112,12 +125,27 @@ namespace liftoff
           for (const auto &[key, child] : node)
             if (const auto value = child.get_optional<std::string>("value"))
               entries[path + key] = {*value,
-                                     child.get<std::string>("default_value")};
+                                     child.get<std::string>("default_value"),
+                                     child.get<std::string>("documentation")};
             else
               collect(child, path + key + "/");
         };
       collect(tree, "");
       return entries;
+    }
+
+    // The groups an SI scene must not set, and the entries whose default
+    // stays dimensionless (a disc's radius L / 2) unless the scene sets
+    // them, by the quantity their owners declared.
+    void
+    watch_declared(ParameterHandler &prm)
+    {
+      for (const auto &[path, entry] : entries_of(prm))
+        if (const auto quantities = declared_quantities(entry.documentation);
+            !quantities.empty()
+            && (group_sources.count(quantities[0]) == 1
+                || converts_only_if_set(entry.documentation)))
+          watch(prm, path);
     }
 
     // Sets `path` of `prm` to `value`, which the scene gave as `written`; a
@@ -150,61 +178,74 @@ namespace liftoff
                              + error));
     }
 
-    // A list of numbers divided by `unit` one by one.
-    std::string
-    divided_list(const std::string &text,
-                 const double       unit,
-                 const char         separator = ',')
+    // The items of `text` and the separator after each (',' or ';'; none
+    // after the last): split at ',' and ';' outside parentheses, so that a
+    // muParser call if(a, b, c) is one item.
+    std::vector<std::pair<std::string, std::string>>
+    items_of(const std::string &text)
     {
-      std::string result;
-      for (const double x : Utilities::string_to_double(
-             Utilities::split_string_list(text, separator)))
-        result += (result.empty() ? "" : std::string(1, separator) + " ")
-                  + exact(x / unit);
-      return result;
+      std::vector<std::pair<std::string, std::string>> items;
+      std::string                                      item;
+      int                                              depth = 0;
+      for (const char c : text)
+        {
+          depth += (c == '(') - (c == ')');
+          if (depth == 0 && (c == ',' || c == ';'))
+            {
+              items.emplace_back(Utilities::trim(item), std::string(1, c));
+              item.clear();
+            }
+          else
+            item += c;
+        }
+      items.emplace_back(Utilities::trim(item), "");
+      return items;
     }
+
+    // Whether `text` is a muParser expression in x, y, t: what is not (a
+    // keyword as 'whole plate', or an expression the user mistyped) is
+    // passed on as written, for the entry's owner to read or refuse.
+    bool
+    is_expression(const std::string &text)
+    {
+      try
+        {
+          parse_expression<2>("", text, 1, "x,y,t", true);
+          return true;
+        }
+      catch (...)
+        {
+          return false;
+        }
+    }
+
     /**
-     * The entries of an SI scene written into its dimensionless twin
-     * `out`: values divided by their unit, lists of points and times,
-     * muParser expressions in x, y [m] and t [s] rewritten in the solver's
-     * x, y and tau. Each error names the entry as the user wrote it.
+     * The entries of an SI scene written into its dimensionless twin `out`,
+     * each by the quantity its owner declared with it (entry_quantity.h):
+     * numbers divided by their unit, muParser expressions in x, y [m] and
+     * t [s] rewritten in the solver's x, y and tau and divided by their
+     * unit, the groups given by the entries of Units. Each error names the
+     * entry as the user wrote it.
      */
     struct SceneConverter
     {
-      std::map<std::string, Entry> entries;
-      ParameterHandler            &out;
-      double                       length, width, t0, w_unit, psi_unit;
+      std::map<std::string, Entry>  entries;
+      const ParameterHandler       &scene;
+      ParameterHandler             &out;
+      double                        length, width, t0;
+      std::map<std::string, double> units;
 
-      void
-      set(const std::string &path,
-          const double       value,
-          const std::string &written) const
-      {
-        set_entry(out, path, exact(value), written);
-      }
-
-      double
-      value(const std::string &path) const
-      {
-        return Utilities::string_to_double(entries.at(path).value);
-      }
-
+      // x, y [m] and t [s] of `si` as the solver's x, y and tau.
       std::string
-      expression(const std::string &path) const
+      expression(const std::string &si) const
       {
         static const std::regex name("[A-Za-z_][A-Za-z0-9_]*");
-        const std::string       si = entries.at(path).value;
         std::string             result;
         auto                    from = si.cbegin();
         for (std::sregex_iterator i(si.begin(), si.end(), name), end; i != end;
              ++i)
           {
             const std::string word = i->str();
-            AssertThrow(word != "tau",
-                        ExcMessage(path + " = <" + si
-                                   + ">: a scene with Units/System = SI "
-                                     "writes time as t in seconds, not "
-                                     "tau."));
             result.append(from, (*i)[0].first);
             from = (*i)[0].second;
             if (word == "x" || word == "y")
@@ -215,17 +256,6 @@ namespace liftoff
               result += word;
           }
         return result.append(from, si.cend());
-      }
-
-      void
-      set_expression(const std::string &path,
-                     const std::string &prefix = "",
-                     const std::string &suffix = "") const
-      {
-        set_entry(out,
-                  path,
-                  prefix + expression(path) + suffix,
-                  path + " = <" + entries.at(path).value + ">");
       }
 
       // A point the scene gives in metres from the plate's centre is
@@ -251,182 +281,119 @@ namespace liftoff
                                + "] m with its centre at the origin."));
       }
 
-      // Points "x, y" separated by `separator`, in metres from the
-      // plate's centre; one outside the plate is refused in metres.
-      void
-      set_positions(const std::string &path, const char separator = ';') const
+      // NAME(x; y) of a probe quantity: x, y a position in metres (other
+      // forms are checked where the twin is read).
+      std::string
+      named_point(const std::string &path, const std::string &item) const
       {
-        std::string result;
-        for (const std::string &point :
-             Utilities::split_string_list(entries.at(path).value, separator))
-          {
-            const auto xy = Utilities::string_to_double(
-              Utilities::split_string_list(point, ','));
-            check_on_plate(path, point, xy[0], xy[1]);
-            result += (result.empty() ? "" : std::string(1, separator) + " ")
-                      + divided_list(point, length);
-          }
-        set_entry(out,
-                  path,
-                  result,
-                  path + " = " + entries.at(path).value + " [m]");
+        static const std::regex named(R"(([^()]*)\(([^;()]*);([^;()]*)\))");
+        std::smatch             m;
+        if (!std::regex_match(item, m, named))
+          return item;
+        const std::string x = Utilities::trim(m[2]), y = Utilities::trim(m[3]);
+        if (!Patterns::Double().match(x) || !Patterns::Double().match(y))
+          return item;
+        const double px = Utilities::string_to_double(x),
+                     py = Utilities::string_to_double(y);
+        check_on_plate(path, "(" + m[2].str() + ";" + m[3].str() + ")", px, py);
+        return m[1].str() + "(" + exact(px / length) + "; " + exact(py / length)
+               + ")";
       }
 
-      // Every numbered load of Loads: its magnitude in N, Pa or N/m, its
-      // position or region in m, its expressions.
+      /// One item of `path` in the quantity `unit`; `point` collects the
+      /// coordinates of a position until both are there.
+      std::string
+      converted_item(const std::string   &path,
+                     const std::string   &item,
+                     const std::string   &unit,
+                     std::vector<double> &point,
+                     std::string         &point_text) const
+      {
+        if (unit == "text" || item.empty())
+          return item;
+        const double scale = units.at(unit);
+        if (Patterns::Double().match(item))
+          {
+            const double x = Utilities::string_to_double(item);
+            if (unit == "position")
+              {
+                point.push_back(x);
+                point_text += (point_text.empty() ? "" : ", ") + item;
+                if (point.size() == 2)
+                  check_on_plate(path, point_text, point[0], point[1]);
+                if (point.size() == 2)
+                  point.clear(), point_text.clear();
+              }
+            return exact(x / scale);
+          }
+        if (unit == "position" && item.find('(') != std::string::npos)
+          return named_point(path, item);
+        // tau is refused even where the expression is not one in x, y, t.
+        static const std::regex tau(R"(\btau\b)");
+        AssertThrow(!std::regex_search(item, tau),
+                    ExcMessage(path + " = <" + entries.at(path).value
+                               + ">: a scene with Units/System = SI writes "
+                                 "time as t in seconds, not tau."));
+        if (!is_expression(item))
+          return item;
+        const std::string rewritten = expression(item);
+        return scale == 1 ? rewritten : "(" + rewritten + ")/" + exact(scale);
+      }
+
+      /// The value of `path` in the twin, by the quantities its owner
+      /// declared (the items take them in turn).
+      std::string
+      converted(const std::string &path, const Entry &entry) const
+      {
+        const std::vector<std::string> quantities =
+          declared_quantities(entry.documentation);
+        std::string         result, point_text;
+        std::vector<double> point;
+        const auto          items = items_of(entry.value);
+        for (unsigned int k = 0; k < items.size(); ++k)
+          result += converted_item(path,
+                                   items[k].first,
+                                   quantities[k % quantities.size()],
+                                   point,
+                                   point_text)
+                    + items[k].second + (items[k].second.empty() ? "" : " ");
+        return result;
+      }
+
+      /// Every entry with a declared quantity, into `out`; `changed` gets
+      /// each entry it changed (by its path, the scene's value and the
+      /// twin's), `group_entries` the group of each group entry.
       void
-      loads(const double force, const double pressure, const double line) const
+      convert_all(const std::map<std::string, double>             &groups,
+                  std::map<std::string, PhysicalUnits::Converted> &changed,
+                  std::map<std::string, std::string> &group_entries) const
       {
         for (const auto &[path, entry] : entries)
           {
-            if (path.rfind("Loads/", 0) != 0)
+            const auto quantities = declared_quantities(entry.documentation);
+            if (quantities.empty()
+                || quantities == std::vector<std::string>{"text"}
+                || (converts_only_if_set(entry.documentation)
+                    && !is_set(scene, path)))
               continue;
-            const std::string section = path.substr(0, path.rfind('/') + 1);
-            const std::string name    = path.substr(section.size());
-            const auto        is      = [&](const std::string &kind) {
-              return section.rfind("Loads/" + kind, 0) == 0;
-            };
-            const double unit = is("Point load") || is("Vehicle")    ? force
-                                : is("Pressure") || is("Patch load") ? pressure
-                                                                     : line;
-            if (name == "Magnitude")
-              set(path, value(path) / unit, path + " = " + entry.value);
-            else if (name == "Time history" || name == "Intensity")
-              set_expression(path);
-            else if (name == "Position")
-              set_positions(path);
-            else if (name == "Path" && !entry.value.empty())
-              path_in_metres(path);
-            else if (name == "Size" || name == "Wheel size")
-              set_entry(out,
-                        path,
-                        divided_list(entry.value, length),
-                        path + " = " + entry.value + " [m]");
-            else if (name == "Wheels")
-              wheels_in_metres(path);
-            else if (name == "Region" && entry.value != "whole plate")
-              set_entry(out,
-                        path,
-                        divided_list(entry.value, length),
-                        path + " = " + entry.value + " [m]");
-          }
-      }
-
-      // x(t); y(t) in metres and seconds: t becomes t0 tau, the position
-      // is divided by L.
-      void
-      path_in_metres(const std::string &path) const
-      {
-        const auto xy = Utilities::split_string_list(expression(path), ';');
-        AssertThrow(xy.size() == 2,
-                    ExcMessage(path + " = <" + entries.at(path).value
-                               + "> must be x(t); y(t), two muParser "
-                                 "expressions in t [s] separated by ';'."));
-        set_entry(out,
-                  path,
-                  "(" + xy[0] + ")/" + exact(length) + "; (" + xy[1] + ")/"
-                    + exact(length),
-                  path + " = <" + entries.at(path).value + ">");
-      }
-
-      // dx, dy, share; ... with the offsets in metres.
-      void
-      wheels_in_metres(const std::string &path) const
-      {
-        std::string result;
-        for (const std::string &wheel :
-             Utilities::split_string_list(entries.at(path).value, ';'))
-          {
-            const auto v = Utilities::split_string_list(wheel, ',');
-            AssertThrow(v.size() == 3 && Patterns::Double().match(v[0])
-                          && Patterns::Double().match(v[1]),
-                        ExcMessage(path + " = <" + entries.at(path).value
-                                   + "> must be dx, dy, share; ... with the "
-                                     "offsets in metres."));
-            result += (result.empty() ? "" : "; ")
-                      + divided_list(v[0] + ", " + v[1], length) + ", " + v[2];
-          }
-        set_entry(out,
-                  path,
-                  result,
-                  path + " = " + entries.at(path).value + " [m]");
-      }
-
-      void
-      times_and_points() const
-      {
-        for (const std::string path :
-             {"Time integration/Time step", "Time integration/End time"})
-          set(path, value(path) / t0, path + " = " + entries.at(path).value);
-        const std::string times = "Output/Profile times";
-        set_entry(out,
-                  times,
-                  divided_list(entries.at(times).value, t0),
-                  times + " = " + entries.at(times).value);
-        for (const std::string path : {"Output/Probe points",
-                                       "Output/Profile start",
-                                       "Output/Profile end"})
-          set_positions(path);
-        quantity_probes();
-      }
-
-      // NAME(x; y), ... with x, y in metres from the plate's centre; the
-      // form itself is checked where the dimensionless scene is read.
-      void
-      quantity_probes() const
-      {
-        const std::string path = "Output/Probe quantities";
-        const std::regex  point(R"(\(([^;()]*);([^;()]*)\))");
-        const std::string text = entries.at(path).value;
-        std::string       result;
-        auto              from = text.cbegin();
-        for (std::sregex_iterator i(text.begin(), text.end(), point), end;
-             i != end;
-             ++i)
-          {
-            result.append(from, (*i)[0].first);
-            from                  = (*i)[0].second;
-            const auto coordinate = [&](const std::string &x) {
-              return Patterns::Double().match(Utilities::trim(x))
-                       ? divided_list(x, length)
-                       : x;
-            };
-            const std::string x = (*i)[1].str(), y = (*i)[2].str();
-            if (Patterns::Double().match(Utilities::trim(x))
-                && Patterns::Double().match(Utilities::trim(y)))
-              check_on_plate(path,
-                             (*i)[0].str(),
-                             Utilities::string_to_double(Utilities::trim(x)),
-                             Utilities::string_to_double(Utilities::trim(y)));
-            result += "(" + coordinate(x) + "; " + coordinate(y) + ")";
-          }
-        set_entry(out,
-                  path,
-                  result.append(from, text.cend()),
-                  path + " = " + text + " [m]");
-      }
-
-      // w; psi_x; psi_y in m and rad, and their velocities.
-      void
-      initial_conditions() const
-      {
-        for (const auto &[field, time_unit] :
-             std::vector<std::pair<std::string, double>>{{"Displacement", 1.0},
-                                                         {"Velocity", t0}})
-          {
-            const std::string path = "Initial conditions/" + field;
-            const auto        parts =
-              Utilities::split_string_list(expression(path), ';');
-            AssertThrow(parts.size() == 3,
-                        ExcMessage(path
-                                   + " must be three muParser expressions "
-                                     "separated by ';' (w; psi_x; psi_y)."));
-            set_entry(out,
-                      path,
-                      "(" + parts[0] + ")*" + exact(time_unit / w_unit) + "; ("
-                        + parts[1] + ")*" + exact(time_unit / psi_unit) + "; ("
-                        + parts[2] + ")*" + exact(time_unit / psi_unit),
-                      path + " = <" + entries.at(path).value + ">");
+            std::string twin;
+            if (const auto group = groups.find(quantities[0]);
+                group != groups.end())
+              {
+                twin                = exact(group->second);
+                group_entries[path] = quantities[0];
+                set_entry(out,
+                          path,
+                          twin,
+                          group_sources.at(quantities[0]).formula);
+              }
+            else
+              {
+                twin = converted(path, entry);
+                set_entry(out, path, twin, path + " = " + entry.value);
+              }
+            if (twin != entry.value)
+              changed[path] = {entry.value, twin, quantities[0]};
           }
       }
 
@@ -496,11 +463,7 @@ namespace liftoff
     prm.leave_subsection();
     for (const std::string &path : physical)
       watch(prm, path);
-    for (const auto &[group, physical_entry] : replaced_entries)
-      watch(prm, group);
-    // In metres where an SI scene sets them (convert()).
-    watch(prm, "Discretization/Radius");
-    watch(prm, "Discretization/Inner radius");
+    watch_declared(prm);
   }
 
 
@@ -537,13 +500,16 @@ namespace liftoff
                                  + path + " out."));
         return;
       }
-    for (const auto &[group, physical] : replaced_entries)
-      AssertThrow(!is_set(scene, group),
-                  ExcMessage(group
-                             + " is a dimensionless group, which a scene "
-                               "with Units/System = SI gives by "
-                             + physical + ": leave " + group
-                             + " out (or write the scene dimensionless)."));
+    for (const auto &[path, entry] : entries_of(scene))
+      if (const auto quantities = declared_quantities(entry.documentation);
+          !quantities.empty() && group_sources.count(quantities[0]) == 1)
+        AssertThrow(!is_set(scene, path),
+                    ExcMessage(path
+                               + " is a dimensionless group, which a scene "
+                                 "with Units/System = SI gives by "
+                               + group_sources.at(quantities[0]).physical
+                               + ": leave " + path
+                               + " out (or write the scene dimensionless)."));
     check_physical_values(scene);
 
     bending_stiffness = youngs_modulus * std::pow(thickness, 3)
@@ -643,55 +609,44 @@ namespace liftoff
 
   void
   PhysicalUnits::convert(ParameterHandler &scene,
-                         ParameterHandler &dimensionless) const
+                         ParameterHandler &dimensionless)
   {
     std::stringstream text;
     scene.print_parameters(text, ParameterHandler::ShortPRM);
     dimensionless.parse_input(text, "the scene");
+    const double         w = scale(Quantity::deflection);
     const SceneConverter convert{entries_of(scene),
+                                 scene,
                                  dimensionless,
                                  length,
                                  width,
                                  t0,
-                                 scale(Quantity::deflection),
-                                 f0 * length / bending_stiffness};
-
-    // The plate and the bed.
-    convert.set("Plate/Aspect ratio", width / length, "Units/Width / Length");
-    convert.set("Plate/Thickness ratio",
-                thickness / length,
-                "Units/Thickness / Units/Length");
-    convert.set("Foundation/Stiffness",
-                subgrade_modulus * std::pow(length, 4) / bending_stiffness,
-                "Units/Subgrade modulus k L^4 / D");
-    convert.set("Foundation/Damping",
-                dashpot * length * length
-                  / std::sqrt(density * thickness * bending_stiffness),
-                "Units/Dashpot coefficient C L^2 / sqrt(rho H D)");
-    convert.set("Foundation/Shear modulus",
-                shear_layer * length * length / bending_stiffness,
-                "Units/Shear layer modulus G_f L^2 / D");
-    convert.set("Loads/Self weight",
-                density * gravity * thickness / scale(Quantity::pressure),
-                "Units/Density * Gravity * Thickness");
-    convert.set_expression("Foundation/Initial gap",
-                           "(",
-                           ")/" + exact(convert.w_unit));
-
-    convert.loads(scale(Quantity::force),
-                  scale(Quantity::pressure),
-                  scale(Quantity::shear_force));
-    convert.times_and_points();
-    convert.initial_conditions();
-    // The radii of a disc or an annulus in metres where the scene gives
-    // them; unset, they stay the dimensionless defaults (R = L / 2,
-    // R_i = L / 4).
-    for (const std::string radius :
-         {"Discretization/Radius", "Discretization/Inner radius"})
-      if (is_set(scene, radius))
-        convert.set(radius,
-                    convert.value(radius) / length,
-                    radius + " = " + convert.entries.at(radius).value + " [m]");
+                                 {{"number", 1},
+                                  {"position", length},
+                                  {"length", length},
+                                  {"deflection", w},
+                                  {"rotation", w / length},
+                                  {"time", t0},
+                                  {"force", scale(Quantity::force)},
+                                  {"pressure", scale(Quantity::pressure)},
+                                  {"force per length",
+                                   scale(Quantity::shear_force)},
+                                  {"velocity", w / t0},
+                                  {"angular velocity", w / (length * t0)}}};
+    twin_values.clear();
+    group_entries.clear();
+    convert.convert_all(
+      {{"mu", width / length},
+       {"Delta", thickness / length},
+       {"Gamma", subgrade_modulus * std::pow(length, 4) / bending_stiffness},
+       {"damping",
+        dashpot * length * length
+          / std::sqrt(density * thickness * bending_stiffness)},
+       {"shear layer", shear_layer * length * length / bending_stiffness},
+       {"self weight",
+        density * gravity * thickness / scale(Quantity::pressure)}},
+      twin_values,
+      group_entries);
     convert.reset_physical_entries();
   }
 
@@ -725,7 +680,7 @@ namespace liftoff
     catch (const std::exception &e)
       {
         AssertThrow(false,
-                    ExcMessage(message_of(e)
+                    ExcMessage(in_scene_terms(message_of(e))
                                + " (This SI scene runs as its dimensionless "
                                  "twin, whose numbers the message quotes: "
                                  "lengths in L = "
@@ -735,6 +690,123 @@ namespace liftoff
                                + " N; doc/model.md, \"Scenes in SI "
                                  "units\".)"));
       }
+  }
+
+
+  void
+  PhysicalUnits::explain_run_errors_of(const std::function<void()> &run) const
+  {
+    if (!is_physical())
+      return run();
+    try
+      {
+        run();
+      }
+    catch (const ExcMessage &e)
+      {
+        const std::string message = message_of(e);
+        const std::string terms   = in_scene_terms(message);
+        if (terms == message)
+          throw;
+        AssertThrow(false, ExcMessage(terms));
+      }
+  }
+
+
+  std::string
+  PhysicalUnits::in_scene_terms(std::string message) const
+  {
+    const auto replace = [&](const std::string &from, const std::string &to) {
+      message = Utilities::replace_in_string(message, from, to);
+    };
+    // An owner quotes a value it refuses as <value>: the twin's, not what
+    // the user wrote.
+    for (const auto &[path, entry] : twin_values)
+      {
+        replace("<" + entry.twin + ">", "<" + entry.si + ">");
+        replace("<" + abbreviated(entry.twin) + ">",
+                "<" + abbreviated(entry.si) + ">");
+      }
+    // A group the message names is an entry the scene cannot set.
+    for (const auto &[path, group] : group_entries)
+      if (const auto at = message.find(path); at != std::string::npos)
+        message.insert(at + path.size(),
+                       " (in this SI scene " + origin_of(group) + ")");
+    // A number of the twin beyond 1e100 (or below 1e-100) is a unit of
+    // these Units far from the slab's: the likely cause, whatever
+    // overflowed.
+    for (const auto &[path, entry] : twin_values)
+      for (const auto &[item, separator] :
+           items_of(group_entries.count(path) == 0 ? entry.twin : ""))
+        if (Patterns::Double().match(item))
+          if (const double x = std::abs(Utilities::string_to_double(item));
+              x > 1e100 || (x > 0 && x < 1e-100))
+            return message + " The cause in this SI scene: " + path + " = "
+                   + entry.si + " is " + item + " in the solver's unit of "
+                   + entry.quantity + ", " + unit_origin(entry.quantity) + ".";
+    return message;
+  }
+
+
+  std::string
+  PhysicalUnits::stiffness_origin() const
+  {
+    return "D = E H^3 / (12 (1 - nu^2)) = " + format_number(bending_stiffness)
+           + " N m from Units/Young's modulus = "
+           + format_number(youngs_modulus)
+           + " Pa and Units/Thickness = " + format_number(thickness) + " m";
+  }
+
+
+  std::string
+  PhysicalUnits::unit_origin(const std::string &quantity) const
+  {
+    const std::string plate = stiffness_origin();
+    if (quantity == "time" || quantity == "velocity"
+        || quantity == "angular velocity")
+      return "t0 = L^2 sqrt(rho H / D) = " + format_number(t0)
+             + " s from Units/Density = " + format_number(density)
+             + " kg/m^3, Units/Length = " + format_number(length) + " m and "
+             + plate;
+    if (quantity == "force" || quantity == "pressure"
+        || quantity == "force per length")
+      return "F0 = D / L = " + format_number(f0) + " N from " + plate
+             + " and Units/Length = " + format_number(length) + " m";
+    return "L = Units/Length = " + format_number(length) + " m";
+  }
+
+
+  std::string
+  PhysicalUnits::origin_of(const std::string &group) const
+  {
+    const auto value =
+      [](const std::string &entry, const double x, const std::string &unit) {
+        return "Units/" + entry + " = " + format_number(x) + " " + unit;
+      };
+    const std::string plate = stiffness_origin();
+    const std::string l     = value("Length", length, "m");
+    if (group == "mu")
+      return "W / L = " + format_number(width / length) + " from "
+             + value("Width", width, "m") + " and " + l;
+    if (group == "Delta")
+      return "H / L = " + format_number(thickness / length) + " from "
+             + value("Thickness", thickness, "m") + " and " + l;
+    if (group == "Gamma")
+      return "k L^4 / D = "
+             + format_number(subgrade_modulus * std::pow(length, 4)
+                             / bending_stiffness)
+             + " from " + value("Subgrade modulus", subgrade_modulus, "N/m^3")
+             + ", " + l + " and " + plate;
+    if (group == "damping")
+      return "C L^2 / sqrt(rho H D) from "
+             + value("Dashpot coefficient", dashpot, "Pa s/m") + ", "
+             + value("Density", density, "kg/m^3") + " and " + plate;
+    if (group == "shear layer")
+      return "G_f L^2 / D from "
+             + value("Shear layer modulus", shear_layer, "N/m") + " and "
+             + plate;
+    return "rho g H from " + value("Density", density, "kg/m^3") + " and "
+           + value("Gravity", gravity, "m/s^2");
   }
 
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/contact/contact_law.h>
@@ -33,7 +34,8 @@ namespace liftoff
                         "modulus (at most 1e12: beyond it the plate's "
                         "stiffness is lost in the bed's in double precision; "
                         "at 1e16 a static run gave w 3e4 times too large "
-                        "with a balanced energy, doc/reliability.md).");
+                        "with a balanced energy, doc/reliability.md)."
+                          + quantity("Gamma"));
       prm.declare_entry(
         "Contact tolerance",
         "1e-9",
@@ -48,7 +50,8 @@ namespace liftoff
         "max |w_h|, so the band perturbs the foundation pressure by up to "
         "tolerance times its peak; 1e-3 still covers the worst round-off the "
         "Plate bounds admit (6e-4 at Delta = 1e-5), while a tolerance of 1 "
-        "freezes every status and makes the foundation bilateral.");
+        "freezes every status and makes the foundation bilateral."
+          + quantity("number"));
     }
 
 
@@ -66,7 +69,8 @@ namespace liftoff
         "Gamma (w - g): "
         "g > 0 is a gap (a curled slab, a void), g < 0 a pre-compression (a "
         "settled support). Must be finite on the plate, and symmetric on a "
-        "half or quarter model. The contact tolerance applies to w - g.");
+        "half or quarter model. The contact tolerance applies to w - g."
+          + quantity("deflection"));
       prm.declare_entry(
         "Damping",
         "0",
@@ -77,7 +81,8 @@ namespace liftoff
         "contact, "
         "and the pressure Gamma (w - g) + c w_dot is never tensile: where "
         "spring and dashpot together would pull, the point is out of contact "
-        "(doc/model.md). The dissipated energy becomes a history column.");
+        "(doc/model.md). The dissipated energy becomes a history column."
+          + quantity("damping"));
       prm.declare_entry(
         "Shear modulus",
         "0",
@@ -90,7 +95,8 @@ namespace liftoff
         "(the whole plate when bilateral) and adds -G_p Lap w to the "
         "foundation pressure there. Tensionless: the layer acts only where "
         "the plate is in contact, the layer outside is not modelled "
-        "(doc/model.md); the contact rule w > g is unchanged.");
+        "(doc/model.md); the contact rule w > g is unchanged."
+          + quantity("shear layer"));
     }
   } // namespace
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/fem/initial_conditions.h>
 
@@ -17,12 +18,15 @@ namespace liftoff
                       Patterns::Anything(),
                       "w; psi_x; psi_y at tau = 0 as muParser expressions "
                       "in x, y: w in units of F0 L^2 / D, the rotations in "
-                      "F0 L / D.");
+                      "F0 L / D."
+                        + quantity("deflection, rotation, rotation"));
     prm.declare_entry("Velocity",
                       "0; 0; 0",
                       Patterns::Anything(),
                       "Velocities of w; psi_x; psi_y at tau = 0, in x, y, "
-                      "in the units of Displacement per t0.");
+                      "in the units of Displacement per t0."
+                        + quantity(
+                          "velocity, angular velocity, angular velocity"));
     prm.leave_subsection();
   }
 

@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/fem/load_set.h>
@@ -74,7 +75,7 @@ namespace liftoff
       prm.declare_entry("Path",
                         default_value,
                         Patterns::Anything(),
-                        path_documentation);
+                        path_documentation + quantity("length"));
     }
 
     // The comma-separated numbers of `text`, or refused with `message`.
@@ -167,13 +168,15 @@ namespace liftoff
     declare_load(ParameterHandler            &prm,
                  const std::string           &section,
                  const std::string           &unit,
+                 const std::string           &unit_name,
                  const std::function<void()> &declare_own)
     {
       prm.enter_subsection(section);
       prm.declare_entry("Magnitude",
                         "0",
                         Patterns::Double(),
-                        unit + "; 0 switches the load off.");
+                        unit + "; 0 switches the load off."
+                          + quantity(unit_name));
       declare_own();
       prm.declare_entry(
         "Time history",
@@ -181,7 +184,8 @@ namespace liftoff
         Patterns::Anything(),
         "h(tau), a muParser expression in tau (dimensionless time); the load "
         "is Magnitude * h(tau). Examples: 1 (suddenly applied), tau (linear "
-        "ramp), sin(2*pi*tau/2.5) (pulsating), if(tau<0.1,1,0) (pulse).");
+        "ramp), sin(2*pi*tau/2.5) (pulsating), if(tau<0.1,1,0) (pulse)."
+          + quantity("number"));
       prm.leave_subsection();
     }
     // Whether rectangle b is rectangle a mirrored normal to `axis`.
@@ -268,6 +272,7 @@ namespace liftoff
       declare_load(prm,
                    subsection_name("Patch load", i),
                    "Uniform pressure in units of F0 / L^2",
+                   "pressure",
                    [&]() {
                      prm.declare_entry("Shape",
                                        "rectangle",
@@ -278,13 +283,15 @@ namespace liftoff
                                        "0.1, 0.1",
                                        size_pattern,
                                        "'a, b', the widths along x and y of a "
-                                       "rectangle, or 'd', a disc's diameter.");
+                                       "rectangle, or 'd', a disc's diameter."
+                                         + quantity("length"));
                      declare_path(prm, "0; 0");
                    });
       declare_load(
         prm,
         subsection_name("Vehicle", i),
         "Force in units of F0 that each wheel's share multiplies",
+        "force",
         [&]() {
           declare_path(prm, "0; 0");
           prm.declare_entry(
@@ -293,7 +300,8 @@ namespace liftoff
             Patterns::Anything(),
             "dx, dy, share; dx, dy, share; ...: each wheel's offset from the "
             "path's point and its share of Magnitude; the wheels move "
-            "together.");
+            "together."
+              + quantity("length, length, number"));
           prm.declare_entry("Wheel shape",
                             "point",
                             wheel_shapes.pattern(),
@@ -302,8 +310,44 @@ namespace liftoff
           prm.declare_entry("Wheel size",
                             "0.1, 0.1",
                             size_pattern,
-                            "As Size of a Patch load, for patch wheels.");
+                            "As Size of a Patch load, for patch wheels."
+                              + quantity("length"));
         });
+    }
+
+    // The i-th line load: along an Edge or a Segment, standing or moving.
+    void
+    declare_line_load(ParameterHandler &prm, const unsigned int i)
+    {
+      declare_load(prm,
+                   subsection_name("Line load", i),
+                   "Force per unit length in units of F0 / L",
+                   "force per length",
+                   [&]() {
+                     prm.declare_entry("Edge",
+                                       "Right",
+                                       plate_edges.pattern(),
+                                       "Edge of the full plate that carries "
+                                       "the load, when Segment is empty.");
+                     prm.declare_entry(
+                       "Segment",
+                       "",
+                       Patterns::Anything(),
+                       "x1, y1, x2, y2: a straight line anywhere on the full "
+                       "plate that carries the load instead of an Edge; with "
+                       "a Path its ends are offsets from the path's point and "
+                       "the line moves with it. Each cell it crosses is "
+                       "integrated along its piece (exactly for intensities "
+                       "of degree up to 3 along the line); a piece off the "
+                       "plate carries nothing."
+                         + quantity("length"));
+                     declare_path(prm, "");
+                     prm.declare_entry("Intensity",
+                                       "1",
+                                       Patterns::Anything(),
+                                       "f(x, y, tau) along the line, muParser."
+                                         + quantity("number"));
+                   });
     }
 
     /// The plate as messages about loads off it name it.
@@ -438,7 +482,8 @@ namespace liftoff
       "A time integration starts from the static equilibrium under it (the "
       "slab settled on its bed, in contact wherever q pre-compresses the "
       "springs), with the initial displacement added to that equilibrium; "
-      "the other loads act on top. A static analysis adds it to the loads.");
+      "the other loads act on top. A static analysis adds it to the loads."
+        + quantity("self weight"));
     for (unsigned int i = 1; i <= max_loads_per_kind; ++i)
       declare_numbered_loads(prm, i);
     prm.leave_subsection();
@@ -448,19 +493,25 @@ namespace liftoff
   void
   LoadSet::declare_numbered_loads(ParameterHandler &prm, const unsigned int i)
   {
-    declare_load(
-      prm, subsection_name("Point load", i), "Force in units of F0", [&]() {
-        prm.declare_entry("Position",
-                          "0, 0",
-                          Patterns::List(Patterns::Double(), 2, 2, ","),
-                          "x, y on the full plate (any point, not only "
-                          "nodes), if Path is empty.");
-        declare_path(prm, "");
-      });
+    declare_load(prm,
+                 subsection_name("Point load", i),
+                 "Force in units of F0",
+                 "force",
+                 [&]() {
+                   prm.declare_entry(
+                     "Position",
+                     "0, 0",
+                     Patterns::List(Patterns::Double(), 2, 2, ","),
+                     "x, y on the full plate (any point, not only "
+                     "nodes), if Path is empty."
+                       + quantity("position"));
+                   declare_path(prm, "");
+                 });
     declare_moving_loads(prm, i);
     declare_load(prm,
                  subsection_name("Pressure", i),
                  "Pressure in units of F0 / L^2",
+                 "pressure",
                  [&]() {
                    prm.declare_entry(
                      "Region",
@@ -470,40 +521,16 @@ namespace liftoff
                      "the full plate, anywhere on the mesh: each cell "
                      "the rectangle cuts is integrated over its part "
                      "inside (exactly for intensities of degree up to "
-                     "p+3 in x and in y).");
+                     "p+3 in x and in y)."
+                       + quantity("length"));
                    prm.declare_entry("Intensity",
                                      "1",
                                      Patterns::Anything(),
                                      "f(x, y, tau), muParser; the pressure is "
-                                     "Magnitude * f * h(tau).");
+                                     "Magnitude * f * h(tau)."
+                                       + quantity("number"));
                  });
-    declare_load(prm,
-                 subsection_name("Line load", i),
-                 "Force per unit length in units of F0 / L",
-                 [&]() {
-                   prm.declare_entry("Edge",
-                                     "Right",
-                                     plate_edges.pattern(),
-                                     "Edge of the full plate that carries "
-                                     "the load, when Segment is empty.");
-                   prm.declare_entry(
-                     "Segment",
-                     "",
-                     Patterns::Anything(),
-                     "x1, y1, x2, y2: a straight line anywhere on the full "
-                     "plate that carries the load instead of an Edge; with "
-                     "a Path its ends are offsets from the path's point and "
-                     "the line moves with it. Each cell it crosses is "
-                     "integrated along its piece (exactly for intensities "
-                     "of degree up to 3 along the line); a piece off the "
-                     "plate carries nothing.");
-                   declare_path(prm, "");
-                   prm.declare_entry("Intensity",
-                                     "1",
-                                     Patterns::Anything(),
-                                     "f(x, y, tau) along the line, "
-                                     "muParser.");
-                 });
+    declare_line_load(prm, i);
   }
 
 

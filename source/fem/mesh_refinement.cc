@@ -4,6 +4,7 @@
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/fem/mesh_refinement.h>
 
@@ -122,14 +123,15 @@ namespace liftoff
     prm.declare_entry("Refine fraction",
                       "0.3",
                       Patterns::Double(0.0, 1.0),
-                      "Share of the cells with the largest Kelly indicators "
-                      "that are refined at each adaptation.");
+                      "Share of the cells with the largest Kelly "
+                      "indicators that are refined at each adaptation."
+                        + quantity("number"));
     prm.declare_entry("Coarsen fraction",
                       "0.1",
                       Patterns::Double(0.0, 1.0),
-                      "Share of the cells with the smallest Kelly "
-                      "indicators that are coarsened at each adaptation "
-                      "(Refine fraction + Coarsen fraction <= 1).");
+                      "Share of the cells with the smallest Kelly indicators "
+                      "coarsened at each adaptation (Refine + Coarsen <= 1)."
+                        + quantity("number"));
     prm.declare_entry("Maximum number of cells",
                       "auto",
                       Patterns::Anything(),
@@ -141,7 +143,8 @@ namespace liftoff
                       "times the cells of the uniform mesh of "
                       "Discretization. (Without a limit, refining a wave "
                       "that fills the plate ends with every cell at Maximum "
-                      "level.)");
+                      "level.)"
+                        + quantity("number"));
     prm.declare_entry("Minimum level",
                       "0",
                       Patterns::Integer(-12, 12),

@@ -1,3 +1,4 @@
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/fem/mindlin_plate.h>
 
 namespace liftoff
@@ -15,7 +16,8 @@ namespace liftoff
                       "[1e-3, 1e3]: a narrower plate is a beam (model it "
                       "as a strip along x with mu >= 1e-3), and cells "
                       "stretched by more than 1e3 would multiply the "
-                      "condition number by the square of their stretch.");
+                      "condition number by the square of their stretch."
+                        + quantity("mu"));
     prm.declare_entry("Thickness ratio",
                       "0.05",
                       Patterns::Double(1e-5, 1.0),
@@ -30,18 +32,20 @@ namespace liftoff
                       "1e-4, 6e-4 at 1e-5, 1.5e-2 at 1e-6 and has the wrong "
                       "sign at 1e-7 (doc/reliability.md). A plate thicker "
                       "than long is no plate: Mindlin's kinematics need H "
-                      "below the span.");
+                      "below the span."
+                        + quantity("Delta"));
     prm.declare_entry("Poisson ratio",
                       "0.1",
                       Patterns::Double(-1.0, 0.5),
-                      "nu, in (-1, 0.5).");
+                      "nu, in (-1, 0.5)." + quantity("number"));
     prm.declare_entry("Shear correction factor",
                       "0.8333333333333333",
                       Patterns::Double(0.0, 1.0),
                       "chi of Mindlin's theory, in (0, 1]; 5/6 by default. "
                       "It corrects the constant shear strain of the "
                       "kinematics downwards (5/6, pi^2/12); above 1 it "
-                      "would stiffen the plate like a thinner one.");
+                      "would stiffen the plate like a thinner one."
+                        + quantity("number"));
     prm.leave_subsection();
   }
 

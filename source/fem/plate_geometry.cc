@@ -5,6 +5,7 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/reference_cell.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
@@ -105,12 +106,13 @@ namespace liftoff
                       "R / L, the radius of a disc (Shape = disc) or the "
                       "outer radius of an annulus in the length unit L; in "
                       "metres in a scene with Units/System = SI (unset "
-                      "there: half of Units/Length).");
+                      "there: half of Units/Length)."
+                        + quantity("length (if set)"));
     prm.declare_entry("Inner radius",
                       "0.25",
                       Patterns::Double(0.0),
-                      "R_i / L, the radius of the hole of an annulus (Shape "
-                      "= annulus), 0 < R_i < Radius.");
+                      "R_i / L, an annulus's hole radius, 0 < R_i < Radius."
+                        + quantity("length (if set)"));
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::Anything(),
@@ -120,9 +122,9 @@ namespace liftoff
                       "metres in a scene with Units/System = SI (whose "
                       "Units/Length must then be the mesh's length along "
                       "x). A relative path is relative to the folder of the "
-                      "scene file that names it, as "
-                      "include lines are (to the working directory for a "
-                      "scene on standard input).");
+                      "scene file that names it, as include lines are (to "
+                      "the working directory for a scene on standard input)."
+                        + quantity("text"));
     prm.declare_entry("Symmetry",
                       "full",
                       symmetries.pattern(),
@@ -179,7 +181,8 @@ namespace liftoff
       "the number of a physical curve of the file (e.g. 'Wall: clamped, "
       "Hole: free'). Tags not listed are free. Where a held curve turns "
       "(two faces meet at an angle), hard simple support and symmetry "
-      "planes hold the whole rotation, as at a rectangle's corner.");
+      "planes hold the whole rotation, as at a rectangle's corner."
+        + quantity("text"));
     prm.leave_subsection();
   }
 

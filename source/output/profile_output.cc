@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/output/profile_output.h>
 #include <liftoff/time/plate_state.h>
@@ -18,12 +19,14 @@ namespace liftoff
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 2, ","),
                       "x, y where the profile line starts (full plate; "
-                      "from the load with Profile follows).");
+                      "from the load with Profile follows)."
+                        + quantity("length"));
     prm.declare_entry("Profile end",
                       "0.5, 0",
                       Patterns::List(Patterns::Double(), 2, 2, ","),
                       "x, y where the profile line ends (full plate; from "
-                      "the load with Profile follows).");
+                      "the load with Profile follows)."
+                        + quantity("length"));
     prm.declare_entry("Profile follows",
                       "",
                       Patterns::Anything(),
@@ -33,7 +36,8 @@ namespace liftoff
                       "offsets from the load's point (a vehicle's: its "
                       "Path), and each profile is written along that line "
                       "where the load is at its time, the basin around the "
-                      "load; points off the plate then are left out.");
+                      "load; points off the plate then are left out."
+                        + quantity("text"));
     prm.declare_entry("Profile points",
                       "0",
                       Patterns::Integer(0, 100000),
@@ -48,7 +52,8 @@ namespace liftoff
                       "profile; a time given twice is refused). Times beyond "
                       "Time integration/End time are not reached: the run "
                       "warns about them and goes on (a scene may be run "
-                      "shorter for a try or resumed further).");
+                      "shorter for a try or resumed further)."
+                        + quantity("time"));
   }
 
 

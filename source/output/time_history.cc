@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values_extractors.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/located_maximum.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
@@ -142,7 +143,8 @@ namespace liftoff
         "columns (point_load_N, patch_load_N, vehicle_N: the path's point), "
         "e.g. `w@patch_load_1, M_xx@patch_load_1`; the column is so named. "
         "The value is taken at the load's position of the row; 0 while it is "
-        "off the plate (its `_on` column says when).");
+        "off the plate (its `_on` column says when)."
+          + quantity("text"));
     }
 
 
@@ -238,7 +240,8 @@ namespace liftoff
       "Points x, y of the full plate, separated by ';', whose "
       "deflection w is written to history.csv at every step. On an "
       "annulus the point 0, 0 lies in the hole and gives no probe (the "
-      "run says so), so that the default needs no change there.");
+      "run says so), so that the default needs no change there."
+        + quantity("position"));
     prm.declare_entry("Write energies",
                       "true",
                       Patterns::Bool(),
@@ -268,7 +271,8 @@ namespace liftoff
       "sigma_xx, sigma_yy, sigma_xy, sigma_max (the fields of `Moment "
       "fields`, doc/model.md), e.g. `M_xx(0.25; 0), Q_x(0.5; 0)`. The "
       "fields jump across cell edges: at a point on an edge or a vertex the "
-      "value is the mean of the cells that meet there.");
+      "value is the mean of the cells that meet there."
+        + quantity("position"));
     prm.declare_entry(
       "Write moment extremes",
       "false",

@@ -6,6 +6,7 @@
 #include <boost/serialization/array_wrapper.hpp>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/run/checkpoint.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -278,7 +279,8 @@ namespace liftoff
       "above 0 a checkpoint follows the last step too; with both 0 one is "
       "written only when SIGINT or SIGTERM stops the run. Spacing by time "
       "keeps the cost of checkpoints a small share of any run, short steps "
-      "or long.");
+      "or long."
+        + quantity("number"));
     prm.leave_subsection();
   }
 

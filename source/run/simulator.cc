@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/base/scene_input.h>
@@ -51,14 +52,13 @@ namespace liftoff
     prm.declare_entry("Directory",
                       "output",
                       Patterns::Anything(),
-                      "Folder for all results (created if needed). Empty: "
-                      "write no files. A run owns it while it runs (a second "
-                      "run into it is refused) and refuses it if it holds an "
-                      "earlier run's results, unless started with `liftoff "
-                      "--overwrite`, which removes them, or `--resume`. Only "
-                      "the files liftoff writes are ever touched. `#` "
-                      "starts a comment in a parameter file, so a name "
-                      "cannot hold it: `run#3` is read as `run`.");
+                      "Folder for all results, created if needed (empty: write "
+                      "no files). A run owns it while it runs and refuses it "
+                      "if it holds an earlier run's results, unless started "
+                      "with `liftoff --overwrite` (which removes them) or "
+                      "`--resume`. `#` starts a comment in a parameter file, "
+                      "so a name cannot hold it: `run#3` is read as `run`."
+                        + quantity("text"));
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
@@ -240,7 +240,7 @@ namespace liftoff
       output->setup(parts.discretization, output_directory);
     // Every point of the scene has found its cell.
     parts.discretization.release_grid_cache();
-    run_analysis();
+    units.explain_run_errors_of([this]() { run_analysis(); });
   }
 
 

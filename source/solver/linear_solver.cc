@@ -2,6 +2,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/solver/cholesky_factor.h>
 #include <liftoff/solver/linear_solver.h>
@@ -56,13 +57,15 @@ namespace liftoff
                       "Type = direct: when CG preconditioned with the stored "
                       "factor needs more than this many iterations for a "
                       "changed matrix, the matrix is factorised anew. 0 "
-                      "factorises at every change.");
+                      "factorises at every change."
+                        + quantity("number"));
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0.0, 1e-3),
                       "Relative residual at which CG stops (at most 1e-3: "
                       "at 0.1 the energy balance of a point load on a quarter "
-                      "plate was off by 0.96 of its energies).");
+                      "plate was off by 0.96 of its energies)."
+                        + quantity("number"));
     prm.declare_entry(
       "Trial tolerance",
       "1e-6",
@@ -77,7 +80,8 @@ namespace liftoff
       "so a solve whose set changes costs one substitution instead of two. "
       "Values at or below `Tolerance` solve every time to `Tolerance`. "
       "Type = cg always solves to `Tolerance`: with AMG a trial error "
-      "flips points at round-off and costs iterations.");
+      "flips points at round-off and costs iterations."
+        + quantity("number"));
     prm.declare_entry("Maximum iterations",
                       "10000",
                       Patterns::Integer(1),

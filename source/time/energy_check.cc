@@ -1,3 +1,4 @@
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/time/energy_check.h>
 
@@ -43,7 +44,8 @@ namespace liftoff
       "Largest balance error allowed, as a share of the run's energy "
       "scale. Contact switching and mesh transfers leave up to about 3e-3 "
       "in the scenes of prm/; a time step too long for the bed or a loose "
-      "solver tolerance leave errors of the order of the energies.");
+      "solver tolerance leave errors of the order of the energies."
+        + quantity("number"));
     prm.leave_subsection();
   }
 

@@ -1,3 +1,4 @@
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/time/newmark_integrator.h>
 
@@ -34,11 +35,13 @@ namespace liftoff
                       "estimate is a lower bound of omega_max, so a stable "
                       "scheme is never refused). The generalized-alpha "
                       "scheme is unconditionally stable for every Spectral "
-                      "radius in [0, 1].");
+                      "radius in [0, 1]."
+                        + quantity("number"));
     prm.declare_entry("Gamma",
                       "0.5",
                       Patterns::Double(0.5, 1.0),
-                      "Newmark gamma, in [0.5, 1]; above 1/2 it damps.");
+                      "Newmark gamma, in [0.5, 1]; above 1/2 it damps."
+                        + quantity("number"));
     prm.declare_entry(
       "Scheme",
       "newmark",
@@ -54,7 +57,8 @@ namespace liftoff
                       Patterns::Double(0.0, 1.0),
                       "rho_inf in [0, 1] for Scheme = generalized-alpha: 1 "
                       "damps nothing, 0 annihilates the highest frequencies "
-                      "in one step.");
+                      "in one step."
+                        + quantity("number"));
     prm.declare_entry("Time step",
                       "5e-4",
                       Patterns::Double(0.0),
@@ -63,12 +67,14 @@ namespace liftoff
                       "be a whole number (at least 1) of time steps, to "
                       "1e-9; any other End time is refused, no step is "
                       "shortened. At least 1/sqrt(Beta 1e250) (about "
-                      "2e-125), below which M / (Beta dtau^2) overflows.");
+                      "2e-125), below which M / (Beta dtau^2) overflows."
+                        + quantity("time"));
     prm.declare_entry("End time",
                       "0.2",
                       Patterns::Double(0.0),
                       "Final dimensionless time tau > 0, a multiple of Time "
-                      "step.");
+                      "step."
+                        + quantity("time"));
     prm.leave_subsection();
   }
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -76,9 +77,16 @@ namespace liftoff
 
     /// Runs `read`, the parts reading solver_scene(); in an SI scene an
     /// error they raise, which quotes the dimensionless twin's numbers, is
-    /// raised again with the scales that convert them.
+    /// raised again in the scene's terms (in_scene_terms()) with the scales
+    /// that convert them.
     void
     explain_errors_of(const std::function<void()> &read) const;
+
+    /// Runs `run`, a run of solver_scene(); in an SI scene an error it
+    /// raises is raised again in the scene's terms. Out of memory and the
+    /// linear solver's own errors pass unchanged.
+    void
+    explain_run_errors_of(const std::function<void()> &run) const;
 
     /// used_parameters.prm: `scene_text` (the scene as written), and for
     /// an SI scene its dimensionless twin after it as comments.
@@ -129,6 +137,40 @@ namespace liftoff
     std::shared_ptr<ParameterHandler> converted;
     std::string                       dimensionless_text;
 
+  public:
+    /// An entry the conversion changed: its value as the scene wrote it,
+    /// in the twin, and its quantity (entry_quantity.h).
+    struct Converted
+    {
+      std::string si, twin, quantity;
+    };
+
+  private:
+    /// Each entry the conversion changed, by its path; the group each
+    /// group entry is.
+    std::map<std::string, Converted>   twin_values;
+    std::map<std::string, std::string> group_entries;
+
+    /// `message`, an error of the twin, in the SI scene's terms: an entry
+    /// quoted as the user wrote it, each group it names with the entries
+    /// of Units and their values that give it, a time scale beyond what
+    /// the solver integrates named.
+    std::string
+    in_scene_terms(std::string message) const;
+
+    /// How the SI entries give `group` (a name of entry_quantity.h), with
+    /// their values.
+    std::string
+    origin_of(const std::string &group) const;
+
+    /// D and the SI entries it comes from.
+    std::string
+    stiffness_origin() const;
+
+    /// The solver's unit of `quantity` and the SI entries it comes from.
+    std::string
+    unit_origin(const std::string &quantity) const;
+
     void
     check_physical_values(ParameterHandler &scene) const;
 
@@ -146,6 +188,6 @@ namespace liftoff
     /// Sets every entry of `dimensionless` (declared as `scene` is) to the
     /// SI scene's value, converted; its Units are left at their defaults.
     void
-    convert(ParameterHandler &scene, ParameterHandler &dimensionless) const;
+    convert(ParameterHandler &scene, ParameterHandler &dimensionless);
   };
 } // namespace liftoff

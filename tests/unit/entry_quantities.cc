@@ -1,0 +1,234 @@
+// Every entry liftoff declares that could hold a dimension declares its
+// quantity where it is declared (base/entry_quantity.h), and a scene in SI
+// units gives the solver each such entry divided by the unit of that
+// quantity (issue 46, finding 1: Line load N/Segment was read in metres as
+// units of L, a line load Units/Length times too strong).
+//
+// - An entry whose pattern is a Double, a List, a Map or Anything (counts,
+//   switches and choices cannot carry a unit) outside Units has a quantity:
+//   walked over every entry of Simulator::declare_parameters(), the
+//   numbered loads (Point load 1..8, Line load 1..8, ...) each.
+// - An SI scene with every entry of a unit set to a value (its default,
+//   each zero made 0.25) is converted; each number in the twin is the
+//   scene's divided by the unit computed here from doc/model.md's scales
+//   (L, t0 = L^2 sqrt(rho H / D), F0 = D / L, w in L, psi in rad), to
+//   round-off.
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/physical_units.h>
+#include <liftoff/run/simulator.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "test_tools.h"
+
+using namespace dealii;
+
+namespace
+{
+  struct Declared
+  {
+    std::string value, pattern, documentation;
+  };
+
+  // Every entry by its path "Subsection/.../Entry", from the JSON form.
+  std::map<std::string, Declared>
+  declared(const ParameterHandler &prm)
+  {
+    std::stringstream json;
+    prm.print_parameters(json, ParameterHandler::JSON);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+    std::map<std::string, Declared> entries;
+    const std::function<void(const boost::property_tree::ptree &,
+                             const std::string &)>
+      collect =
+        [&](const boost::property_tree::ptree &node, const std::string &path) {
+          for (const auto &[key, child] : node)
+            if (const auto value = child.get_optional<std::string>("value"))
+              entries[path + key] = {*value,
+                                     child.get<std::string>(
+                                       "pattern_description"),
+                                     child.get<std::string>("documentation")};
+            else
+              collect(child, path + key + "/");
+        };
+    collect(tree, "");
+    return entries;
+  }
+
+  void
+  set(ParameterHandler &prm, const std::string &path, const std::string &value)
+  {
+    const auto names = Utilities::split_string_list(path, '/');
+    for (unsigned int k = 0; k + 1 < names.size(); ++k)
+      prm.enter_subsection(names[k]);
+    prm.set(names.back(), value);
+    for (unsigned int k = 0; k + 1 < names.size(); ++k)
+      prm.leave_subsection();
+  }
+
+  std::vector<std::string>
+  items(const std::string &text)
+  {
+    std::vector<std::string> result;
+    for (const auto &part : Utilities::split_string_list(text, ';'))
+      for (const auto &item : Utilities::split_string_list(part, ','))
+        result.push_back(item);
+    return result;
+  }
+
+  bool
+  is_number(const std::string &text)
+  {
+    return Patterns::Double().match(text);
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  liftoff_tests::Checks checks(argc, argv);
+
+  ParameterHandler prm;
+  liftoff::Simulator::declare_parameters(prm);
+  const auto entries = declared(prm);
+
+  unsigned int missing = 0, tagged = 0;
+  for (const auto &[path, entry] : entries)
+    {
+      if (path.rfind("Units/", 0) == 0)
+        continue;
+      bool could_hold_a_unit = false;
+      for (const std::string kind : {"[Double", "[List", "[Map", "[Anything"})
+        could_hold_a_unit |= entry.pattern.rfind(kind, 0) == 0;
+      if (!liftoff::declared_quantities(entry.documentation).empty())
+        ++tagged;
+      else if (could_hold_a_unit)
+        {
+          std::cout << "no quantity declared: " << path << ' ' << entry.pattern
+                    << std::endl;
+          ++missing;
+        }
+    }
+  std::cout << entries.size() << " entries, " << tagged
+            << " with a declared quantity" << std::endl;
+  checks.less("entries that could hold a dimension and declare no quantity",
+              missing,
+              0.5);
+
+  // The SI plate and doc/model.md's units of each quantity.
+  const double L = 5, H = 0.25, E = 30e9, nu = 0.2, rho = 2400;
+  const double D  = E * H * H * H / (12 * (1 - nu * nu));
+  const double F0 = D / L, t0 = L * L * std::sqrt(rho * H / D);
+  const std::map<std::string, double> unit = {{"number", 1},
+                                              {"length", L},
+                                              {"position", L},
+                                              {"deflection", L},
+                                              {"rotation", 1},
+                                              {"time", t0},
+                                              {"force", F0},
+                                              {"pressure", F0 / (L * L)},
+                                              {"force per length", F0 / L},
+                                              {"velocity", L / t0},
+                                              {"angular velocity", 1 / t0}};
+  for (const auto &[path, value] :
+       std::map<std::string, std::string>{{"Units/System", "SI"},
+                                          {"Units/Length", "5"},
+                                          {"Units/Thickness", "0.25"},
+                                          {"Units/Young's modulus", "30e9"},
+                                          {"Units/Density", "2400"},
+                                          {"Units/Subgrade modulus", "5e7"},
+                                          {"Plate/Poisson ratio", "0.2"}})
+    set(prm, path, value);
+
+  // Every entry of a unit, each zero of its default made 0.25 (on the
+  // plate, and not a value every unit leaves alone).
+  std::map<std::string, std::pair<std::vector<std::string>, std::string>>
+    probes;
+  for (const auto &[path, entry] : entries)
+    {
+      const auto quantities = liftoff::declared_quantities(entry.documentation);
+      bool       has_unit = false, is_known = true;
+      for (const auto &q : quantities)
+        {
+          is_known &= unit.count(q) == 1;
+          has_unit |= q != "number";
+        }
+      has_unit &= is_known;
+      if (!has_unit || path.rfind("Units/", 0) == 0)
+        continue;
+      std::string value = entry.value.empty() ? "0, 0, 0, 0" : entry.value;
+      std::string probe;
+      for (const auto &part : Utilities::split_string_list(value, ';'))
+        {
+          std::string group;
+          for (const auto &item : Utilities::split_string_list(part, ','))
+            group +=
+              (group.empty() ? "" : ", ")
+              + (is_number(item) && Utilities::string_to_double(item) == 0
+                   ? std::string("0.25")
+                   : item);
+          probe += (probe.empty() ? "" : "; ") + group;
+        }
+      set(prm, path, probe);
+      probes[path] = {quantities, probe};
+    }
+
+  liftoff::PhysicalUnits units;
+  units.parse_parameters(prm);
+  const auto twin =
+    declared(units.solver_scene(prm, liftoff::Simulator::declare_parameters));
+
+  double       worst     = 0;
+  unsigned int converted = 0, numbers = 0;
+  for (const auto &[path, probe] : probes)
+    {
+      const auto &[quantities, value] = probe;
+      const auto si = items(value), dimensionless = items(twin.at(path).value);
+      bool       ok = si.size() == dimensionless.size();
+      for (unsigned int i = 0; ok && i < si.size(); ++i)
+        if (is_number(si[i]))
+          {
+            const double expected =
+              Utilities::string_to_double(si[i])
+              / unit.at(quantities[i % quantities.size()]);
+            ok = is_number(dimensionless[i]);
+            const double error =
+              ok ? std::abs(Utilities::string_to_double(dimensionless[i])
+                            - expected)
+                     / std::abs(expected)
+                 : 1;
+            worst = std::max(worst, error);
+            ok    = error < 1e-14;
+            ++numbers;
+          }
+      if (!ok)
+        std::cout << "not converted by its quantity: " << path << " = " << value
+                  << " gives " << twin.at(path).value << std::endl;
+      converted += ok;
+    }
+  std::cout << probes.size() << " entries of a unit, " << numbers
+            << " numbers, largest relative error " << worst << std::endl;
+  checks.less("entries of a unit an SI scene gives unconverted",
+              probes.size() - converted,
+              0.5);
+  // Eight of each numbered load kind, whose entries of a unit are about
+  // five each: a walk that missed the families would see a dozen.
+  checks.within("entries of a unit in the scene (every numbered load)",
+                probes.size(),
+                100,
+                1000);
+  return checks.exit_code();
+}
