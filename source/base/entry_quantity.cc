@@ -3,8 +3,13 @@
 
 #include <liftoff/base/entry_quantity.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
 #include <algorithm>
+#include <functional>
 #include <regex>
+#include <sstream>
 
 namespace liftoff
 {
@@ -79,5 +84,32 @@ namespace liftoff
                                     tail.size(),
                                     tail)
                 == 0;
+  }
+
+
+  std::map<std::string, DeclaredEntry>
+  declared_entries(const ParameterHandler &prm)
+  {
+    std::stringstream json;
+    prm.print_parameters(json, ParameterHandler::JSON);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+    std::map<std::string, DeclaredEntry> entries;
+    const std::function<void(const boost::property_tree::ptree &,
+                             const std::string &)>
+      collect =
+        [&](const boost::property_tree::ptree &node, const std::string &path) {
+          for (const auto &[key, child] : node)
+            if (const auto value = child.get_optional<std::string>("value"))
+              entries[path + key] = {*value,
+                                     child.get<std::string>("default_value"),
+                                     child.get<std::string>(
+                                       "pattern_description"),
+                                     child.get<std::string>("documentation")};
+            else
+              collect(child, path + key + "/");
+        };
+    collect(tree, "");
+    return entries;
   }
 } // namespace liftoff

@@ -11,8 +11,6 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -52,16 +50,6 @@ namespace liftoff
       {"self weight",
        {"Units/Density and Units/Gravity",
         "Units/Density * Gravity * Thickness"}}};
-
-    // The shortest text that reads back as x, so that the dimensionless
-    // scene is the SI one exactly.
-    std::string
-    exact(const double x)
-    {
-      std::array<char, 32> text;
-      const auto end = std::to_chars(text.data(), text.data() + text.size(), x);
-      return std::string(text.data(), end.ptr);
-    }
 
     /**
      * How often each watched entry of a ParameterHandler was given a value:
@@ -103,36 +91,7 @@ namespace liftoff
       return *set_counts().at(&prm).at(path) > 1;
     }
 
-    struct Entry
-    {
-      std::string value, default_value, documentation;
-    };
-
-    // Every entry of `prm` by its path "Subsection/Entry", with its value
-    // and default, from ParameterHandler's own tree in its JSON form.
-    std::map<std::string, Entry>
-    entries_of(const ParameterHandler &prm)
-    {
-      std::stringstream json;
-      prm.print_parameters(json, ParameterHandler::JSON);
-      boost::property_tree::ptree tree;
-      boost::property_tree::read_json(json, tree);
-      std::map<std::string, Entry> entries;
-      const std::function<void(const boost::property_tree::ptree &,
-                               const std::string &)>
-        collect = [&](const boost::property_tree::ptree &node,
-                      const std::string                 &path) {
-          for (const auto &[key, child] : node)
-            if (const auto value = child.get_optional<std::string>("value"))
-              entries[path + key] = {*value,
-                                     child.get<std::string>("default_value"),
-                                     child.get<std::string>("documentation")};
-            else
-              collect(child, path + key + "/");
-        };
-      collect(tree, "");
-      return entries;
-    }
+    using Entry = DeclaredEntry;
 
     // The groups an SI scene must not set, and the entries whose default
     // stays dimensionless (a disc's radius L / 2) unless the scene sets
@@ -140,7 +99,7 @@ namespace liftoff
     void
     watch_declared(ParameterHandler &prm)
     {
-      for (const auto &[path, entry] : entries_of(prm))
+      for (const auto &[path, entry] : declared_entries(prm))
         if (const auto quantities = declared_quantities(entry.documentation);
             !quantities.empty()
             && (group_sources.count(quantities[0]) == 1
@@ -249,9 +208,9 @@ namespace liftoff
             result.append(from, (*i)[0].first);
             from = (*i)[0].second;
             if (word == "x" || word == "y")
-              result += "(" + exact(length) + "*" + word + ")";
+              result += "(" + format_exact(length) + "*" + word + ")";
             else if (word == "t")
-              result += "(" + exact(t0) + "*tau)";
+              result += "(" + format_exact(t0) + "*tau)";
             else
               result += word;
           }
@@ -296,8 +255,8 @@ namespace liftoff
         const double px = Utilities::string_to_double(x),
                      py = Utilities::string_to_double(y);
         check_on_plate(path, "(" + m[2].str() + ";" + m[3].str() + ")", px, py);
-        return m[1].str() + "(" + exact(px / length) + "; " + exact(py / length)
-               + ")";
+        return m[1].str() + "(" + format_exact(px / length) + "; "
+               + format_exact(py / length) + ")";
       }
 
       /// One item of `path` in the quantity `unit`; `point` collects the
@@ -324,7 +283,7 @@ namespace liftoff
                 if (point.size() == 2)
                   point.clear(), point_text.clear();
               }
-            return exact(x / scale);
+            return format_exact(x / scale);
           }
         if (unit == "position" && item.find('(') != std::string::npos)
           return named_point(path, item);
@@ -337,7 +296,8 @@ namespace liftoff
         if (!is_expression(item))
           return item;
         const std::string rewritten = expression(item);
-        return scale == 1 ? rewritten : "(" + rewritten + ")/" + exact(scale);
+        return scale == 1 ? rewritten
+                          : "(" + rewritten + ")/" + format_exact(scale);
       }
 
       /// The value of `path` in the twin, by the quantities its owner
@@ -380,7 +340,7 @@ namespace liftoff
             if (const auto group = groups.find(quantities[0]);
                 group != groups.end())
               {
-                twin                = exact(group->second);
+                twin                = format_exact(group->second);
                 group_entries[path] = quantities[0];
                 set_entry(out,
                           path,
@@ -500,7 +460,7 @@ namespace liftoff
                                  + path + " out."));
         return;
       }
-    for (const auto &[path, entry] : entries_of(scene))
+    for (const auto &[path, entry] : declared_entries(scene))
       if (const auto quantities = declared_quantities(entry.documentation);
           !quantities.empty() && group_sources.count(quantities[0]) == 1)
         AssertThrow(!is_set(scene, path),
@@ -615,7 +575,7 @@ namespace liftoff
     scene.print_parameters(text, ParameterHandler::ShortPRM);
     dimensionless.parse_input(text, "the scene");
     const double         w = scale(Quantity::deflection);
-    const SceneConverter convert{entries_of(scene),
+    const SceneConverter convert{declared_entries(scene),
                                  scene,
                                  dimensionless,
                                  length,

@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/fem/load_set.h>
@@ -921,20 +922,19 @@ namespace liftoff
         else if (load.kind == Kind::point)
           {
             AssertThrow(geometry.is_on_plate(load.position),
-                        ExcMessage(load.name + "/Position = "
-                                   + std::to_string(load.position[0]) + ", "
-                                   + std::to_string(load.position[1])
-                                   + " lies outside " + plate_named(geometry)
-                                   + "."));
+                        ExcMessage(
+                          load.name + "/Position = "
+                          + format_point(load.position[0], load.position[1])
+                          + " lies outside " + plate_named(geometry) + "."));
           }
         else if (load.kind == Kind::line && load.segment)
           {
             for (const Point<2> &end : *load.segment)
               AssertThrow(geometry.is_on_plate(end),
                           ExcMessage(load.name + "/Segment: its end "
-                                     + std::to_string(end[0]) + ", "
-                                     + std::to_string(end[1]) + " lies outside "
-                                     + plate_named(geometry) + "."));
+                                     + format_point(end[0], end[1])
+                                     + " lies outside " + plate_named(geometry)
+                                     + "."));
           }
         if (load.kind == Kind::pressure)
           region_of(load, plate);
@@ -1123,7 +1123,7 @@ namespace liftoff
   LoadSet::non_finite_history(const Load &load, const double tau)
   {
     return load.name + "/Time history = <" + load.history_expression + "> is "
-           + std::to_string(load.history->value(Point<1>(tau)))
+           + format_exact(load.history->value(Point<1>(tau)))
            + " at tau = " + time_text(tau) + ".";
   }
 
@@ -1154,8 +1154,7 @@ namespace liftoff
           scratch = load.spatial_part;
         if (!is_finite(scratch))
           return load.kind == Kind::point || load.kind == Kind::patch
-                   ? load.name
-                       + ": Magnitude = " + std::to_string(load.magnitude)
+                   ? load.name + ": Magnitude = " + format_exact(load.magnitude)
                        + " is too large to be represented."
                    : non_finite_intensity(load, tau);
         scratch *= h;

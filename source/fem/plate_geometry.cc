@@ -273,9 +273,9 @@ namespace liftoff
            "Discretization/Radius must be > 0 for " + shape_setting() + ".");
     if (outline == PlateShape::annulus)
       refuse(inner_radius <= 0 || inner_radius >= radius,
-             "Discretization/Inner radius = " + std::to_string(inner_radius)
+             "Discretization/Inner radius = " + format_exact(inner_radius)
                + " must lie strictly between 0 and Discretization/Radius = "
-               + std::to_string(radius) + " for an annulus.");
+               + format_exact(radius) + " for an annulus.");
     for (unsigned int e = 0; e < 4; ++e)
       refuse(edges[e] != EdgeCondition::free,
              "Boundary conditions/" + edge_names[e]

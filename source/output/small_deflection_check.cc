@@ -13,18 +13,6 @@
 
 namespace liftoff
 {
-  SmallDeflectionCheck::SmallDeflectionCheck(const double thickness_ratio)
-      : thickness_ratio(thickness_ratio)
-  {}
-
-
-  void
-  SmallDeflectionCheck::set_thickness_ratio(const double ratio)
-  {
-    thickness_ratio = ratio;
-  }
-
-
   void
   SmallDeflectionCheck::write_in_units_of(const PhysicalUnits &units)
   {
@@ -32,7 +20,9 @@ namespace liftoff
     is_checked     = units.is_physical();
     w_scale        = units.scale(Quantity::deflection);
     time_scale     = units.scale(Quantity::time);
-    thickness      = thickness_ratio * units.scale(Quantity::length);
+    for (const auto &[group, value] : units.groups())
+      if (group == "Delta")
+        thickness = value * units.scale(Quantity::length);
   }
 
 

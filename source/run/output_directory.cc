@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/run/output_directory.h>
 
@@ -154,6 +155,23 @@ namespace liftoff
       return -1;
     }
   } // namespace
+
+
+  void
+  OutputDirectory::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry("Directory",
+                      "output",
+                      dealii::Patterns::Anything(),
+                      "Folder for all results, created if needed (empty: write "
+                      "no files). A run owns it while it runs and refuses it "
+                      "if it holds an earlier run's results, unless started "
+                      "with `liftoff --overwrite` (which removes them) or "
+                      "`--resume`. Only the files liftoff writes are ever "
+                      "touched. `#` starts a comment in a parameter file, "
+                      "so a name cannot hold it: `run#3` is read as `run`."
+                        + quantity("text"));
+  }
 
 
   OutputDirectory::OutputDirectory(const std::string &folder,

@@ -34,11 +34,6 @@ namespace liftoff
       , parts(comm, timer)
       , progress_line(comm, std::cout)
   {
-    outputs = {&time_history,
-               &profile_output,
-               &field_output,
-               &envelopes,
-               &small_deflection};
     if (verbose && show_progress)
       outputs.push_back(&progress_line);
   }
@@ -49,16 +44,7 @@ namespace liftoff
   {
     SceneParts::declare_parameters(prm);
     prm.enter_subsection("Output");
-    prm.declare_entry("Directory",
-                      "output",
-                      Patterns::Anything(),
-                      "Folder for all results, created if needed (empty: write "
-                      "no files). A run owns it while it runs and refuses it "
-                      "if it holds an earlier run's results, unless started "
-                      "with `liftoff --overwrite` (which removes them) or "
-                      "`--resume`. `#` starts a comment in a parameter file, "
-                      "so a name cannot hold it: `run#3` is read as `run`."
-                        + quantity("text"));
+    OutputDirectory::declare_parameters(prm);
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
@@ -84,16 +70,13 @@ namespace liftoff
       envelopes.parse_parameters(scene);
       scene.leave_subsection();
       if (time_history.drop_default_probe_off(parts.discretization.geometry()))
-        pcout << "liftoff: Output/Probe points = 0, 0 lies in the hole of "
-                 "the annulus: no probe is written."
-              << std::endl;
+        pcout << "liftoff: no probe: 0, 0 lies in the annulus's hole.\n";
       time_history.show_dissipated_energy(parts.foundation.has_damping());
       const auto load_positions = [this](const double tau) {
         return parts.loads.moving_load_positions(tau);
       };
       time_history.follow(parts.loads.moving_load_names(), load_positions);
       profile_output.follow(parts.loads.moving_load_names(), load_positions);
-      small_deflection.set_thickness_ratio(parts.plate.thickness_ratio);
       for (Output *output : outputs)
         output->write_in_units_of(units);
       checkpoint.parse_parameters(scene);
@@ -550,11 +533,8 @@ namespace liftoff
   std::string
   Simulator::warnings() const
   {
-    std::string       text       = stepper->energy_warning();
-    const std::string deflection = small_deflection.warning();
-    if (!deflection.empty())
-      text += (text.empty() ? "" : " ") + deflection;
-    return text;
+    const std::string a = stepper->warnings(), b = small_deflection.warning();
+    return a.empty() || b.empty() ? a + b : a + " " + b;
   }
 
 

@@ -71,18 +71,21 @@ namespace liftoff
     // A circle's cells follow it between their support points only: the
     // run says how much area, and so how much of a pressure and of the bed,
     // the mesh misses.
-    const double area_error = discretization.area_error();
-    if (area_error <= Discretization::area_tolerance)
+    // 1e-3: the coarse disc's 8 arcs of degree 2 (7.8e-4) pass, a Q1
+    // polygon below 4 refinements does not.
+    constexpr double largest_area_error = 1e-3;
+    const double     area_error         = discretization.area_error();
+    if (area_error <= largest_area_error)
       return;
-    warning = "The mesh's area differs from the plate's by "
-              + format_number(area_error)
-              + " (accepted: " + format_number(Discretization::area_tolerance)
-              + "): its cells follow the circles only at their nodes; "
-                "loads over the plate and the bed are short by as much. "
-                "Refine (Discretization/Global refinements) or raise "
-                "Discretization/Polynomial degree.";
+    mesh_warning = "The mesh's area differs from the plate's by "
+                   + format_number(area_error)
+                   + " (accepted: " + format_number(largest_area_error)
+                   + "): its cells follow the circles only at their nodes; "
+                     "loads over the plate and the bed are short by as much. "
+                     "Refine (Discretization/Global refinements) or raise "
+                     "Discretization/Polynomial degree.";
     if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
-      std::cerr << "liftoff: warning: " << warning << std::endl;
+      std::cerr << "liftoff: warning: " << mesh_warning << std::endl;
   }
 
 
@@ -785,10 +788,12 @@ namespace liftoff
   }
 
 
-  const std::string &
-  TimeStepper::energy_warning() const
+  std::string
+  TimeStepper::warnings() const
   {
-    return warning;
+    if (mesh_warning.empty() || warning.empty())
+      return mesh_warning + warning;
+    return mesh_warning + " " + warning;
   }
 
 

@@ -21,8 +21,6 @@
 #include <liftoff/base/physical_units.h>
 #include <liftoff/run/simulator.h>
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
 
 #include <cmath>
 #include <functional>
@@ -36,36 +34,6 @@ using namespace dealii;
 
 namespace
 {
-  struct Declared
-  {
-    std::string value, pattern, documentation;
-  };
-
-  // Every entry by its path "Subsection/.../Entry", from the JSON form.
-  std::map<std::string, Declared>
-  declared(const ParameterHandler &prm)
-  {
-    std::stringstream json;
-    prm.print_parameters(json, ParameterHandler::JSON);
-    boost::property_tree::ptree tree;
-    boost::property_tree::read_json(json, tree);
-    std::map<std::string, Declared> entries;
-    const std::function<void(const boost::property_tree::ptree &,
-                             const std::string &)>
-      collect =
-        [&](const boost::property_tree::ptree &node, const std::string &path) {
-          for (const auto &[key, child] : node)
-            if (const auto value = child.get_optional<std::string>("value"))
-              entries[path + key] = {*value,
-                                     child.get<std::string>(
-                                       "pattern_description"),
-                                     child.get<std::string>("documentation")};
-            else
-              collect(child, path + key + "/");
-        };
-    collect(tree, "");
-    return entries;
-  }
 
   void
   set(ParameterHandler &prm, const std::string &path, const std::string &value)
@@ -103,7 +71,7 @@ main(int argc, char **argv)
 
   ParameterHandler prm;
   liftoff::Simulator::declare_parameters(prm);
-  const auto entries = declared(prm);
+  const auto entries = liftoff::declared_entries(prm);
 
   unsigned int missing = 0, tagged = 0;
   for (const auto &[path, entry] : entries)
@@ -188,8 +156,8 @@ main(int argc, char **argv)
 
   liftoff::PhysicalUnits units;
   units.parse_parameters(prm);
-  const auto twin =
-    declared(units.solver_scene(prm, liftoff::Simulator::declare_parameters));
+  const auto twin = liftoff::declared_entries(
+    units.solver_scene(prm, liftoff::Simulator::declare_parameters));
 
   double       worst     = 0;
   unsigned int converted = 0, numbers = 0;

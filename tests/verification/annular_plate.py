@@ -142,7 +142,7 @@ with tempfile.TemporaryDirectory() as work:
     text = scene("clamped", "free", 0).replace("set Probe points", "#")
     folder, result = run_scene(LIFTOFF, work, "default_probe", text)
     columns = read_history(folder) if result.returncode == 0 else {}
-    check(result.returncode == 0 and "lies in the hole" in result.stdout
+    check(result.returncode == 0 and "in the annulus's hole" in result.stdout
           and not any(c.startswith("w(") for c in columns),
           "an annulus without Probe points runs, with no probe column and "
           f"a note (exit {result.returncode}: {result.stderr.strip()})")

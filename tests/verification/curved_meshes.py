@@ -12,7 +12,7 @@ sagitta. A uniform pressure on a bilateral bed with Write foundation
 resultant gives `contact_area` (the mesh's area) and `resultant` (the
 pressure's); against those closed forms (Q2 annulus of 8 arcs, Q2 disc of
 8 arcs, Q1 disc), and against the circles' area within
-Discretization::area_tolerance = 1e-3, or a warning that names the
+1e-3 (TimeStepper::setup()), or a warning that names the
 measured error.
 
 Equilibrium. A free disc on a bilateral bed under a unit load at

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,18 @@ namespace liftoff
   /// and only a value the scene sets is in SI units.
   bool
   converts_only_if_set(const std::string &documentation);
+
+  /// An entry as ParameterHandler declares it.
+  struct DeclaredEntry
+  {
+    std::string value, default_value, pattern, documentation;
+  };
+
+  /// Every entry of `prm` by its path "Subsection/.../Entry", from
+  /// ParameterHandler's own tree in its JSON form: what the converter and
+  /// the test of declared quantities walk.
+  std::map<std::string, DeclaredEntry>
+  declared_entries(const ParameterHandler &prm);
 
   /**
    * The names quantity() knows: "number" (the same in both systems;

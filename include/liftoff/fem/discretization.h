@@ -126,8 +126,6 @@ namespace liftoff
     /// their mapping (a polygon with degree 1, arcs of parabolas with 2).
     double
     area_error() const;
-    /// The largest area_error() the summary does not warn of.
-    static constexpr double area_tolerance = 1e-3;
     /// Free the search trees once the scene's points are found: the time
     /// loop does not use them (L, p = 1: 248 MB of the peak).
     void

@@ -28,12 +28,6 @@ namespace liftoff
     /// Plates and Shells, section 97), changes w by 2 %.
     static constexpr double largest_share = 0.2;
 
-    /// Delta = H / L of the solver's scene.
-    explicit SmallDeflectionCheck(const double thickness_ratio = 0.05);
-
-    void
-    set_thickness_ratio(const double thickness_ratio);
-
     void
     write_in_units_of(const PhysicalUnits &units) override;
     void
@@ -66,8 +60,7 @@ namespace liftoff
     add_to(RunSummary &summary) const;
 
   private:
-    double thickness_ratio;
-    bool   is_checked = false;
+    bool is_checked = false;
     // One solver unit of w and of time, and H, in the scene's units.
     double w_scale = 1, time_scale = 1, thickness = 0;
     // Positions within this rank's vectors of its w unknowns.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <string>
 #include <vector>
@@ -35,6 +36,10 @@ namespace liftoff
   class OutputDirectory
   {
   public:
+    /// `Directory`, the folder's name, in the subsection `Output`.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
     /// Lock the folder `path`, creating it if `create`; a folder that does
     /// not exist and is not created is not locked (there is nothing in it
     /// to protect).

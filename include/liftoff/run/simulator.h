@@ -137,7 +137,11 @@ namespace liftoff
     SmallDeflectionCheck small_deflection;
     ProgressLine         progress_line;
     /// What is written after each step, in this order.
-    std::vector<Output *> outputs;
+    std::vector<Output *> outputs{&time_history,
+                                  &profile_output,
+                                  &field_output,
+                                  &envelopes,
+                                  &small_deflection};
     Checkpoint            checkpoint;
 
     int         stopped_by_signal = 0;

@@ -130,10 +130,10 @@ namespace liftoff
     /// on, and a scheme for which the balance is a law.
     bool
     checks_energy() const;
-    /// The energy check's or the static equilibrium's warning, for the
-    /// summary ("" if none).
-    const std::string &
-    energy_warning() const;
+    /// The warnings of the mesh's area and of the energy check or the
+    /// static equilibrium, one text for the summary ("" if none).
+    std::string
+    warnings() const;
     /// StaticEquilibrium::check() of the static solution (an imbalance of
     /// -1 where it does not apply or the run is dynamic).
     const StaticEquilibrium::Result &
@@ -174,9 +174,11 @@ namespace liftoff
     /// omega_max^2 of M^-1 (K + K_f) with every spring in contact (an
     /// estimate from below), once it was needed; 0 before (and after the
     /// mesh changed).
-    double                    largest_eigenvalue = 0;
-    unsigned int              n_new_meshes       = 0;
-    std::string               warning;
+    double       largest_eigenvalue = 0;
+    unsigned int n_new_meshes       = 0;
+    std::string  warning;
+    /// The mesh's area check, apart: a later warning must not hide it.
+    std::string               mesh_warning;
     StaticEquilibrium::Result equilibrium;
 
     /// Matrices, foundation points, loads and the layout of every vector
