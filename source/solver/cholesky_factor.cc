@@ -85,7 +85,7 @@ namespace liftoff
     // stream the hardware prefetcher can follow across blocks. BLAS's
     // dgemv and loops over several columns at once read several short
     // streams per block and reached half the bandwidth (M: 42 ms against
-    // 20 ms now, doc/performance.md, twelfth session). GCC's vector type
+    // 20 ms, doc/performance.md, "The substitution"). GCC's vector type
     // gives SIMD products without -ffast-math, in a summation order that
     // is the same on every machine (only the AVX2 clone's fused
     // multiply-adds round differently).
@@ -209,7 +209,7 @@ namespace liftoff
     // The factor stays supernodal (dense blocks): its substitution is the
     // faster one (M: 48 against 63 ms for CHOLMOD's simplicial form), and
     // converting needs both forms in memory at once (M: 8 % more peak
-    // memory). doc/performance.md, seventh session.
+    // memory). doc/performance.md, "OpenBLAS and a supernodal factor".
     is_inverted = is_factorized && factor->is_super
                   && blocks_are_well_conditioned() && invert_diagonal_blocks();
     return is_factorized;
@@ -394,8 +394,8 @@ namespace liftoff
   {
     // CHOLMOD counts the operations of the numerical factorisation; the
     // rest (extracting the matrix, the ordering, the elimination tree)
-    // grows with the entries of A. Measured on one core
-    // (doc/performance.md), a factorisation took 90 substitutions on the
+    // grows with the entries of A. Measured on one core (doc/performance.md,
+    // "When to factorise again"), a factorisation took 90 substitutions on the
     // Example 2 beam (246 unknowns; 2.4 by the count alone) and 58 on the
     // benchmark S (12 675; 35 by the count): 150 operations per entry of A
     // for the rest fits both within 20 %.

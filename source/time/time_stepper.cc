@@ -500,9 +500,10 @@ namespace liftoff
       equilibrate(state_.step, state_.tau, "the acceleration after a new mesh");
     }
     // The time steps' matrix holds the dashpots too (Gamma + c kappa):
-    // kappa is the argument, no longer a setting that the foundation's
-    // setup on the new mesh reset to 0 (a damped adaptive run then solved
-    // with Gamma alone: balance error 0.38 of the energy scale, issue 31).
+    // kappa is passed as the argument, not kept as a setting of the
+    // foundation, whose setup on a new mesh would reset it to 0 (a damped
+    // adaptive run would then solve with Gamma alone: balance error 0.38
+    // of the energy scale).
     active_set.set_base_matrix(effective_base_matrix(),
                                newmark.velocity_factor());
     check_time_step();

@@ -29,8 +29,8 @@ namespace liftoff
    * fraction of its cost. TimerOutput's timers also read the CPU time
    * (getrusage, a system call) and reduce over their communicator at
    * every enter and leave, which took a fifth of a step of the 246-unknown
-   * beam (doc/performance.md, issue 16, fifth session). Times are this
-   * rank's, as TimerOutput's summary data are.
+   * beam (doc/performance.md, "Outputs and other per-step work"). Times
+   * are this rank's, as TimerOutput's summary data are.
    */
   class SectionTimer
   {

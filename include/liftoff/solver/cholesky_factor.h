@@ -24,7 +24,7 @@ namespace liftoff
    * memory-bound, and this reads each entry once per pass, in storage
    * order: on the benchmark L, p = 1 (1.5e8 entries) a substitution took
    * 0.121 s against CHOLMOD's 0.263 s, on M 21.9 against 48.7 ms
-   * (doc/performance.md, tenth and twelfth sessions). A simplicial factor
+   * (doc/performance.md, "The substitution"). A simplicial factor
    * (small matrices), or one with a block whose triangle is ill-conditioned
    * (the partitioned inverse's error grows with that condition), is
    * substituted by CHOLMOD.

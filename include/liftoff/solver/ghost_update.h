@@ -19,7 +19,8 @@ namespace liftoff
    * `ghosted = owned` does, but with one Epetra_Import kept for the pair of
    * layouts instead of one built per copy. Building the import costs far
    * more than the copy on small problems (it is a third of the per-step
-   * overhead of the 246-unknown beam, doc/performance.md); the values
+   * overhead of the 246-unknown beam, doc/performance.md, "Outputs and
+   * other per-step work"); the values
    * copied are the same (Epetra's Insert of the same entries).
    */
   class GhostUpdate
