@@ -147,9 +147,11 @@ namespace liftoff
     // Between its ends a line may cross a hole (an annulus).
     for (unsigned int i = 0; i < n_points; ++i)
       AssertThrow(disc.geometry().is_on_plate(point(i)),
+                  // A point between the ends is computed: its last digits
+                  // are round-off, not what the user wrote.
                   ExcMessage("Output/Profile points: the profile's point "
-                             + format_point(point(i)[0], point(i)[1])
-                             + " lies outside "
+                             + format_number(point(i)[0]) + ", "
+                             + format_number(point(i)[1]) + " lies outside "
                              + disc.geometry().plate_description()
                              + "; keep the line on the plate."));
   }

@@ -130,7 +130,7 @@ check $? "probes and a profile to the edges of a plate of Aspect ratio = 2 run: 
 rm -rf out
 printf '%s\nsubsection Plate\n  set Aspect ratio = 0.5\nend\nsubsection Output\n  set Probe points = 0, 0.3\nend\n' \
   "$loaded" > narrow.prm
-refused "probe off a narrow plate" 'Output/Probe points: the point 0\.000000, 0\.300000 lies outside the plate \[-0\.5, 0\.5\] x \[-0\.25, 0\.25\]' narrow.prm
+refused "probe off a narrow plate" 'Output/Probe points: the point 0, 0\.3 lies outside the plate \[-0\.5, 0\.5\] x \[-0\.25, 0\.25\]' narrow.prm
 
 # Probes that six digits do not tell apart get columns of their own names.
 printf '%s\nsubsection Time integration\n  set End time = 0.002\nend\nsubsection Output\n  set Probe points = 0.333333, 0; 0.3333334, 0; 0.25, 0\nend\n' \
