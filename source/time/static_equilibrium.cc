@@ -1,9 +1,12 @@
 #include <deal.II/base/function_parser.h>
+#include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/time/static_equilibrium.h>
+
+#include <Epetra_CrsMatrix.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,20 +33,30 @@ namespace liftoff
       return r;
     }
 
-    /// |A| |u| row by row, laid out as `like` (`u` ghosted).
+    /// |A| |u| row by row, laid out as `like` (`u` ghosted). Epetra's view
+    /// of each row: deal.II's row iterators copy the row at each begin()
+    /// and end() (the 96 x 96 Q2 quarter of westergaard_stress: 13.7 s with
+    /// them, 4.0 s with the view, 5.7 s without the check).
     LA::MPI::Vector
     absolute_product(const LA::MPI::SparseMatrix &a,
                      const LA::MPI::Vector       &u,
                      const LA::MPI::Vector       &like)
     {
-      LA::MPI::Vector result(like);
+      const Epetra_CrsMatrix &matrix = a.trilinos_matrix();
+      LA::MPI::Vector         result(like);
       result = 0;
-      for (const auto row : a.locally_owned_range_indices())
+      for (int row = 0; row < matrix.NumMyRows(); ++row)
         {
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *columns = nullptr;
+          matrix.ExtractMyRowView(row, n, values, columns);
           double sum = 0;
-          for (auto entry = a.begin(row); entry != a.end(row); ++entry)
-            sum += std::abs(entry->value()) * std::abs(u(entry->column()));
-          result(row) = sum;
+          for (int k = 0; k < n; ++k)
+            sum += std::abs(values[k])
+                   * std::abs(u(TrilinosWrappers::global_index(matrix.ColMap(),
+                                                               columns[k])));
+          result(TrilinosWrappers::global_index(matrix.RowMap(), row)) = sum;
         }
       result.compress(VectorOperation::insert);
       return result;
