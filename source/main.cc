@@ -34,6 +34,8 @@ namespace
     "                                    any of the above)\n"
     "       liftoff --parameters         print every parameter with its "
     "default and documentation\n"
+    "       liftoff --parameters json    the same as JSON, with the values\n"
+    "                                    each parameter allows (its pattern)\n"
     "       liftoff --version            print the version and the git commit\n"
     "                                    it was built from\n"
     "       liftoff --help, -h           print this text\n"
@@ -126,18 +128,25 @@ namespace
   bool
   answered_without_mpi(const int argc, char **argv)
   {
-    const std::string  option = argc == 2 ? argv[1] : "";
+    const std::string option =
+      argc == 2 ? argv[1]
+      : argc == 3 && std::string(argv[1]) == "--parameters"
+        ? std::string("--parameters ") + argv[2]
+        : "";
     std::ostringstream answer;
     if (option == "--help" || option == "-h")
       answer << usage << '\n';
     else if (option == "--version")
       answer << "liftoff " << LIFTOFF_VERSION << " (git " << LIFTOFF_GIT_COMMIT
              << "), deal.II " << DEAL_II_PACKAGE_VERSION << '\n';
-    else if (option == "--parameters")
+    else if (option == "--parameters" || option == "--parameters json")
       {
         dealii::ParameterHandler prm;
         liftoff::Simulator::declare_parameters(prm);
-        prm.print_parameters(answer, dealii::ParameterHandler::PRM);
+        prm.print_parameters(answer,
+                             option == "--parameters"
+                               ? dealii::ParameterHandler::PRM
+                               : dealii::ParameterHandler::JSON);
       }
     else
       return false;

@@ -5,12 +5,21 @@ names the entry, and no output folder.
 
     every_parameter_refused.py LIFTOFF
 
-The list of parameters comes from `liftoff --parameters`, so a parameter
-added later is covered without touching this file. Of the numbered load
-subsections (Point load 1..8, ...) only the first is tried: the others are
-declared by the same code.
+The parameters and the values each allows come from `liftoff --parameters
+json`, so a parameter added later is covered without touching this file. Of
+the numbered load subsections (Point load 1..8, ...) only the first is
+tried: the others are declared by the same code.
+
+An entry whose pattern is a number, a boolean or a selection is refused by
+the ParameterHandler's check of its pattern while the scene is read, before
+any of liftoff's classes sees it, along one path for all such entries: for
+each, the test checks that its pattern cannot accept the wrong value, and
+runs the binary on the first of them in every subsection. An entry with a
+looser pattern (any text, a list, a map, a file name: functions, paths,
+expressions) is checked by the class that reads it, so each one is run.
 """
 
+import json
 import os
 import re
 import subprocess
@@ -23,19 +32,39 @@ WRONG_VALUE = "@@"
 
 
 def declared_entries(liftoff):
-    text = subprocess.run([liftoff, "--parameters"], capture_output=True,
-                          text=True, check=True).stdout
-    path, entries = [], []
-    for line in text.splitlines():
-        line = line.strip()
-        if line.startswith("subsection "):
-            path.append(line[len("subsection "):].strip())
-        elif line == "end":
-            path.pop()
-        elif line.startswith("set "):
-            name = line[4:].split("=", 1)[0].strip()
-            entries.append((tuple(path), name))
+    """(path, entry, pattern description) of every declared entry."""
+    text = subprocess.run([liftoff, "--parameters", "json"],
+                          capture_output=True, text=True, check=True).stdout
+    entries = []
+
+    def walk(node, path):
+        for key, child in node.items():
+            if not isinstance(child, dict):
+                continue
+            if "value" in child:
+                entries.append((path, key,
+                                child.get("pattern_description", "")))
+            else:
+                walk(child, path + (key,))
+
+    walk(json.loads(text), ())
     return entries
+
+
+STRICT = re.compile(r"^\[(Double|Integer|Bool|Selection)\b")
+
+
+def pattern_refuses(description, value):
+    """Whether a number, boolean or selection pattern cannot match `value`
+    (None for other patterns, which the binary must be asked about)."""
+    match = STRICT.match(description)
+    if not match:
+        return None
+    if match.group(1) == "Selection":
+        options = description[len("[Selection "):].rstrip(" ]").split("|")
+        return value not in [o.strip() for o in options]
+    # A number or a boolean is never written with these characters.
+    return not re.search(r"[0-9]", value) and value not in ("true", "false")
 
 
 def is_first_of_numbered(path):
@@ -81,15 +110,26 @@ def main():
         else:
             print("PASS %s" % what)
 
-    for path, entry in entries:
+    runs_of_strict = set()
+    for path, entry, pattern in entries:
         where = "/".join(path + (entry,))
         if (path[-1:] + (entry,)) in ANY_TEXT_IS_VALID:
             continue
-        report("%s = %s refused" % (where, WRONG_VALUE),
-               refused(liftoff, scene(path, entry, WRONG_VALUE), entry))
+        refuses = pattern_refuses(pattern, WRONG_VALUE)
+        if refuses is False:
+            report("%s: pattern %s refuses %s" % (where, pattern, WRONG_VALUE),
+                   ["the pattern accepts it"])
+        elif refuses and path in runs_of_strict:
+            report("%s: pattern %s refuses %s" % (where, pattern, WRONG_VALUE),
+                   [])
+        else:
+            if refuses:
+                runs_of_strict.add(path)
+            report("%s = %s refused" % (where, WRONG_VALUE),
+                   refused(liftoff, scene(path, entry, WRONG_VALUE), entry))
 
     seen = set()
-    for path, entry in entries:
+    for path, entry, _ in entries:
         if path in seen:
             continue
         seen.add(path)

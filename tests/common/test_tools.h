@@ -10,6 +10,8 @@
 
 #include <liftoff/run/simulator.h>
 
+#include "test_registry.h"
+
 #include <cmath>
 #include <iomanip>
 #include <iostream>

@@ -86,8 +86,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   Checks checks(argc, argv);
 

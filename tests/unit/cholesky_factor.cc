@@ -58,8 +58,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv, 1);
   const Epetra_MpiComm  comm(MPI_COMM_WORLD);

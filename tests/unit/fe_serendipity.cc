@@ -398,8 +398,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   check_shape_functions(checks);

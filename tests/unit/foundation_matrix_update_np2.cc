@@ -280,8 +280,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv, 2);
   // Without a layer, and with one: its gradient terms go the same way.

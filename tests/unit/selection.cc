@@ -8,8 +8,7 @@
 
 #include "test_tools.h"
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
 

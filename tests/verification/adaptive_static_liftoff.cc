@@ -22,10 +22,10 @@
 // Measured (Q2, tolerance 1e-4 on a): uniform levels 0, 1, 2 give 2.1e-4,
 // 1.4e-4, 2.7e-5 with 189, 615, 2187 dofs; the front-refined mesh 5.2e-5
 // with 855 dofs (0.39 of the cheapest uniform mesh that meets 1e-4).
-// Refining by the Kelly indicator (`./test_adaptive_static_liftoff kelly`)
+// Refining by the Kelly indicator (`liftoff_tests adaptive_static_liftoff kelly`)
 // also passes, with 1878 dofs: it refines the loaded end as well.
 //
-// It can fail: `./test_adaptive_static_liftoff "point loads"` refines only
+// It can fail: `liftoff_tests adaptive_static_liftoff "point loads"` refines only
 // the cells holding the loads, not the front, and a keeps the coarse mesh's
 // error (2.2e-4): the check on a fails.
 
@@ -70,8 +70,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   const std::string     indicator = (argc > 1 ? argv[1] : "contact front");

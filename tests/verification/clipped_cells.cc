@@ -3,8 +3,7 @@
 
 #include "clipped_cells.h"
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   clipped_cells::check_all(checks, MPI_COMM_WORLD);

@@ -70,8 +70,7 @@ end
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv, 2);
   const bool            is_root =

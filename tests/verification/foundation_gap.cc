@@ -67,8 +67,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks       checks(argc, argv);
   const std::vector<Point<2>> points = probe_points();

@@ -13,8 +13,7 @@
 #include <cmath>
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   const std::string     scene = liftoff_tests::symmetric_scene("quarter", 5, 4);

@@ -299,8 +299,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv, 1);
   for (const unsigned int degree : {1u, 2u})

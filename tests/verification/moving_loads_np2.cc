@@ -66,8 +66,7 @@ namespace
   }
 } // namespace
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   using liftoff_tests::set;
   liftoff_tests::Checks checks(argc, argv, 2);

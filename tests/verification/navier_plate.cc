@@ -20,8 +20,7 @@
 using namespace navier;
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   std::cout << std::scientific << std::setprecision(4);

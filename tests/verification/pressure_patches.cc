@@ -5,8 +5,7 @@
 
 #include "pressure_patches.h"
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   pressure_patches::check_load_vectors(checks, MPI_COMM_WORLD);

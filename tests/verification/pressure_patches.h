@@ -154,7 +154,7 @@ namespace pressure_patches
     }
   };
 
-  std::string
+  inline std::string
   mesh(const std::string &symmetry,
        const unsigned int cells_x,
        const unsigned int cells_y,
@@ -228,7 +228,7 @@ namespace pressure_patches
     }
   };
 
-  AssembledLoad
+  inline AssembledLoad
   assemble_load(const std::string &scene,
                 const double       refine_below,
                 const double       tau,
@@ -264,7 +264,7 @@ namespace pressure_patches
     return result;
   }
 
-  Moments
+  inline Moments
   load_moments(const Case &c, const MPI_Comm comm)
   {
     const AssembledLoad load =
@@ -287,7 +287,7 @@ namespace pressure_patches
   }
 
   /// The patches with their images in the planes of `symmetry`.
-  std::vector<Patch>
+  inline std::vector<Patch>
   with_images(const std::vector<Patch> &patches, const std::string &symmetry)
   {
     std::vector<Patch> all = patches;
@@ -301,7 +301,7 @@ namespace pressure_patches
   }
 
   /// The cases of the load vector checks.
-  std::vector<Case>
+  inline std::vector<Case>
   cases()
   {
     std::vector<Case> list;
@@ -376,7 +376,7 @@ namespace pressure_patches
   }
 
   /// Every case's force and moments against the exact values.
-  void
+  inline void
   check_load_vectors(liftoff_tests::Checks &checks, const MPI_Comm comm)
   {
     const std::array<std::string, 3> names = {
@@ -400,7 +400,7 @@ namespace pressure_patches
   /// issue's soft bed (Gamma = 1) the rigid-body part of the static solution
   /// carries round-off that grows like 1 / h^2 (doc/reliability.md, soft
   /// foundations): 1e-10 of the force on 7 x 7 cells, 2.5e-9 on 32 x 32.
-  void
+  inline void
   check_static_resultants(liftoff_tests::Checks &checks, const MPI_Comm comm)
   {
     for (const auto &c : cases())

@@ -86,8 +86,7 @@ end
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   const double          omega = std::sqrt(gamma_f);

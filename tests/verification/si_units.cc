@@ -334,8 +334,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   Checks checks(argc, argv, 1);
   check_twin(checks, "static");

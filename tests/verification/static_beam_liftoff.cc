@@ -22,7 +22,7 @@
 // under h-refinement, and that is what is checked.
 //
 // How it was checked that this test can fail: running
-//   ./test_static_beam_liftoff bilateral
+//   liftoff_tests static_beam_liftoff bilateral
 // repeats the scenes with Foundation/Model = bilateral (springs that pull).
 // The bilateral strip first crosses w = 0 at x = 0.327 instead of a = 0.221
 // and its w(0) is 6 % smaller, so the checks on a, w(0), the profile, the
@@ -53,8 +53,7 @@ namespace
 } // namespace
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
 

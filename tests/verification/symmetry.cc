@@ -11,8 +11,7 @@
 #include <cmath>
 
 
-int
-main(int argc, char **argv)
+LIFTOFF_TEST_MAIN(argc, argv)
 {
   liftoff_tests::Checks checks(argc, argv);
   using liftoff_tests::run_scene;
