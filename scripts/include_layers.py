@@ -8,7 +8,7 @@ source/**/*.cc, and prints
   - which topic folder includes which (how many include lines),
   - every include cycle between files,
   - every include that goes up the layer order of doc/architecture.md
-    (base < fem < solver < contact < time < output < run; main.cc above
+    (base < fem < loads < solver < contact < time < output < run; main.cc above
     all), and every include between two folders of no known layer.
 Exits with 1 if there is a cycle or an upward include, else 0.
 """
@@ -17,7 +17,7 @@ import pathlib
 import re
 import sys
 
-LAYERS = ["base", "fem", "solver", "contact", "time", "output", "run"]
+LAYERS = ["base", "fem", "loads", "solver", "contact", "time", "output", "run"]
 INCLUDE = re.compile(r"^\s*#\s*include\s*<liftoff/([^>]+)>", re.MULTILINE)
 
 

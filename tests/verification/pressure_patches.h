@@ -21,7 +21,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/fem/discretization.h>
-#include <liftoff/fem/load_set.h>
+#include <liftoff/loads/load_set.h>
 #include <liftoff/fem/mindlin_plate.h>
 
 #include "test_tools.h"

@@ -8,7 +8,7 @@
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/initial_conditions.h>
-#include <liftoff/fem/load_set.h>
+#include <liftoff/loads/load_set.h>
 #include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/plate_matrices.h>

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <memory>
+#include <string>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  /**
+   * The path (x(tau), y(tau)) of a moving load on the full plate, shared by
+   * the wheels of a vehicle.
+   */
+  class LoadPath
+  {
+  public:
+    /// The entry "Path" of the current subsection.
+    static void
+    declare_parameters(ParameterHandler &prm, const std::string &default_value);
+
+    /// The Path of the current subsection, which belongs to `owner`;
+    /// nullptr if it is empty (the load stands).
+    static std::shared_ptr<const LoadPath>
+    read(ParameterHandler &prm, const std::string &owner);
+
+    Point<2>
+    at(const double tau) const;
+
+    /// Whether it names tau (otherwise the load stands at its one point).
+    bool
+    moves() const;
+
+    /// The subsection of the Path entry and its text, for messages.
+    const std::string &
+    owner() const;
+    const std::string &
+    expression() const;
+
+  private:
+    LoadPath(const std::string &owner, const std::string &expression);
+
+    std::string                        owner_name;
+    std::string                        text;
+    std::unique_ptr<FunctionParser<1>> function;
+    bool                               names_tau_ = false;
+  };
+} // namespace liftoff

@@ -1,0 +1,73 @@
+#include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/scene_input.h>
+#include <liftoff/loads/load_history.h>
+#include <liftoff/loads/load_path.h>
+
+namespace liftoff
+{
+  void
+  LoadPath::declare_parameters(ParameterHandler  &prm,
+                               const std::string &default_value)
+  {
+    prm.declare_entry(
+      "Path",
+      default_value,
+      Patterns::Anything(),
+      std::string(
+        "x(tau); y(tau): two muParser expressions in tau separated by ';', "
+        "the position on the full plate at time tau (e.g. -0.7 + 0.5*tau; 0, "
+        "a constant speed 0.5 along y = 0). The load vector is built at the "
+        "current position at every step; whatever is off the plate carries "
+        "nothing, and a path that never brings the load onto the plate at a "
+        "step time is refused.")
+        + quantity("length"));
+  }
+
+
+  std::shared_ptr<const LoadPath>
+  LoadPath::read(ParameterHandler &prm, const std::string &owner)
+  {
+    const std::string expression = prm.get("Path");
+    if (expression.empty())
+      return nullptr;
+    return std::shared_ptr<const LoadPath>(new LoadPath(owner, expression));
+  }
+
+
+  LoadPath::LoadPath(const std::string &owner, const std::string &expression)
+      : owner_name(owner)
+      , text(expression)
+      , function(
+          parse_expression<1>(owner + "/Path", expression, 2, "tau", false))
+      , names_tau_(names_tau(expression))
+  {}
+
+
+  Point<2>
+  LoadPath::at(const double tau) const
+  {
+    return Point<2>(function->value(Point<1>(tau), 0),
+                    function->value(Point<1>(tau), 1));
+  }
+
+
+  bool
+  LoadPath::moves() const
+  {
+    return names_tau_;
+  }
+
+
+  const std::string &
+  LoadPath::owner() const
+  {
+    return owner_name;
+  }
+
+
+  const std::string &
+  LoadPath::expression() const
+  {
+    return text;
+  }
+} // namespace liftoff

@@ -1,0 +1,149 @@
+#include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/scene_input.h>
+#include <liftoff/base/selection.h>
+#include <liftoff/loads/patch_load.h>
+#include <liftoff/loads/point_load.h>
+#include <liftoff/loads/vehicle.h>
+
+#include <cmath>
+#include <optional>
+
+namespace liftoff
+{
+  namespace
+  {
+    // A point wheel, or the shape of a patch wheel.
+    const Selection<std::optional<PatchLoad::Shape>> wheel_shapes = {
+      {"point", std::nullopt},
+      {"rectangle", PatchLoad::Shape::rectangle},
+      {"disc", PatchLoad::Shape::disc}};
+  } // namespace
+
+
+  void
+  Vehicle::declare_parameters(ParameterHandler &prm, const std::string &section)
+  {
+    declare_load_entries(
+      prm,
+      section,
+      "Force in units of F0 that each wheel's share multiplies",
+      "force",
+      [&]() {
+        LoadPath::declare_parameters(prm, "0; 0");
+        prm.declare_entry(
+          "Wheels",
+          "0, 0, 1",
+          Patterns::Anything(),
+          "dx, dy, share; dx, dy, share; ...: each wheel's offset from the "
+          "path's point and its share of Magnitude; the wheels move "
+          "together."
+            + quantity("length, length, number"));
+        prm.declare_entry("Wheel shape",
+                          "point",
+                          wheel_shapes.pattern(),
+                          "A point load, or a patch load of the wheel's "
+                          "force spread over its area.");
+        prm.declare_entry("Wheel size",
+                          "0.1, 0.1",
+                          PatchLoad::size_pattern(),
+                          "As Size of a Patch load, for patch wheels."
+                            + quantity("length"));
+      });
+  }
+
+
+  std::vector<std::unique_ptr<Load>>
+  Vehicle::read(ParameterHandler &prm, const std::string &section)
+  {
+    const std::string name        = "Loads/" + section;
+    const double      magnitude   = prm.get_double("Magnitude");
+    const LoadHistory history     = LoadHistory::read(prm, name);
+    const auto        path        = LoadPath::read(prm, name);
+    const std::string wheels_text = prm.get("Wheels");
+    const auto        shape =
+      wheel_shapes.parse(prm.get("Wheel shape"), name + "/Wheel shape");
+    const std::array<double, 2> size =
+      (shape ? PatchLoad::parse_size(prm.get("Wheel size"),
+                                     *shape,
+                                     name + "/Wheel size")
+             : std::array<double, 2>{{0, 0}});
+    AssertThrow(path != nullptr, ExcMessage(name + "/Path must not be empty."));
+    const std::vector<std::array<double, 3>> wheels =
+      parse_wheels(wheels_text, name + "/Wheels");
+    std::vector<std::unique_ptr<Load>> loads;
+    if (magnitude == 0.0)
+      return loads;
+
+    // A wheel's force spread over its area is a pressure.
+    const double area =
+      (shape == PatchLoad::Shape::disc ? M_PI / 4 * size[0] * size[0]
+                                       : size[0] * size[1]);
+    for (unsigned int k = 0; k < wheels.size(); ++k)
+      {
+        const std::string  wheel = name + ", wheel " + std::to_string(k + 1);
+        const Tensor<1, 2> offset({wheels[k][0], wheels[k][1]});
+        LoadHistory        own_history(history.expression(), wheel);
+        if (!shape)
+          loads.push_back(std::make_unique<PointLoad>(wheel,
+                                                      magnitude * wheels[k][2],
+                                                      std::move(own_history),
+                                                      path,
+                                                      Point<2>(),
+                                                      offset));
+        else
+          loads.push_back(
+            std::make_unique<PatchLoad>(wheel,
+                                        magnitude * wheels[k][2] / area,
+                                        std::move(own_history),
+                                        path,
+                                        *shape,
+                                        size,
+                                        offset));
+      }
+    return loads;
+  }
+
+
+  std::vector<std::array<double, 3>>
+  Vehicle::parse_wheels(const std::string &text, const std::string &parameter)
+  {
+    const std::string message =
+      parameter + " = <" + abbreviated(text)
+      + "> must be 'dx, dy, share' per wheel, separated by ';' (finite "
+        "numbers).";
+    std::vector<std::array<double, 3>> wheels;
+    try
+      {
+        for (const auto &wheel : Utilities::split_string_list(text, ';'))
+          {
+            const std::vector<double> v = Utilities::string_to_double(
+              Utilities::split_string_list(wheel, ','));
+            AssertThrow(v.size() == 3, ExcMessage(message));
+            wheels.push_back({{v[0], v[1], v[2]}});
+          }
+      }
+    catch (...)
+      {
+        AssertThrow(false, ExcMessage(message));
+      }
+    AssertThrow(!wheels.empty(), ExcMessage(message));
+    double total_share = 0;
+    for (const auto &wheel : wheels)
+      {
+        for (const double v : wheel)
+          AssertThrow(std::isfinite(v), ExcMessage(message));
+        // A wheel presses; a vehicle whose wheels carry nothing is no load
+        // at all, which a scene never means.
+        AssertThrow(wheel[2] >= 0,
+                    ExcMessage(parameter + " = <" + abbreviated(text)
+                               + ">: a wheel's share must be >= 0."));
+        total_share += wheel[2];
+      }
+    AssertThrow(total_share > 0,
+                ExcMessage(parameter + " = <" + abbreviated(text)
+                           + ">: the wheels' shares add up to 0, so the "
+                             "vehicle carries no load; give each wheel its "
+                             "share of Magnitude (> 0 in all)."));
+    return wheels;
+  }
+} // namespace liftoff
