@@ -155,7 +155,7 @@ main(int argc, char **argv)
     }
 
   liftoff::PhysicalUnits units;
-  units.parse_parameters(prm);
+  units.parse_parameters(prm, liftoff::SceneParts::outline_for_units(prm));
   const auto twin = liftoff::declared_entries(
     units.solver_scene(prm, liftoff::Simulator::declare_parameters));
 
