@@ -192,6 +192,7 @@ namespace liftoff
       const ParameterHandler       &scene;
       ParameterHandler             &out;
       double                        length, width, t0;
+      bool                          is_rectangle;
       std::map<std::string, double> units;
 
       // x, y [m] and t [s] of `si` as the solver's x, y and tau.
@@ -227,7 +228,7 @@ namespace liftoff
                      const double       x,
                      const double       y) const
       {
-        if (entries.at("Discretization/Shape").value != "rectangle")
+        if (!is_rectangle)
           return;
         AssertThrow(std::abs(x) <= length / 2 * (1 + 1e-12)
                       && std::abs(y) <= width / 2 * (1 + 1e-12),
@@ -428,7 +429,8 @@ namespace liftoff
 
 
   void
-  PhysicalUnits::parse_parameters(ParameterHandler &scene)
+  PhysicalUnits::parse_parameters(ParameterHandler   &scene,
+                                  const SceneOutline &outline)
   {
     scene.enter_subsection("Units");
     system = system_names.parse(scene.get("System"), "Units/System");
@@ -444,9 +446,8 @@ namespace liftoff
     dashpot          = scene.get_double("Dashpot coefficient");
     shear_layer      = scene.get_double("Shear layer modulus");
     scene.leave_subsection();
-    scene.enter_subsection("Plate");
-    poisson_ratio = scene.get_double("Poisson ratio");
-    scene.leave_subsection();
+    poisson_ratio = outline.poisson_ratio;
+    is_rectangle  = outline.is_rectangle;
 
     if (system == System::dimensionless)
       {
@@ -470,7 +471,7 @@ namespace liftoff
                                + group_sources.at(quantities[0]).physical
                                + ": leave " + path
                                + " out (or write the scene dimensionless)."));
-    check_physical_values(scene);
+    check_physical_values(scene, outline);
 
     bending_stiffness = youngs_modulus * std::pow(thickness, 3)
                         / (12 * (1 - poisson_ratio * poisson_ratio));
@@ -482,7 +483,8 @@ namespace liftoff
 
 
   void
-  PhysicalUnits::check_physical_values(ParameterHandler &scene) const
+  PhysicalUnits::check_physical_values(ParameterHandler   &scene,
+                                       const SceneOutline &outline) const
   {
     for (const auto &[name, value] :
          std::vector<std::pair<std::string, double>>{{"Length", length},
@@ -494,23 +496,19 @@ namespace liftoff
                   ExcMessage("Units/" + name
                              + " must be given (> 0) in a scene with "
                                "Units/System = SI."));
-    scene.enter_subsection("Foundation");
-    const bool has_bed = scene.get("Model") != "none";
-    scene.leave_subsection();
-    AssertThrow(!has_bed || subgrade_modulus > 0,
-                ExcMessage("Units/Subgrade modulus must be given (> 0, in "
-                           "N/m^3) in a scene with Units/System = SI and a "
-                           "Foundation/Model other than none."));
-    // A mesh file's outline is its own; its length along x is checked
-    // against Units/Length where the mesh is read (PlateGeometry).
-    scene.enter_subsection("Discretization");
-    const bool is_mesh_file = scene.get("Shape") == "mesh file";
-    scene.leave_subsection();
-    AssertThrow(!is_mesh_file || !is_set(scene, "Units/Width"),
-                ExcMessage("Units/Width is the width of the rectangle; with "
-                           "Discretization/Shape = mesh file the mesh, in "
-                           "metres, is the plate and Units/Length its length "
-                           "along x: leave Units/Width out."));
+    // The bed's entries, which a choice of another class may require.
+    const std::map<std::string, std::pair<double, std::string>> bed = {
+      {"Subgrade modulus", {subgrade_modulus, "N/m^3"}},
+      {"Dashpot coefficient", {dashpot, "Pa s/m"}},
+      {"Shear layer modulus", {shear_layer, "N/m"}}};
+    for (const auto &[name, reason] : outline.required)
+      AssertThrow(bed.at(name).first > 0,
+                  ExcMessage("Units/" + name + " must be given (> 0, in "
+                             + bed.at(name).second
+                             + ") in a scene with Units/System = SI and "
+                             + reason + "."));
+    for (const auto &[name, message] : outline.refused)
+      AssertThrow(!is_set(scene, "Units/" + name), ExcMessage(message));
   }
 
 
@@ -581,6 +579,7 @@ namespace liftoff
                                  length,
                                  width,
                                  t0,
+                                 is_rectangle,
                                  {{"number", 1},
                                   {"position", length},
                                   {"length", length},

@@ -155,7 +155,7 @@ namespace liftoff
       velocity_factor = kappa;
       discretization.reinit_matrix(matrix);
       write_base(matrix);
-      foundation.add_to_matrix(velocity_factor, matrix);
+      foundation.add_to_matrix({0.0, velocity_factor}, matrix);
       factorised_status = foundation.status_in_matrix();
     }
     solver.prepare(matrix, discretization, this);
@@ -230,7 +230,7 @@ namespace liftoff
   const LA::MPI::Vector &
   ActiveSetIteration::with_gap_load(const System &system)
   {
-    if (!foundation.has_gap())
+    if (!foundation.law().has_gap())
       return system.rhs;
     rhs_with_gap = system.rhs;
     foundation.add_gap_load(system.pressure, rhs_with_gap);
@@ -257,7 +257,7 @@ namespace liftoff
     // (below).
     solved_status = foundation.status_in_matrix();
     continues_solve =
-      !foundation.has_gap() && !discretization.has_hanging_nodes();
+      !foundation.law().has_gap() && !discretization.has_hanging_nodes();
     ghosts.distribute(discretization.constraints, solution, ghosted_solution);
   }
 

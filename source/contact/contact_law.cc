@@ -112,6 +112,19 @@ namespace liftoff
 
 
   void
+  ContactLaw::describe_for_units(ParameterHandler            &scene,
+                                 PhysicalUnits::SceneOutline &outline)
+  {
+    scene.enter_subsection("Foundation");
+    const bool has_bed = scene.get("Model") != "none";
+    scene.leave_subsection();
+    if (has_bed)
+      outline.required.emplace_back("Subgrade modulus",
+                                    "a Foundation/Model other than none");
+  }
+
+
+  void
   ContactLaw::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Foundation");

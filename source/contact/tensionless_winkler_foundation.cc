@@ -53,20 +53,6 @@ namespace liftoff
   }
 
 
-  bool
-  TensionlessWinklerFoundation::has_gap() const
-  {
-    return contact_law.has_gap();
-  }
-
-
-  bool
-  TensionlessWinklerFoundation::has_damping() const
-  {
-    return contact_law.has_damping();
-  }
-
-
   void
   TensionlessWinklerFoundation::set_status(const unsigned int  i,
                                            const unsigned char status)
@@ -161,11 +147,11 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::add_to_matrix(const double velocity_factor,
+  TensionlessWinklerFoundation::add_to_matrix(const MatrixFactors   &factors,
                                               LA::MPI::SparseMatrix &matrix)
   {
     term.assemble(in_contact,
-                  contact_law.matrix_stiffness(velocity_factor),
+                  contact_law.matrix_stiffness(factors.velocity),
                   matrix);
   }
 
@@ -213,14 +199,31 @@ namespace liftoff
   }
 
 
+  bool
+  TensionlessWinklerFoundation::has_status() const
+  {
+    return true;
+  }
+
+
   void
-  TensionlessWinklerFoundation::add_reaction(const LA::MPI::Vector &u,
-                                             LA::MPI::Vector &vector) const
+  TensionlessWinklerFoundation::add_force(const TermState &state,
+                                          LA::MPI::Vector &force) const
   {
     if (contact_law.model() == ContactLaw::Model::none)
-      vector.compress(VectorOperation::add);
+      force.compress(VectorOperation::add);
     else
-      term.add_product(in_contact, contact_law.stiffness(), u, vector);
+      term.add_product(in_contact,
+                       contact_law.stiffness(),
+                       state.ghosted_u,
+                       force);
+  }
+
+
+  double
+  TensionlessWinklerFoundation::energy(const TermState &state) const
+  {
+    return foundation_diagnostics.energy(state.ghosted_u);
   }
 
 
@@ -228,7 +231,7 @@ namespace liftoff
   TensionlessWinklerFoundation::add_gap_load(const SpringPressure &pressure,
                                              LA::MPI::Vector      &vector) const
   {
-    Assert(has_gap() && pressure.gap.size() == in_contact.size(),
+    Assert(contact_law.has_gap() && pressure.gap.size() == in_contact.size(),
            ExcInternalError());
     const unsigned int n_q = points.n_q_points();
     term.add_integral(

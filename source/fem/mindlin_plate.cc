@@ -51,6 +51,16 @@ namespace liftoff
 
 
   void
+  MindlinPlate::describe_for_units(ParameterHandler            &scene,
+                                   PhysicalUnits::SceneOutline &outline)
+  {
+    scene.enter_subsection("Plate");
+    outline.poisson_ratio = scene.get_double("Poisson ratio");
+    scene.leave_subsection();
+  }
+
+
+  void
   MindlinPlate::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Plate");

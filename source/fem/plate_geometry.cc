@@ -188,6 +188,26 @@ namespace liftoff
 
 
   void
+  describe_shape_for_units(ParameterHandler            &scene,
+                           PhysicalUnits::SceneOutline &outline)
+  {
+    scene.enter_subsection("Discretization");
+    const std::string shape = scene.get("Shape");
+    scene.leave_subsection();
+    outline.is_rectangle = shape == "rectangle";
+    // A mesh file's outline is its own; its length along x is checked
+    // against Units/Length where the mesh is read (parse_parameters()).
+    if (shape == "mesh file")
+      outline.refused.emplace_back(
+        "Width",
+        "Units/Width is the width of the rectangle; with "
+        "Discretization/Shape = mesh file the mesh, in "
+        "metres, is the plate and Units/Length its length "
+        "along x: leave Units/Width out.");
+  }
+
+
+  void
   PlateGeometry::parse_parameters(ParameterHandler    &prm,
                                   const MindlinPlate  &plate,
                                   const PhysicalUnits &units)

@@ -760,7 +760,7 @@ namespace liftoff
   TimeHistory::execute(const StepData &step)
   {
     find_gap_at_w_dofs(step);
-    if (write_resultant && step.foundation.has_damping())
+    if (write_resultant && step.foundation.law().has_damping())
       ghosted_velocity = step.state.v;
     history.push_back(row_of(step));
     write_row(history.back());

@@ -42,6 +42,17 @@ namespace liftoff
   }
 
 
+  PhysicalUnits::SceneOutline
+  SceneParts::outline_for_units(ParameterHandler &scene)
+  {
+    PhysicalUnits::SceneOutline outline;
+    MindlinPlate::describe_for_units(scene, outline);
+    ContactLaw::describe_for_units(scene, outline);
+    describe_shape_for_units(scene, outline);
+    return outline;
+  }
+
+
   void
   SceneParts::parse_parameters(ParameterHandler    &prm,
                                const PhysicalUnits &units)
@@ -132,12 +143,20 @@ namespace liftoff
   }
 
 
+  std::vector<SystemTerm *>
+  SceneParts::system_terms()
+  {
+    return {&plate_term, &foundation};
+  }
+
+
   TimeStepper::Parts
   SceneParts::for_stepper()
   {
     return {plate,
             discretization,
             matrices,
+            system_terms(),
             foundation,
             loads,
             newmark,

@@ -58,7 +58,7 @@ namespace liftoff
   void
   Simulator::parse_parameters(ParameterHandler &prm)
   {
-    units.parse_parameters(prm);
+    units.parse_parameters(prm, SceneParts::outline_for_units(prm));
     ParameterHandler &scene = units.solver_scene(prm, declare_parameters);
     units.explain_errors_of([&]() {
       parts.parse_parameters(scene, units);
@@ -71,7 +71,7 @@ namespace liftoff
       scene.leave_subsection();
       if (time_history.drop_default_probe_off(parts.discretization.geometry()))
         pcout << "liftoff: no probe: 0, 0 lies in the annulus's hole.\n";
-      time_history.show_dissipated_energy(parts.foundation.has_damping());
+      time_history.show_dissipated_energy(parts.foundation.law().has_damping());
       const auto load_positions = [this](const double tau) {
         return parts.loads.moving_load_positions(tau);
       };

@@ -3,22 +3,25 @@
 namespace liftoff
 {
   EnergyBalance
-  energies_of(const PlateMatrices                &matrices,
-              const TensionlessWinklerFoundation &foundation,
-              const LA::MPI::Vector              &u,
-              const LA::MPI::Vector              &ghosted_u,
-              const LA::MPI::Vector              &v,
-              const double                        copies,
-              const double                        work,
-              LA::MPI::Vector                    &product)
+  energies_of(const PlateMatrices             &matrices,
+              const std::vector<SystemTerm *> &terms,
+              const LA::MPI::Vector           &u,
+              const LA::MPI::Vector           &ghosted_u,
+              const LA::MPI::Vector           &v,
+              const double                     copies,
+              const double                     work,
+              LA::MPI::Vector                 &product)
   {
     EnergyBalance e;
     e.kinetic =
       0.5 * copies * matrices.quadratic_form(matrices.mass, v, product);
-    e.strain =
-      0.5 * copies * matrices.quadratic_form(matrices.stiffness, u, product);
-    e.foundation = copies * foundation.diagnostics().energy(ghosted_u);
-    e.work       = work;
+    const TermState state{u, ghosted_u, product};
+    // copies is a power of two: copies * (1/2 u.K u) is 1/2 copies u.K u
+    // to the bit.
+    e.strain = copies * terms.front()->energy(state);
+    for (auto term = terms.begin() + 1; term != terms.end(); ++term)
+      e.foundation += copies * (*term)->energy(state);
+    e.work = work;
     return e;
   }
 

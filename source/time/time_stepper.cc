@@ -53,6 +53,7 @@ namespace liftoff
       : plate(parts.plate)
       , discretization(parts.discretization)
       , matrices(parts.matrices)
+      , terms(parts.terms)
       , foundation(parts.foundation)
       , loads(parts.loads)
       , newmark(parts.newmark)
@@ -92,12 +93,15 @@ namespace liftoff
   void
   TimeStepper::build_on_current_mesh(const bool keep_motion)
   {
-    {
-      SectionTimer::Scope t(timer, "assembly");
-      matrices.assemble(discretization, plate);
-    }
+    // The plate's matrices count as assembly, the other terms' points and
+    // the loads as set-up (the summary's sections).
+    for (SystemTerm *term : terms)
+      {
+        SectionTimer::Scope t(timer,
+                              term == terms.front() ? "assembly" : "setup");
+        term->setup(discretization);
+      }
     SectionTimer::Scope t(timer, "setup");
-    foundation.setup(discretization);
     loads.setup(discretization);
     if (!keep_motion)
       for (auto *vector : {&state_.u, &state_.v, &state_.a})
@@ -162,10 +166,12 @@ namespace liftoff
         // the foundation can make the plate.
         LA::MPI::Vector ghosted;
         discretization.reinit_ghosted_vector(ghosted);
+        // The plate's K is the operator's own; the other terms add theirs.
         largest_eigenvalue = matrices.largest_eigenvalue(
           discretization, [&](const LA::MPI::Vector &x, LA::MPI::Vector &y) {
             ghosted = x;
-            foundation.add_reaction(ghosted, y);
+            for (auto term = terms.begin() + 1; term != terms.end(); ++term)
+              (*term)->add_force({x, ghosted, scratch_2}, y);
           });
       }
     return newmark.stable_time_step(largest_eigenvalue);
@@ -366,11 +372,7 @@ namespace liftoff
     const ActiveSetIteration::System system{
       load, pressure, !discretization.geometry().has_kinematic_support()};
     foundation.activate_all();
-    active_set.set_base_matrix(
-      [this](LA::MPI::SparseMatrix &base) {
-        base.copy_from(matrices.stiffness);
-      },
-      0.0);
+    active_set.set_base_matrix(base_matrix({0.0, 0.0}), 0.0);
 
     const auto result = active_set.solve(system, state_.u, state_.ghosted_u);
     require_finite_state("the static solution", {&state_.u}, {}, load);
@@ -525,7 +527,7 @@ namespace liftoff
   TimeStepper::state_energies()
   {
     EnergyBalance e = energies_of(matrices,
-                                  foundation,
+                                  terms,
                                   state_.u,
                                   state_.ghosted_u,
                                   state_.v,
@@ -547,12 +549,21 @@ namespace liftoff
 
 
   ActiveSetIteration::BaseMatrix
+  TimeStepper::base_matrix(const MatrixFactors &factors) const
+  {
+    return [this, factors](LA::MPI::SparseMatrix &base) {
+      base = 0;
+      for (SystemTerm *term : terms)
+        if (!term->has_status())
+          term->add_to_matrix(factors, base);
+    };
+  }
+
+
+  ActiveSetIteration::BaseMatrix
   TimeStepper::effective_base_matrix() const
   {
-    return [this](LA::MPI::SparseMatrix &base) {
-      base.copy_from(matrices.stiffness);
-      base.add(newmark.mass_factor(), matrices.mass);
-    };
+    return base_matrix({newmark.mass_factor(), newmark.velocity_factor()});
   }
 
 
@@ -565,7 +576,7 @@ namespace liftoff
     foundation.update_contact_status(state_.ghosted_u, pressure);
     assemble_loads(step, tau, state_.load);
     force_balance(state_.load, pressure, state_.balance);
-    if (foundation.has_damping())
+    if (foundation.law().has_damping())
       compute_dissipative_force();
     matrices.solve_with_mass(state_.a, state_.balance);
     discretization.constraints.distribute(state_.a);
@@ -628,7 +639,7 @@ namespace liftoff
   SpringPressure
   TimeStepper::pressure_at_state_velocity()
   {
-    if (!foundation.has_damping())
+    if (!foundation.law().has_damping())
       return foundation.law().pressure();
     // At a given state v is given: kappa = 0, o = -v.
     scratch.equ(-1.0, state_.v);
@@ -652,7 +663,7 @@ namespace liftoff
   TimeStepper::solve_contact_problem(const unsigned int step)
   {
     SpringPressure pressure = foundation.law().pressure();
-    if (foundation.has_damping())
+    if (foundation.law().has_damping())
       {
         // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
         // is affine in the new displacement, like a spring on a gap.
@@ -700,7 +711,7 @@ namespace liftoff
     newmark.advance(u_next, state_.u, state_.v, state_.a);
     state_.step = step;
     state_.tau  = step * newmark.time_step;
-    if (foundation.has_damping())
+    if (foundation.law().has_damping())
       add_dissipated_energy();
     if (newmark.needs_force_balance())
       {
@@ -752,12 +763,13 @@ namespace liftoff
   void
   TimeStepper::force_balance(const LA::MPI::Vector &load,
                              const SpringPressure  &pressure,
-                             LA::MPI::Vector       &balance) const
+                             LA::MPI::Vector       &balance)
   {
-    matrices.stiffness.vmult(balance, state_.u);
-    foundation.add_reaction(state_.ghosted_u, balance);
+    balance = 0;
+    for (const SystemTerm *term : terms)
+      term->add_force({state_.u, state_.ghosted_u, scratch}, balance);
     balance.sadd(-1.0, 1.0, load);
-    if (foundation.has_gap())
+    if (foundation.law().has_gap())
       foundation.add_gap_load(pressure, balance);
   }
 
@@ -822,18 +834,20 @@ namespace liftoff
       {
         // The matrix of the time steps, which the saved one is, holds the
         // dashpots (Gamma + c kappa).
-        transfer(archive, foundation);
+        for (SystemTerm *term : terms)
+          term->load(archive);
         active_set.load(archive,
                         effective_base_matrix(),
                         newmark.velocity_factor());
         // The dashpots' force of the saved state, for the next step's
         // dissipation.
-        if (foundation.has_damping())
+        if (foundation.law().has_damping())
           compute_dissipative_force();
       }
     else
       {
-        transfer(archive, foundation);
+        for (const SystemTerm *term : terms)
+          term->save(archive);
         active_set.save(archive);
       }
   }

@@ -154,7 +154,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
     }
 
   liftoff::PhysicalUnits units;
-  units.parse_parameters(prm);
+  units.parse_parameters(prm, liftoff::SceneParts::outline_for_units(prm));
   const auto twin = liftoff::declared_entries(
     units.solver_scene(prm, liftoff::Simulator::declare_parameters));
 

@@ -104,7 +104,7 @@ namespace
     liftoff::LA::MPI::SparseMatrix updated, fresh;
     discretization.reinit_matrix(updated);
     discretization.reinit_matrix(fresh);
-    foundation.add_to_matrix(0.0, updated); // all points in contact
+    foundation.add_to_matrix({}, updated); // all points in contact
 
     liftoff::LA::MPI::Vector u, ghosted_u;
     discretization.reinit_vector(u);
@@ -137,7 +137,7 @@ namespace
                   0.1,
                   0.9);
 
-    foundation.add_to_matrix(0.0, fresh);
+    foundation.add_to_matrix({}, fresh);
     checks.less(
       label + "updated vs freshly assembled K_f (relative Frobenius norm)",
       matrix_difference(updated, fresh),
@@ -186,10 +186,10 @@ namespace
                   1e-13);
     }
 
-    liftoff::LA::MPI::Vector from_matrix(u), reaction(u);
+    liftoff::LA::MPI::Vector from_matrix(u), reaction(u), scratch(u);
     fresh.vmult(from_matrix, u);
     reaction = 0;
-    foundation.add_reaction(ghosted_u, reaction);
+    foundation.add_force({u, ghosted_u, scratch}, reaction);
     from_matrix -= reaction;
     checks.less(label + "K_f u vs point-wise reaction (relative)",
                 from_matrix.l2_norm() / reaction.l2_norm(),
@@ -241,8 +241,8 @@ namespace
     discretization.reinit_matrix(held);
     discretization.reinit_matrix(fresh);
     damped.setup(discretization);
-    damped.add_to_matrix(kappa, held); // all points in contact
-    damped.setup(discretization);      // the same mesh again
+    damped.add_to_matrix({0.0, kappa}, held); // all points in contact
+    damped.setup(discretization);             // the same mesh again
     const std::vector<unsigned char> all_in = damped.contact_status();
 
     liftoff::LA::MPI::Vector u, ghosted_u;
@@ -260,7 +260,7 @@ namespace
                   100,
                   1e9);
     reference.set_contact_status(damped.contact_status());
-    reference.add_to_matrix(0.0, fresh);
+    reference.add_to_matrix({}, fresh);
     checks.less("dashpots: matrix held with kappa vs springs Gamma + c kappa "
                 "(relative Frobenius norm)",
                 matrix_difference(held, fresh),

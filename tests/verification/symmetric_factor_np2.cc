@@ -72,7 +72,7 @@ namespace
     discretization.reinit_matrix(A);
     A.copy_from(matrices.stiffness);
     A.add(1 / (0.25 * 5e-3 * 5e-3), matrices.mass);
-    foundation.add_to_matrix(0.0, A); // all points in contact
+    foundation.add_to_matrix({}, A); // all points in contact
 
     liftoff::LA::MPI::Vector b, x_cholesky, x_lu;
     discretization.reinit_vector(b);

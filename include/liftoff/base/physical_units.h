@@ -51,15 +51,35 @@ namespace liftoff
       angle_degrees,    ///< degrees in both systems
     };
 
+    /// What the classes that own the plate's and the bed's entries say of
+    /// the scene as written (each in a static `describe_for_units()`), so
+    /// that the conversion reads no entry of theirs.
+    struct SceneOutline
+    {
+      /// nu, for D (MindlinPlate).
+      double poisson_ratio = 0;
+      /// The plate is the rectangle Units/Length x Units/Width: points
+      /// given in metres are checked against it (PlateGeometry).
+      bool is_rectangle = true;
+      /// Entries of Units the scene must give (> 0), each with the choice
+      /// that needs it, as the message ends ("a Foundation/Model other
+      /// than none").
+      std::vector<std::pair<std::string, std::string>> required;
+      /// Entries of Units the scene must leave out, each with the message
+      /// that says why.
+      std::vector<std::pair<std::string, std::string>> refused;
+    };
+
     /// The subsection `Units`; declared after the groups an SI scene
     /// replaces (Plate, Foundation, Loads), which it watches for being set.
     static void
     declare_parameters(ParameterHandler &prm);
 
     /// Reads `Units`; refuses a scene that mixes physical entries with
-    /// the dimensionless ones they replace, naming both.
+    /// the dimensionless ones they replace, naming both, or that lacks an
+    /// entry of Units the `outline` requires or sets one it refuses.
     void
-    parse_parameters(ParameterHandler &scene);
+    parse_parameters(ParameterHandler &scene, const SceneOutline &outline);
 
     bool
     is_physical() const;
@@ -128,6 +148,8 @@ namespace liftoff
     double length = 0, width = 0, thickness = 0, youngs_modulus = 0,
            density = 0, gravity = 0, subgrade_modulus = 0, dashpot = 0,
            shear_layer = 0, poisson_ratio = 0;
+    /// SceneOutline::is_rectangle of the scene.
+    bool is_rectangle = true;
 
     // The scales of the dimensionless scene: bending stiffness D, time t0,
     // force F0.
@@ -172,7 +194,8 @@ namespace liftoff
     unit_origin(const std::string &quantity) const;
 
     void
-    check_physical_values(ParameterHandler &scene) const;
+    check_physical_values(ParameterHandler   &scene,
+                          const SceneOutline &outline) const;
 
     /// One unit of the solver's `quantity`: its value in SI, the SI
     /// unit's symbol, and the dimensionless scales it is made of.

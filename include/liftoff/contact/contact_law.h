@@ -2,7 +2,9 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+
 #include <deal.II/base/point.h>
+#include <liftoff/base/physical_units.h>
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/contact/foundation_points.h>
@@ -53,6 +55,10 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /// A bed in the scene as written requires Units/Subgrade modulus.
+    static void
+    describe_for_units(ParameterHandler            &scene,
+                       PhysicalUnits::SceneOutline &outline);
 
     /// Evaluate g at `points` (kept), refusing a g that is not finite or,
     /// on a half or quarter model, not symmetric. Collective.

@@ -10,6 +10,7 @@
 #include <liftoff/contact/foundation_points.h>
 #include <liftoff/contact/spring_term.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/system_term.h>
 
 #include <vector>
 
@@ -60,8 +61,11 @@ namespace liftoff
    * JxW in its uses (SpringTerm) and the diagnostics
    * (FoundationDiagnostics). It owns the contact status, the one state
    * that all of them read.
+   *
+   * It is a term of the plate's system (SystemTerm) with a status: the
+   * active-set iteration adds and updates its matrix entries.
    */
-  class TensionlessWinklerFoundation
+  class TensionlessWinklerFoundation : public SystemTerm
   {
   public:
     TensionlessWinklerFoundation();
@@ -77,7 +81,27 @@ namespace liftoff
     /// The Gauss points of the mesh, every one in contact (none without a
     /// foundation), and a matrix taken to hold that status.
     void
-    setup(const Discretization &discretization);
+    setup(const Discretization &discretization) override;
+
+    /// Its matrix is that of the contact status (true).
+    bool
+    has_status() const override;
+    /// Add the foundation stiffness K_f of the current status, with the
+    /// springs' stiffness Gamma + c kappa (kappa = `factors.velocity`: 0
+    /// in a static solve, gamma / (beta dt) in a time step), to `matrix`,
+    /// and remember that `matrix` now holds it.
+    void
+    add_to_matrix(const MatrixFactors   &factors,
+                  LA::MPI::SparseMatrix &matrix) override;
+    /// force += K_f(status) u, the linear part of the springs' (and the
+    /// shear layer's) reaction to u (the whole reaction without a gap), at
+    /// state.ghosted_u.
+    void
+    add_force(const TermState &state, LA::MPI::Vector &force) const override;
+    /// The springs' and the layer's energy of the status
+    /// (FoundationDiagnostics::energy()).
+    double
+    energy(const TermState &state) const override;
 
     /// The law: Gamma, c, G_p, g, and the pressure k (w - e) that the
     /// calls below take for the plate's velocity.
@@ -87,11 +111,6 @@ namespace liftoff
     /// status.
     const FoundationDiagnostics &
     diagnostics() const;
-    /// law().has_gap() and law().has_damping(), asked at many places.
-    bool
-    has_gap() const;
-    bool
-    has_damping() const;
 
     /// Every Gauss point in contact: the first iterate of eq. (3.9).
     void
@@ -121,12 +140,6 @@ namespace liftoff
     void
     set_contact_status(const std::vector<unsigned char> &status);
 
-    /// Add the foundation stiffness K_f of the current status, with the
-    /// springs' stiffness Gamma + c kappa (kappa = `velocity_factor`: 0 in
-    /// a static solve, gamma / (beta dt) in a time step), to `matrix`, and
-    /// remember that `matrix` now holds it.
-    void
-    add_to_matrix(const double velocity_factor, LA::MPI::SparseMatrix &matrix);
     /// Add the K_f of `status` (a contact_status() of this mesh) to
     /// `matrix`, which then holds no status that update_matrix() knows of:
     /// to build again a matrix that was built from that status.
@@ -155,14 +168,9 @@ namespace liftoff
                        const LA::MPI::Vector            &ghosted_src,
                        LA::MPI::Vector                  &dst) const;
 
-    /// vector += K_f(status) u, the linear part of the springs' (and the
-    /// shear layer's) reaction to u (the whole reaction without a gap).
-    void
-    add_reaction(const LA::MPI::Vector &ghosted_solution,
-                 LA::MPI::Vector       &vector) const;
     /// vector += f_g(status) = k int_S e phi_i, the part of the
     /// foundation's force that does not depend on u, for the pressure
-    /// k (w - e). Call only if has_gap().
+    /// k (w - e). Call only if law().has_gap().
     void
     add_gap_load(const SpringPressure &pressure, LA::MPI::Vector &vector) const;
     /// vector += the force whose work the bed takes without storing it:
@@ -181,9 +189,9 @@ namespace liftoff
     /// The contact status and the status the system matrix holds: the next
     /// step starts from them, so a resumed run needs them exactly.
     void
-    save(OutputArchive &archive) const;
+    save(OutputArchive &archive) const override;
     void
-    load(InputArchive &archive);
+    load(InputArchive &archive) override;
 
   private:
     FoundationPoints points;

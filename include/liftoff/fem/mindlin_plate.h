@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <liftoff/base/physical_units.h>
+
 namespace liftoff
 {
   using namespace dealii;
@@ -20,6 +22,10 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /// nu of the scene as written, for the SI conversion's D.
+    static void
+    describe_for_units(ParameterHandler            &scene,
+                       PhysicalUnits::SceneOutline &outline);
 
     /// Aspect ratio mu: width (along y) over length L (along x).
     double aspect_ratio = 1.0;

@@ -251,4 +251,12 @@ namespace liftoff
     };
     std::vector<HeldTag> mesh_tags;
   };
+
+  /// PlateGeometry's part of the SI conversion's outline: whether the
+  /// scene as written is the rectangle of Units/Length x Units/Width, and
+  /// Units/Width refused beside a mesh file (a function beside the class,
+  /// which has members enough).
+  void
+  describe_shape_for_units(ParameterHandler            &scene,
+                           PhysicalUnits::SceneOutline &outline);
 } // namespace liftoff

@@ -12,6 +12,7 @@
 #include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/plate_matrices.h>
+#include <liftoff/fem/plate_term.h>
 #include <liftoff/time/energy_check.h>
 #include <liftoff/time/newmark_integrator.h>
 #include <liftoff/time/time_stepper.h>
@@ -47,6 +48,10 @@ namespace liftoff
     /// offending parameter.
     void
     parse_parameters(ParameterHandler &prm, const PhysicalUnits &units);
+    /// What the parts that own the plate's and the bed's entries tell the
+    /// SI conversion of the scene as written (PhysicalUnits::SceneOutline).
+    static PhysicalUnits::SceneOutline
+    outline_for_units(ParameterHandler &scene);
     /// The checks across parts that need no mesh.
     void
     check() const;
@@ -65,12 +70,17 @@ namespace liftoff
     /// What the TimeStepper works on.
     TimeStepper::Parts
     for_stepper();
+    /// The terms of the plate's system, the plate first: a coupling (a
+    /// joint's springs) is one more line here.
+    std::vector<SystemTerm *>
+    system_terms();
 
     Analysis                     analysis = Analysis::dynamic_analysis;
     InitialConditions            initial_conditions;
     MindlinPlate                 plate;
     Discretization               discretization;
     PlateMatrices                matrices;
+    PlateTerm                    plate_term{matrices, plate};
     TensionlessWinklerFoundation foundation;
     LoadSet                      loads;
     NewmarkIntegrator            newmark;

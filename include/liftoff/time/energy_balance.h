@@ -1,8 +1,8 @@
 #pragma once
 
 #include <liftoff/base/linear_algebra.h>
-#include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/plate_matrices.h>
+#include <liftoff/fem/system_term.h>
 
 #include <vector>
 
@@ -43,19 +43,20 @@ namespace liftoff
     }
   };
 
-  /// Kinetic, strain and foundation energy of the state (u, v) of the
-  /// modelled part times `copies` (the full plate), with the work `work`.
-  /// `ghosted_u` is u with ghosts, `product` scratch of u's layout
-  /// (collective).
+  /// Kinetic energy (of `matrices`' mass), the strain energy of the
+  /// plate (the first of `terms`) and the energy the other terms store
+  /// (the foundation's) of the state (u, v) of the modelled part times
+  /// `copies` (the full plate), with the work `work`. `ghosted_u` is u
+  /// with ghosts, `product` scratch of u's layout (collective).
   EnergyBalance
-  energies_of(const PlateMatrices                &matrices,
-              const TensionlessWinklerFoundation &foundation,
-              const LA::MPI::Vector              &u,
-              const LA::MPI::Vector              &ghosted_u,
-              const LA::MPI::Vector              &v,
-              const double                        copies,
-              const double                        work,
-              LA::MPI::Vector                    &product);
+  energies_of(const PlateMatrices             &matrices,
+              const std::vector<SystemTerm *> &terms,
+              const LA::MPI::Vector           &u,
+              const LA::MPI::Vector           &ghosted_u,
+              const LA::MPI::Vector           &v,
+              const double                     copies,
+              const double                     work,
+              LA::MPI::Vector                 &product);
 
   /// Work of the loads over one step from (u_old, F_old) to (u_new, F_new)
   /// by the trapezoidal rule, 1/2 (u_new - u_old).(F_old + F_new), times

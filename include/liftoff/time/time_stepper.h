@@ -45,9 +45,12 @@ namespace liftoff
     /// Simulator from its parameters.
     struct Parts
     {
-      const MindlinPlate           &plate;
-      Discretization               &discretization;
-      PlateMatrices                &matrices;
+      const MindlinPlate &plate;
+      Discretization     &discretization;
+      PlateMatrices      &matrices;
+      /// The terms of the plate's system, the plate first
+      /// (SceneParts::system_terms()); the foundation is one of them.
+      std::vector<SystemTerm *>     terms;
       TensionlessWinklerFoundation &foundation;
       LoadSet                      &loads;
       const NewmarkIntegrator      &newmark;
@@ -153,17 +156,18 @@ namespace liftoff
     serialize_contact(Archive &archive);
 
   private:
-    const MindlinPlate           &plate;
-    Discretization               &discretization;
-    PlateMatrices                &matrices;
-    TensionlessWinklerFoundation &foundation;
-    LoadSet                      &loads;
-    const NewmarkIntegrator      &newmark;
-    EnergyCheck                  &energy_check;
-    const MeshRefinement         &mesh_refinement;
-    ActiveSetIteration           &active_set;
-    const Options                 options;
-    SectionTimer                 &timer;
+    const MindlinPlate             &plate;
+    Discretization                 &discretization;
+    PlateMatrices                  &matrices;
+    const std::vector<SystemTerm *> terms;
+    TensionlessWinklerFoundation   &foundation;
+    LoadSet                        &loads;
+    const NewmarkIntegrator        &newmark;
+    EnergyCheck                    &energy_check;
+    const MeshRefinement           &mesh_refinement;
+    ActiveSetIteration             &active_set;
+    const Options                   options;
+    SectionTimer                   &timer;
 
     PlateState state_;
     /// The next step's load, right-hand side and solution, and scratch.
@@ -292,8 +296,12 @@ namespace liftoff
     void
     add_dissipated_energy();
 
-    /// K + c M, the effective matrix without the foundation, for
-    /// ActiveSetIteration to write into its system matrix.
+    /// The sum of the matrices of the terms without a status (K + c M,
+    /// with `factors` = {c, kappa}), for ActiveSetIteration to write into
+    /// its system matrix; the terms with a status it adds itself.
+    ActiveSetIteration::BaseMatrix
+    base_matrix(const MatrixFactors &factors) const;
+    /// base_matrix() of a time step: {mass_factor(), velocity_factor()}.
     ActiveSetIteration::BaseMatrix
     effective_base_matrix() const;
     /// The state's energies, whether or not the history writes them
@@ -305,10 +313,11 @@ namespace liftoff
     EnergyBalance
     energies();
     /// F - K u - K_f(S) u + f_g(S) for the current state u and contact set
-    /// S (f_g: the springs' push on a gap, for `pressure`).
+    /// S (f_g: the springs' push on a gap, for `pressure`): the load less
+    /// every term's force. `scratch` is overwritten.
     void
     force_balance(const LA::MPI::Vector &load,
                   const SpringPressure  &pressure,
-                  LA::MPI::Vector       &balance) const;
+                  LA::MPI::Vector       &balance);
   };
 } // namespace liftoff

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <liftoff/base/archive_types.h>
+#include <liftoff/base/linear_algebra.h>
+
+namespace liftoff
+{
+  class Discretization;
+
+  /// The factors the system matrix of a solve is made with: the mass
+  /// term's (Newmark's 1 / (beta dt^2), 0 in a static solve) and the
+  /// velocity's kappa (gamma / (beta dt), 0 in a static solve), by which a
+  /// term with dashpots stiffens.
+  struct MatrixFactors
+  {
+    double mass     = 0;
+    double velocity = 0;
+  };
+
+  /// The displacement a term's force and energy are taken at: owned, and
+  /// with ghosts (constraints distributed), and a vector of its layout
+  /// that the term may overwrite.
+  struct TermState
+  {
+    const LA::MPI::Vector &u;
+    const LA::MPI::Vector &ghosted_u;
+    LA::MPI::Vector       &scratch;
+  };
+
+  /**
+   * A term of the plate's system: the plate itself (stiffness and mass,
+   * PlateTerm), the foundation (TensionlessWinklerFoundation), and the
+   * couplings to come (springs between two slabs' edges). The system
+   * matrix, the internal force, the stored energy and the checkpoint are
+   * the sums of its terms' (SceneParts::system_terms(), the plate first).
+   *
+   * A term whose matrix changes with a status of its own (the
+   * foundation's contact set) adds the entries of the status it holds;
+   * the active-set iteration keeps them up to date (has_status()).
+   */
+  class SystemTerm
+  {
+  public:
+    virtual ~SystemTerm() = default;
+
+    /// Its data on the current mesh (a new mesh: again).
+    virtual void
+    setup(const Discretization &discretization) = 0;
+
+    /// Whether its matrix depends on a status that the active-set
+    /// iteration drives (then it adds its own entries there, not in the
+    /// system's fixed part).
+    virtual bool
+    has_status() const
+    {
+      return false;
+    }
+
+    /// matrix += its entries for `factors` (and its current status), in
+    /// the plate's sparsity pattern.
+    virtual void
+    add_to_matrix(const MatrixFactors   &factors,
+                  LA::MPI::SparseMatrix &matrix) = 0;
+
+    /// force += its internal force at `state`, the part linear in u (its
+    /// matrix without the velocity's stiffening, times u).
+    virtual void
+    add_force(const TermState &state, LA::MPI::Vector &force) const = 0;
+
+    /// The energy it stores at `state`, on the modelled part (collective).
+    virtual double
+    energy(const TermState &state) const = 0;
+
+    /// Its state for a checkpoint, bit for bit (none by default).
+    virtual void
+    save(OutputArchive &) const
+    {}
+    virtual void
+    load(InputArchive &)
+    {}
+  };
+} // namespace liftoff
