@@ -173,7 +173,7 @@ main(int argc, char **argv)
                       error / rigid(0.5),
                       round_off_limit(gamma, delta) + 10 * gamma);
           checks.less(what.str() + ": |contact fraction - c/L|",
-                      std::abs(simulator->history().back().contact_fraction
+                      std::abs(simulator->history().back()["contact_fraction"]
                                - length),
                       1e-12);
         }
@@ -206,7 +206,8 @@ main(int argc, char **argv)
                     std::abs(w * gamma - 1),
                     0.1 * gamma + round_off_limit(gamma, 0.05));
         checks.less(what.str() + ": |contact fraction - 1|",
-                    std::abs(simulator->history().back().contact_fraction - 1),
+                    std::abs(simulator->history().back()["contact_fraction"]
+                             - 1),
                     1e-12);
       }
   return checks.exit_code();
