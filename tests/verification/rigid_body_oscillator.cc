@@ -147,8 +147,11 @@ main(int argc, char **argv)
                 0.99);
   }
   {
-    double uplift = 0;
-    for (const auto &row : liftoff_tests::run_scene(scene(2, 0.02))->history())
+    // The run outlives the loop: a range over the history of a temporary
+    // reads freed rows.
+    double     uplift = 0;
+    const auto run    = liftoff_tests::run_scene(scene(2, 0.02));
+    for (const auto &row : run->history())
       uplift = std::max(uplift, row["max_uplift"]);
     checks.less("bilateral, pressed down: max uplift / (q/Gamma)",
                 uplift / (q / gamma_f),
