@@ -134,21 +134,6 @@ namespace liftoff
   }
 
 
-  std::vector<std::string>
-  Discretization::save_mesh(const std::string &folder,
-                            const std::string &name) const
-  {
-    triangulation.save(folder + "/" + name);
-    // deal.II writes "mesh", "mesh.info" and, with cell data, more.
-    std::vector<std::string> names;
-    for (const auto &entry : std::filesystem::directory_iterator(folder))
-      if (entry.path().filename().string().rfind(name, 0) == 0)
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-
   unsigned int
   Discretization::initial_level() const
   {

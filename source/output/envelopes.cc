@@ -126,7 +126,7 @@ namespace liftoff
         if (first)
           {
             envelope.extreme.assign(values.size(), 0.0);
-            envelope.time.assign(values.size(), step.state.tau);
+            envelope.time.assign(values.size(), step.state.clock.tau());
           }
         for (unsigned int i = 0; i < values.size(); ++i)
           {
@@ -134,7 +134,7 @@ namespace liftoff
             if (first || v > envelope.extreme[i])
               {
                 envelope.extreme[i] = v;
-                envelope.time[i]    = step.state.tau;
+                envelope.time[i]    = step.state.clock.tau();
               }
           }
       }
@@ -143,7 +143,7 @@ namespace liftoff
     AssertThrow(points.size() == envelopes[0].extreme.size(),
                 ExcInternalError());
     ++n_steps_seen;
-    last_time = step.state.tau;
+    last_time = step.state.clock.tau();
   }
 
 

@@ -581,7 +581,8 @@ namespace liftoff
   void
   FieldOutput::execute(const StepData &step)
   {
-    if (directory.empty() || !is_due(step.state.step, step.is_last_step))
+    if (directory.empty()
+        || !is_due(step.state.clock.step(), step.state.clock.is_at_end()))
       return;
     ghosted_velocity = step.state.v;
     write(directory,
@@ -589,8 +590,8 @@ namespace liftoff
           step.foundation,
           step.state.ghosted_u,
           ghosted_velocity,
-          units.scale(PhysicalUnits::Quantity::time) * step.state.tau,
-          step.state.step);
+          units.scale(PhysicalUnits::Quantity::time) * step.state.clock.tau(),
+          step.state.clock.step());
   }
 
 

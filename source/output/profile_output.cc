@@ -242,8 +242,8 @@ namespace liftoff
   void
   ProfileOutput::execute(const StepData &step)
   {
-    const double           tau = step.state.tau;
-    const double           dt  = step.time_step;
+    const double           tau = step.state.clock.tau();
+    const double           dt  = step.state.clock.time_step();
     const LA::MPI::Vector &u   = step.state.ghosted_u;
     if (n_points == 0)
       return;

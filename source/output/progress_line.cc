@@ -75,23 +75,25 @@ namespace liftoff
     if (!has_started)
       {
         has_started = true;
-        first_step  = step.state.step;
+        first_step  = step.state.clock.step();
         return;
       }
     const Clock::time_point now = Clock::now();
     if (!is_root
-        || (!step.is_last_step
+        || (!step.state.clock.is_at_end()
             && std::chrono::duration<double>(now - last_shown).count() < 1.0))
       return;
     last_shown           = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
-    const unsigned int done = step.state.step - first_step;
-    const unsigned int left = step.n_steps - step.state.step;
+    const unsigned int done = step.state.clock.step() - first_step;
+    const unsigned int left =
+      step.state.clock.n_steps() - step.state.clock.step();
 
     std::ostringstream line;
-    line << "step " << step.state.step << "/" << step.n_steps
+    line << "step " << step.state.clock.step() << "/"
+         << step.state.clock.n_steps()
          << (units.is_physical() ? "  t " : "  tau ") << std::setprecision(6)
-         << units.scale(PhysicalUnits::Quantity::time) * step.state.tau
+         << units.scale(PhysicalUnits::Quantity::time) * step.state.clock.tau()
          << (units.is_physical() ? " s" : "") << "  iterations "
          << step.iteration.iterations << "  contact " << std::fixed
          << std::setprecision(3) << step.contact_fraction << "  elapsed "

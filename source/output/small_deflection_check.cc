@@ -64,7 +64,7 @@ namespace liftoff
     if (largest > largest_w || !std::isfinite(largest))
       {
         largest_w       = largest;
-        time_of_largest = step.state.tau;
+        time_of_largest = step.state.clock.tau();
       }
     if (!has_warned && !warning().empty())
       {

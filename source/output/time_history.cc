@@ -10,6 +10,7 @@
 #include <liftoff/time/plate_state.h>
 
 #include <liftoff/output/resultant_sweep.h>
+#include <liftoff/output/run_summary.h>
 #include <liftoff/output/stress_resultants.h>
 #include <liftoff/output/time_history.h>
 
@@ -413,63 +414,54 @@ namespace liftoff
   {
     using Quantity = PhysicalUnits::Quantity;
     columns.clear();
-    add_members(
-      {{units.is_physical() ? "t" : "tau", &Row::tau, Quantity::time}});
+    columns.add("tau", Quantity::time, [](const StepData &step) {
+      return step.state.clock.tau();
+    });
     add_probe_columns();
-    add_column(
-      "contact_fraction",
-      [](const Row &r) { return r.contact_fraction; },
-      Quantity::number);
-    add_members({{"max_uplift", &Row::max_uplift, Quantity::deflection}});
-    for (const auto &[name, value] :
-         std::vector<std::pair<std::string, double (*)(const Row &)>>{
-           {"active_set_iterations",
-            [](const Row &r) -> double { return r.iterations; }},
-           {"active_set_cycle",
-            [](const Row &r) -> double { return r.cycle_length; }},
-           {"cells", [](const Row &r) -> double { return r.n_cells; }},
-           {"dofs", [](const Row &r) -> double { return r.n_dofs; }}})
-      add_column(name, value, Quantity::number);
+    columns.add("contact_fraction", Quantity::number, [](const StepData &step) {
+      return step.contact_fraction;
+    });
+    columns.add("max_uplift", Quantity::deflection, [this](const StepData &s) {
+      return largest_uplift(s);
+    });
+    columns.add("active_set_iterations",
+                Quantity::number,
+                [](const StepData &step) -> double {
+                  return step.iteration.iterations;
+                });
+    columns.add("active_set_cycle",
+                Quantity::number,
+                [](const StepData &step) -> double {
+                  return step.iteration.cycle_length;
+                });
+    columns.add("cells", Quantity::number, [](const StepData &step) -> double {
+      return step.discretization.triangulation.n_global_active_cells();
+    });
+    columns.add("dofs", Quantity::number, [](const StepData &step) -> double {
+      return step.discretization.dof_handler.n_dofs();
+    });
     if (write_energies)
       add_energy_columns();
     if (write_resultant)
-      add_members({{"resultant", &Row::resultant, Quantity::force},
-                   {"resultant_x", &Row::resultant_x, Quantity::length},
-                   {"resultant_y", &Row::resultant_y, Quantity::length},
-                   {"contact_area", &Row::contact_area, Quantity::area},
-                   {"max_pressure", &Row::max_pressure, Quantity::pressure},
-                   {"max_pressure_x", &Row::max_pressure_x, Quantity::length},
-                   {"max_pressure_y", &Row::max_pressure_y, Quantity::length}});
+      add_resultant_columns();
     add_quantity_probe_columns();
     if (write_moment_extremes)
-      add_members({{"max_M_1", &Row::max_m_1, Quantity::moment},
-                   {"max_M_1_x", &Row::max_m_1_x, Quantity::length},
-                   {"max_M_1_y", &Row::max_m_1_y, Quantity::length},
-                   {"min_M_2", &Row::min_m_2, Quantity::moment},
-                   {"min_M_2_x", &Row::min_m_2_x, Quantity::length},
-                   {"min_M_2_y", &Row::min_m_2_y, Quantity::length},
-                   {"max_Q", &Row::max_q, Quantity::shear_force},
-                   {"max_Q_x", &Row::max_q_x, Quantity::length},
-                   {"max_Q_y", &Row::max_q_y, Quantity::length}});
-    for (unsigned int k = 0; k < 3 * moving_load_names.size(); ++k)
-      add_column(
-        moving_load_names[k / 3] + std::array{"_x", "_y", "_on"}[k % 3],
-        [k](const Row &r) { return r.moving_loads[k]; },
-        k % 3 == 2 ? Quantity::number : Quantity::length);
-    for (unsigned int k = 0; k < riding_probes.size(); ++k)
-      add_column(
-        riding_probes[k].name,
-        [k](const Row &r) { return r.riding_values[k]; },
-        quantity_of(riding_probes[k].quantity));
-  }
-
-
-  void
-  TimeHistory::add_members(const std::vector<Member> &members)
-  {
-    for (const auto &[name, member, quantity] : members)
-      add_column(
-        name, [member = member](const Row &r) { return r.*member; }, quantity);
+      columns.add({{"max_M_1", Quantity::moment},
+                   {"max_M_1_x", Quantity::length},
+                   {"max_M_1_y", Quantity::length},
+                   {"min_M_2", Quantity::moment},
+                   {"min_M_2_x", Quantity::length},
+                   {"min_M_2_y", Quantity::length},
+                   {"max_Q", Quantity::shear_force},
+                   {"max_Q_x", Quantity::length},
+                   {"max_Q_y", Quantity::length}},
+                  [this](const StepData &step) {
+                    return moment_extremes(step);
+                  });
+    add_moving_load_columns();
+    scales.clear();
+    for (const auto &column : columns.columns())
+      scales.push_back(units.scale(column.quantity));
   }
 
 
@@ -479,32 +471,65 @@ namespace liftoff
     const std::vector<std::string> names =
       probe_column_names(std::vector<std::string>(probe_points.size(), "w"),
                          probe_points);
-    for (unsigned int k = 0; k < names.size(); ++k)
-      add_column(
-        names[k],
-        [k](const Row &r) { return r.probe_w[k]; },
-        PhysicalUnits::Quantity::deflection);
+    std::vector<HistoryColumns::Column> group;
+    for (const std::string &name : names)
+      group.push_back({name, PhysicalUnits::Quantity::deflection});
+    columns.add(group, [this](const StepData &step) {
+      std::vector<double> w;
+      for (const auto &probe : probes)
+        w.push_back(probe.local_value(step.state.ghosted_u));
+      Utilities::MPI::sum(w, discretization->mpi_communicator, w);
+      return w;
+    });
   }
 
 
   void
   TimeHistory::add_energy_columns()
   {
-    std::vector<std::pair<std::string, double EnergyBalance::*>> energies = {
-      {"kinetic", &EnergyBalance::kinetic},
-      {"strain", &EnergyBalance::strain},
-      {"foundation", &EnergyBalance::foundation},
-      {"work", &EnergyBalance::work}};
+    using Quantity                            = PhysicalUnits::Quantity;
+    std::vector<HistoryColumns::Column> group = {{"kinetic", Quantity::energy},
+                                                 {"strain", Quantity::energy},
+                                                 {"foundation",
+                                                  Quantity::energy},
+                                                 {"work", Quantity::energy}};
     if (write_dissipated)
-      energies.emplace_back("dissipated_energy", &EnergyBalance::dissipated);
-    for (const auto &[name, member] : energies)
-      add_column(
-        name,
-        [member = member](const Row &r) { return r.energies.*member; },
-        PhysicalUnits::Quantity::energy);
-    add_members({{"balance_error",
-                  &Row::balance_error,
-                  PhysicalUnits::Quantity::energy}});
+      group.push_back({"dissipated_energy", Quantity::energy});
+    group.push_back({"balance_error", Quantity::energy});
+    const bool dissipated = write_dissipated;
+    columns.add(group, [dissipated](const StepData &step) {
+      const EnergyBalance &e = step.state.energies;
+      std::vector<double>  values{e.kinetic, e.strain, e.foundation, e.work};
+      if (dissipated)
+        values.push_back(e.dissipated);
+      values.push_back(e.error(step.state.initial_energies));
+      return values;
+    });
+  }
+
+
+  void
+  TimeHistory::add_resultant_columns()
+  {
+    using Quantity = PhysicalUnits::Quantity;
+    columns.add({{"resultant", Quantity::force},
+                 {"resultant_x", Quantity::length},
+                 {"resultant_y", Quantity::length},
+                 {"contact_area", Quantity::area},
+                 {"max_pressure", Quantity::pressure},
+                 {"max_pressure_x", Quantity::length},
+                 {"max_pressure_y", Quantity::length}},
+                [this](const StepData &step) {
+                  const auto r = step.foundation.diagnostics().resultant(
+                    step.state.ghosted_u, ghosted_velocity);
+                  return std::vector<double>{r.force,
+                                             r.centre[0],
+                                             r.centre[1],
+                                             r.contact_area,
+                                             r.largest_pressure,
+                                             r.largest_pressure_at[0],
+                                             r.largest_pressure_at[1]};
+                });
   }
 
 
@@ -520,25 +545,46 @@ namespace liftoff
       }
     const std::vector<std::string> names =
       probe_column_names(quantities, points);
+    std::vector<HistoryColumns::Column> group;
     for (unsigned int k = 0; k < names.size(); ++k)
-      add_column(
-        names[k],
-        [k](const Row &r) { return r.probe_quantities[k]; },
-        quantity_of(quantity_probes[k].quantity));
+      group.push_back({names[k], quantity_of(quantity_probes[k].quantity)});
+    columns.add(group, [this](const StepData &step) {
+      return values_at(step, quantity_probes);
+    });
   }
 
 
   void
-  TimeHistory::add_column(const std::string                 &name,
-                          std::function<double(const Row &)> value,
-                          const PhysicalUnits::Quantity      quantity)
+  TimeHistory::add_moving_load_columns()
   {
-    // In the scene's units; a dimensionless scene's are as they were.
-    const double scale = units.scale(quantity);
-    columns.push_back({name + units.unit(quantity),
-                       [value = std::move(value), scale](const Row &r) {
-                         return scale * value(r);
-                       }});
+    std::vector<HistoryColumns::Column> group;
+    for (unsigned int k = 0; k < 3 * moving_load_names.size(); ++k)
+      group.push_back(
+        {moving_load_names[k / 3] + std::array{"_x", "_y", "_on"}[k % 3],
+         k % 3 == 2 ? PhysicalUnits::Quantity::number
+                    : PhysicalUnits::Quantity::length});
+    columns.add(group, [this](const StepData &step) {
+      return moving_load_positions(step.state.clock.tau());
+    });
+    group.clear();
+    for (const RidingProbe &probe : riding_probes)
+      group.push_back({probe.name, quantity_of(probe.quantity)});
+    columns.add(group, [this](const StepData &step) {
+      return riding_probe_values(step);
+    });
+  }
+
+
+  std::vector<std::string>
+  TimeHistory::column_names() const
+  {
+    std::vector<std::string> names;
+    for (const auto &column : columns.columns())
+      names.push_back((column.name == "tau" && units.is_physical()
+                         ? std::string("t")
+                         : column.name)
+                      + units.unit(column.quantity));
+    return names;
   }
 
 
@@ -609,26 +655,18 @@ namespace liftoff
   void
   TimeHistory::write_header()
   {
-    std::ostream &out = file.stream();
-    for (unsigned int c = 0; c < columns.size(); ++c)
-      out << (c > 0 ? "," : "") << columns[c].name;
+    std::ostream                  &out   = file.stream();
+    const std::vector<std::string> names = column_names();
+    for (unsigned int c = 0; c < names.size(); ++c)
+      out << (c > 0 ? "," : "") << names[c];
     out << '\n';
   }
 
 
-  TimeHistory::Row
-  TimeHistory::row_of(const StepData &step) const
+  double
+  TimeHistory::largest_uplift(const StepData &step) const
   {
-    const MPI_Comm         comm = discretization->mpi_communicator;
-    const LA::MPI::Vector &u    = step.state.ghosted_u;
-    Row                    row;
-    row.tau              = step.state.tau;
-    row.iterations       = step.iteration.iterations;
-    row.cycle_length     = step.iteration.cycle_length;
-    row.contact_fraction = step.contact_fraction;
-    for (const auto &probe : probes)
-      row.probe_w.push_back(probe.local_value(u));
-    Utilities::MPI::sum(row.probe_w, comm, row.probe_w);
+    const LA::MPI::Vector &u = step.state.ghosted_u;
     // (g - w)^+ as the uplift field; g = 0 takes the plain path.
     double uplift = 0;
     if (gap_at_w_dofs.empty())
@@ -640,50 +678,24 @@ namespace liftoff
         for (const auto i : w_dofs)
           uplift = std::max(uplift, gap_at_w_dofs[k++] - u(i));
       }
-    row.max_uplift = Utilities::MPI::max(uplift, comm);
-    row.n_cells    = step.discretization.triangulation.n_global_active_cells();
-    row.n_dofs     = step.discretization.dof_handler.n_dofs();
-    row.energies   = step.state.energies;
-    row.balance_error = row.energies.error(step.state.initial_energies);
-    if (moving_load_positions)
-      row.moving_loads = moving_load_positions(row.tau);
-    row.riding_values = riding_probe_values(step, row);
-    if (write_resultant)
-      {
-        const auto r =
-          step.foundation.diagnostics().resultant(u, ghosted_velocity);
-        row.resultant      = r.force;
-        row.resultant_x    = r.centre[0];
-        row.resultant_y    = r.centre[1];
-        row.contact_area   = r.contact_area;
-        row.max_pressure   = r.largest_pressure;
-        row.max_pressure_x = r.largest_pressure_at[0];
-        row.max_pressure_y = r.largest_pressure_at[1];
-      }
-    row.probe_quantities = probe_quantities(step);
-    if (write_moment_extremes)
-      add_moment_extremes(step, row);
-    return row;
+    return Utilities::MPI::max(uplift, discretization->mpi_communicator);
   }
 
 
   std::vector<double>
-  TimeHistory::probe_quantities(const StepData &step) const
+  TimeHistory::riding_probe_values(const StepData &step) const
   {
-    return values_at(step, quantity_probes);
-  }
-
-
-  std::vector<double>
-  TimeHistory::riding_probe_values(const StepData &step, const Row &row) const
-  {
-    const Discretization      &disc = *discretization;
+    if (riding_probes.empty())
+      return {};
+    const Discretization     &disc = *discretization;
+    const std::vector<double> positions =
+      moving_load_positions(step.state.clock.tau());
     std::vector<QuantityProbe> probes;
     for (const RidingProbe &rider : riding_probes)
       {
         QuantityProbe probe{rider.quantity,
-                            Point<2>(row.moving_loads[3 * rider.index],
-                                     row.moving_loads[3 * rider.index + 1]),
+                            Point<2>(positions[3 * rider.index],
+                                     positions[3 * rider.index + 1]),
                             {}};
         // Every rank decides alike, so holder_cell() (collective) is
         // called by all or none; off the plate the cell stays invalid.
@@ -728,8 +740,8 @@ namespace liftoff
   }
 
 
-  void
-  TimeHistory::add_moment_extremes(const StepData &step, Row &row) const
+  std::vector<double>
+  TimeHistory::moment_extremes(const StepData &step) const
   {
     LocatedMaximum largest_m_1, smallest_m_2, largest_q;
     const auto    &points = step.resultants.points();
@@ -744,15 +756,15 @@ namespace liftoff
     largest_m_1         = largest_m_1.over_ranks(comm);
     smallest_m_2        = smallest_m_2.over_ranks(comm);
     largest_q           = largest_q.over_ranks(comm);
-    row.max_m_1         = largest_m_1.value;
-    row.max_m_1_x       = largest_m_1.point[0];
-    row.max_m_1_y       = largest_m_1.point[1];
-    row.min_m_2         = -smallest_m_2.value;
-    row.min_m_2_x       = smallest_m_2.point[0];
-    row.min_m_2_y       = smallest_m_2.point[1];
-    row.max_q           = largest_q.value;
-    row.max_q_x         = largest_q.point[0];
-    row.max_q_y         = largest_q.point[1];
+    return {largest_m_1.value,
+            largest_m_1.point[0],
+            largest_m_1.point[1],
+            -smallest_m_2.value,
+            smallest_m_2.point[0],
+            smallest_m_2.point[1],
+            largest_q.value,
+            largest_q.point[0],
+            largest_q.point[1]};
   }
 
 
@@ -762,7 +774,7 @@ namespace liftoff
     find_gap_at_w_dofs(step);
     if (write_resultant && step.foundation.law().has_damping())
       ghosted_velocity = step.state.v;
-    history.push_back(row_of(step));
+    history.push_back(columns.row_at(step));
     write_row(history.back());
     file.write_if_due();
   }
@@ -790,15 +802,16 @@ namespace liftoff
 
 
   void
-  TimeHistory::write_row(const Row &row)
+  TimeHistory::write_row(const HistoryRow &row)
   {
     // Integer columns are exact in a double and written alike below 1e12.
-    std::ostream &out = file.stream();
-    for (unsigned int c = 0; c < columns.size(); ++c)
+    std::ostream              &out    = file.stream();
+    const std::vector<double> &values = row.values();
+    for (unsigned int c = 0; c < values.size(); ++c)
       {
         if (c > 0)
           out << ',';
-        put(out, columns[c].value(row));
+        put(out, scales[c] * values[c]);
       }
     out << '\n';
   }
@@ -814,7 +827,10 @@ namespace liftoff
   void
   TimeHistory::save(OutputArchive &archive) const
   {
-    archive << column_names() << Row::layout() << history;
+    std::vector<std::vector<double>> values;
+    for (const HistoryRow &row : history)
+      values.push_back(row.values());
+    archive << column_names() << values;
   }
 
 
@@ -823,57 +839,51 @@ namespace liftoff
   {
     // history.csv is a function of the rows: they are written again as
     // they were, and those of steps after the checkpoint are gone once the
-    // file is rewritten.
-    // A checkpoint of other columns, or of rows of another layout (another
-    // version of liftoff: an optional column adds a member to every row),
-    // is refused before its rows are read.
-    std::vector<std::string> saved, saved_layout;
-    archive >> saved >> saved_layout;
-    AssertThrow(saved == column_names() && saved_layout == Row::layout(),
+    // file is rewritten. A checkpoint of other columns is refused before
+    // its rows are read.
+    std::vector<std::string> saved;
+    archive >> saved;
+    AssertThrow(saved == column_names(),
                 ExcMessage("The checkpoint's time history has the columns "
-                           + joined(saved) + " and rows of "
-                           + joined(saved_layout) + ", this liftoff writes "
-                           + joined(column_names()) + " and rows of "
-                           + joined(Row::layout())
-                           + ": it was written by another version of liftoff; "
-                             "resume with that version, or start the scene "
-                             "anew."));
-    archive >> history;
+                           + joined(saved) + ", this run writes "
+                           + joined(column_names())
+                           + ": it was written by another version of liftoff "
+                             "or for other outputs; resume with that "
+                             "version, or start the scene anew."));
+    std::vector<std::vector<double>> values;
+    archive >> values;
+    history.clear();
+    for (auto &row : values)
+      history.emplace_back(std::move(row), columns.names());
     file.hold();
-    for (const Row &row : history)
+    for (const HistoryRow &row : history)
       write_row(row);
   }
 
 
-  TimeHistory::IterationStatistics
-  TimeHistory::iteration_statistics() const
+  void
+  TimeHistory::add_to(RunSummary &summary) const
   {
-    IterationStatistics statistics;
-    unsigned int        total = 0, n = 0;
-    for (const Row &row : history)
-      if (row.iterations > 0)
-        {
-          total += row.iterations;
-          statistics.max = std::max(statistics.max, row.iterations);
-          ++n;
-          statistics.n_cycled += (row.cycle_length > 0);
-        }
-    statistics.mean = (n > 0 ? double(total) / n : 0.0);
-    return statistics;
+    unsigned int total = 0, n = 0, largest = 0, n_cycled = 0;
+    for (const HistoryRow &row : history)
+      {
+        const auto iterations =
+          static_cast<unsigned int>(row["active_set_iterations"]);
+        if (iterations == 0)
+          continue;
+        total += iterations;
+        largest = std::max(largest, iterations);
+        ++n;
+        n_cycled += (row["active_set_cycle"] > 0);
+      }
+    summary.add("active-set iterations per step, mean",
+                n > 0 ? double(total) / n : 0.0);
+    summary.add("active-set iterations per step, max", double(largest));
+    summary.add("steps whose active set cycled", double(n_cycled));
   }
 
 
-  std::vector<std::string>
-  TimeHistory::column_names() const
-  {
-    std::vector<std::string> names;
-    for (const Column &column : columns)
-      names.push_back(column.name);
-    return names;
-  }
-
-
-  const std::vector<TimeHistory::Row> &
+  const std::vector<HistoryRow> &
   TimeHistory::rows() const
   {
     return history;

@@ -14,6 +14,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -470,13 +471,6 @@ namespace liftoff
   }
 
 
-  const std::string &
-  Checkpoint::folder() const
-  {
-    return found;
-  }
-
-
   void
   Checkpoint::read(const MPI_Comm                             comm,
                    const std::function<void(InputArchive &)> &load) const
@@ -495,5 +489,36 @@ namespace liftoff
                     ExcMessage("The checkpoint file " + name
                                + " is damaged: " + e.what()));
       }
+  }
+
+
+  namespace
+  {
+    // The name of an adaptive run's mesh in its checkpoint folder.
+    const std::string mesh_name = "mesh";
+  } // namespace
+
+
+  Checkpoint::SharedFiles
+  Checkpoint::mesh_writer(
+    const parallel::distributed::Triangulation<2> &triangulation)
+  {
+    return [&triangulation](const std::string &folder) {
+      triangulation.save(folder + "/" + mesh_name);
+      // deal.II writes "mesh", "mesh.info" and, with cell data, more.
+      std::vector<std::string> names;
+      for (const auto &entry : std::filesystem::directory_iterator(folder))
+        if (entry.path().filename().string().rfind(mesh_name, 0) == 0)
+          names.push_back(entry.path().filename().string());
+      std::sort(names.begin(), names.end());
+      return names;
+    };
+  }
+
+
+  std::string
+  Checkpoint::mesh_file() const
+  {
+    return found + "/" + mesh_name;
   }
 } // namespace liftoff

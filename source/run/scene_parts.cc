@@ -99,16 +99,18 @@ namespace liftoff
                           discretization.mpi_communicator);
     discretization.setup();
     const double window =
-      analysis == Analysis::static_analysis
-        ? 0.0
-        : mesh_refinement.steps_between_adaptations() * newmark.time_step;
+      mesh_refinement.steps_between_adaptations() * clock().time_step();
     mesh_refinement.refine_around_loads(
       discretization,
       loads.regions_in_windows(0, window, mesh_refinement.n_windows()));
-    if (analysis == Analysis::static_analysis)
-      loads.check_against(discretization, 0.0, 0);
-    else
-      loads.check_against(discretization, newmark.time_step, newmark.n_steps());
+    loads.check_against(discretization, clock().time_step(), clock().n_steps());
+  }
+
+
+  Clock
+  SceneParts::clock() const
+  {
+    return analysis == Analysis::static_analysis ? Clock() : newmark.clock();
   }
 
 

@@ -19,12 +19,6 @@
 
 namespace liftoff
 {
-  namespace
-  {
-    // The name of an adaptive run's mesh in its checkpoint folder.
-    const std::string mesh_file = "mesh";
-  } // namespace
-
   Simulator::Simulator(const MPI_Comm comm,
                        const bool     verbose,
                        const bool     show_progress)
@@ -93,8 +87,8 @@ namespace liftoff
     profile_output.check_against(parts.discretization);
     envelopes.check_against(parts.mesh_refinement);
     if (parts.is_dynamic())
-      profile_output.warn_of_times_not_reached(parts.newmark.end_time,
-                                               parts.newmark.time_step,
+      profile_output.warn_of_times_not_reached(parts.clock().end_time(),
+                                               parts.clock().time_step(),
                                                mpi_communicator);
   }
 
@@ -146,7 +140,9 @@ namespace liftoff
     parts.setup_mesh();
     stepper = std::make_unique<TimeStepper>(
       parts.for_stepper(),
-      TimeStepper::Options{parts.is_dynamic(), time_history.wants_energies()},
+      TimeStepper::Options{parts.is_dynamic(),
+                           time_history.wants_energies(),
+                           parts.clock()},
       timer);
     stepper->setup();
     parts.check_not_trivial();
@@ -234,13 +230,13 @@ namespace liftoff
     // leaves the output of the earlier run as it was.
     const unsigned int step =
       checkpoint.open(output_directory, mpi_communicator, scene);
-    AssertThrow(step <= parts.newmark.n_steps(),
+    const Clock &clock = stepper->state().clock;
+    AssertThrow(step <= clock.n_steps(),
                 ExcMessage("Cannot resume: the checkpoint is of step "
                            + std::to_string(step)
                            + ", beyond Time integration/End time = "
-                           + format_number(parts.newmark.end_time) + " ("
-                           + std::to_string(parts.newmark.n_steps())
-                           + " steps)."));
+                           + format_number(clock.end_time()) + " ("
+                           + std::to_string(clock.n_steps()) + " steps)."));
     // A killed run may have left temporary files (and checkpoint.new,
     // which the next checkpoint replaces).
     output_folder->remove_temporary_files();
@@ -294,8 +290,7 @@ namespace liftoff
   Simulator::record(const ActiveSetIteration::Result &iteration)
   {
     SectionTimer::Scope  t(timer, "output");
-    const bool           is_static = !parts.is_dynamic();
-    const PlateState    &state     = stepper->state();
+    const PlateState    &state = stepper->state();
     const ResultantSweep resultants(parts.plate,
                                     parts.discretization,
                                     parts.foundation.law(),
@@ -305,14 +300,11 @@ namespace liftoff
                         parts.foundation,
                         iteration,
                         resultants,
-                        parts.foundation.diagnostics().contact_area_fraction(),
-                        is_static ? 0.0 : parts.newmark.time_step,
-                        is_static ? 0 : parts.newmark.n_steps(),
-                        is_static || state.step == parts.newmark.n_steps()};
+                        parts.foundation.diagnostics().contact_area_fraction()};
     for (Output *output : outputs)
       output->execute(step);
     if (!has_taken_over_output)
-      take_over_output(state.step);
+      take_over_output(state.clock.step());
   }
 
 
@@ -363,9 +355,8 @@ namespace liftoff
           adapt_mesh_if_due();
       }
 
-    for (unsigned int step = stepper->state().step + 1;
-         step <= parts.newmark.n_steps();
-         ++step)
+    const Clock &clock = stepper->state().clock;
+    for (unsigned int step = clock.step() + 1; step <= clock.n_steps(); ++step)
       {
         record(stepper->do_step(step));
         adapt_mesh_if_due();
@@ -400,10 +391,10 @@ namespace liftoff
   void
   Simulator::adapt_mesh_if_due()
   {
-    const unsigned int step = stepper->state().step;
-    if (!parts.mesh_refinement.is_due(step))
+    const Clock &clock = stepper->state().clock;
+    if (!parts.mesh_refinement.is_due(clock.step()))
       return;
-    adaptation_pending = (step == parts.newmark.n_steps());
+    adaptation_pending = clock.is_at_end();
     if (adaptation_pending)
       return;
     const std::optional<double> jump = stepper->adapt_mesh_in_time_loop();
@@ -455,14 +446,14 @@ namespace liftoff
       {
         // The run's mesh is the checkpoint's; everything on it is rebuilt
         // before the state is read into it.
-        parts.discretization.load_mesh(checkpoint.folder() + "/" + mesh_file);
+        parts.discretization.load_mesh(checkpoint.mesh_file());
         stepper->setup();
         find_points_on_new_mesh();
       }
     checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
       serialize(archive, Checkpoint::format);
     });
-    const unsigned int step = stepper->state().step;
+    const unsigned int step = stepper->state().clock.step();
     AssertThrow(
       step == resume_step && time_history.rows().size() == resume_step + 1,
       ExcMessage("The checkpoint of step " + std::to_string(resume_step)
@@ -475,24 +466,23 @@ namespace liftoff
   void
   Simulator::write_checkpoint_if_due(const bool is_stopping)
   {
-    const unsigned int step = stepper->state().step;
+    const Clock &clock = stepper->state().clock;
     if (!writes_files()
         || !(is_stopping
-             || checkpoint.is_due(step,
-                                  step == parts.newmark.n_steps(),
+             || checkpoint.is_due(clock.step(),
+                                  clock.is_at_end(),
                                   mpi_communicator)))
       return;
     SectionTimer::Scope t(timer, "checkpoint");
     // An adaptive run's mesh cannot be rebuilt from the scene.
-    Checkpoint::SharedFiles save_mesh;
-    if (parts.mesh_refinement.is_enabled())
-      save_mesh = [&](const std::string &folder) {
-        return parts.discretization.save_mesh(folder, mesh_file);
-      };
+    const Checkpoint::SharedFiles save_mesh =
+      parts.mesh_refinement.is_enabled()
+        ? Checkpoint::mesh_writer(parts.discretization.triangulation)
+        : Checkpoint::SharedFiles();
     checkpoint.write(
       output_directory,
       mpi_communicator,
-      step,
+      clock.step(),
       scene,
       [&](OutputArchive &archive) { serialize(archive, Checkpoint::format); },
       save_mesh);
@@ -504,8 +494,10 @@ namespace liftoff
   {
     if (signal != 0)
       stop_for_signal(signal,
-                      "after step " + std::to_string(stepper->state().step)
-                        + " (tau = " + format_number(stepper->state().tau)
+                      "after step "
+                        + std::to_string(stepper->state().clock.step())
+                        + " (tau = "
+                        + format_number(stepper->state().clock.tau())
                         + "); the files written so far are complete"
                         + (writes_files() ? " and `liftoff --resume` continues "
                                             "from the checkpoint of this step."
@@ -541,8 +533,7 @@ namespace liftoff
   RunSummary
   Simulator::summary_of_run(const std::string &status) const
   {
-    const auto &rows       = time_history.rows();
-    const auto  iterations = time_history.iteration_statistics();
+    const auto &rows = time_history.rows();
     RunSummary  summary;
     summary.add("status", status);
     if (!warnings().empty())
@@ -566,9 +557,7 @@ namespace liftoff
                        parts.energy_check,
                        parts.is_dynamic(),
                        parts.newmark.beta);
-    summary.add("active-set iterations per step, mean", iterations.mean);
-    summary.add("active-set iterations per step, max", double(iterations.max));
-    summary.add("steps whose active set cycled", double(iterations.n_cycled));
+    time_history.add_to(summary);
     envelopes.add_to(summary);
     small_deflection.add_to(summary);
     summary.add_linear_solver(parts.active_set.linear_solver());

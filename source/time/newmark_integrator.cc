@@ -149,11 +149,10 @@ namespace liftoff
   }
 
 
-  unsigned int
-  NewmarkIntegrator::n_steps() const
+  Clock
+  NewmarkIntegrator::clock() const
   {
-    // parse_parameters() made End time a multiple of the step to 1e-9.
-    return static_cast<unsigned int>(std::round(end_time / time_step));
+    return Clock(time_step, end_time);
   }
 
 

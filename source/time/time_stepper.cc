@@ -62,7 +62,9 @@ namespace liftoff
       , active_set(parts.active_set)
       , options(options)
       , timer(timer)
-  {}
+  {
+    state_.clock = options.clock;
+  }
 
 
   void
@@ -136,23 +138,24 @@ namespace liftoff
     if (!newmark.is_conditionally_stable())
       return;
     const double limit = stable_time_step();
-    AssertThrow(
-      newmark.time_step <= limit,
-      ExcMessage(
-        "Time integration/Time step = " + format_number(newmark.time_step)
-        + " exceeds the stability limit " + format_number(limit)
-        + " of Newmark's method with Beta = " + format_number(newmark.beta)
-        + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
-        + " (omega_max^2 of M^-1 (K + K_f) estimated as "
-        + format_number(largest_eigenvalue)
-        + (n_new_meshes > 0
-             ? " on the mesh refined at step " + std::to_string(state_.step)
-             : std::string())
-        + "): the run would blow up. Use a smaller Time "
-          "step or Beta >= Gamma/2 (e.g. 0.25 and 0.5)"
-        + (mesh_refinement.is_enabled()
-             ? ", or a smaller Mesh refinement/Maximum level."
-             : ".")));
+    AssertThrow(state_.clock.time_step() <= limit,
+                ExcMessage(
+                  "Time integration/Time step = "
+                  + format_number(state_.clock.time_step())
+                  + " exceeds the stability limit " + format_number(limit)
+                  + " of Newmark's method with Beta = "
+                  + format_number(newmark.beta)
+                  + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
+                  + " (omega_max^2 of M^-1 (K + K_f) estimated as "
+                  + format_number(largest_eigenvalue)
+                  + (n_new_meshes > 0 ? " on the mesh refined at step "
+                                          + std::to_string(state_.clock.step())
+                                      : std::string())
+                  + "): the run would blow up. Use a smaller Time "
+                    "step or Beta >= Gamma/2 (e.g. 0.25 and 0.5)"
+                  + (mesh_refinement.is_enabled()
+                       ? ", or a smaller Mesh refinement/Maximum level."
+                       : ".")));
   }
 
 
@@ -211,9 +214,12 @@ namespace liftoff
     const std::vector<double>                  &numbers,
     const LA::MPI::Vector                      &load)
   {
-    require_finite(state_.step, state_.tau, what, vectors, numbers, [&]() {
-      return cause_of_non_finite_state(load);
-    });
+    require_finite(state_.clock.step(),
+                   state_.clock.tau(),
+                   what,
+                   vectors,
+                   numbers,
+                   [&]() { return cause_of_non_finite_state(load); });
   }
 
 
@@ -227,7 +233,8 @@ namespace liftoff
              + format_number(stable_time_step())
              + " (an estimate from below of omega_max); Time integration/Time "
                "step = "
-             + format_number(newmark.time_step) + " is too large for it.";
+             + format_number(state_.clock.time_step())
+             + " is too large for it.";
     return "the values overflow the range of double: the largest load "
            "entry is "
            + format_number(load.linfty_norm())
@@ -252,14 +259,15 @@ namespace liftoff
   {
     if (!checks_energy())
       return;
-    if (!energy_check.exceeds(state_.step,
+    if (!energy_check.exceeds(state_.clock.step(),
                               state_.energies,
                               state_.initial_energies,
                               newmark.dissipates_energy()))
       return;
     const std::string message =
-      "Step " + std::to_string(state_.step) + " (tau = "
-      + format_number(state_.tau) + "): " + energy_check.describe_violation()
+      "Step " + std::to_string(state_.clock.step())
+      + " (tau = " + format_number(state_.clock.tau())
+      + "): " + energy_check.describe_violation()
       + ". Likely cause: " + likely_cause_of_energy_error();
     AssertThrow(energy_check.mode() != EnergyCheck::Mode::fail,
                 ExcMessage(message));
@@ -307,13 +315,14 @@ namespace liftoff
     // The plate on its springs swings at sqrt(Gamma) (unit mass): a step
     // longer than a radian of that swing lets contact switch within it.
     const double omega = foundation.law().rigid_body_frequency();
-    if (newmark.time_step * omega > 1)
+    if (state_.clock.time_step() * omega > 1)
       causes.push_back(
-        "Time integration/Time step = " + format_number(newmark.time_step)
+        "Time integration/Time step = "
+        + format_number(state_.clock.time_step())
         + " is long for the bed: the plate swings on it at "
           "sqrt(Gamma) = "
         + format_number(omega) + ", so Time step * sqrt(Gamma) = "
-        + format_number(newmark.time_step * omega)
+        + format_number(state_.clock.time_step() * omega)
         + " > 1; use a Time step below " + format_number(1 / omega));
     const double tolerance = active_set.linear_solver().relative_tolerance();
     if (tolerance > 1e-8)
@@ -473,9 +482,11 @@ namespace liftoff
       if (!mesh_refinement.mark_cells(
             discretization,
             foundation.diagnostics().contact_fraction_per_cell(),
-            loads.regions_in_windows(state_.tau,
+            // A static analysis's cycles look ahead at the scene's time
+            // step too.
+            loads.regions_in_windows(state_.clock.tau(),
                                      mesh_refinement.steps_between_adaptations()
-                                       * newmark.time_step,
+                                       * newmark.clock().time_step(),
                                      mesh_refinement.n_windows()),
             state_.ghosted_u))
         return false;
@@ -499,7 +510,9 @@ namespace liftoff
     // balance with them, the system matrix and its factor (once per mesh).
     {
       SectionTimer::Scope t(timer, "mesh refinement");
-      equilibrate(state_.step, state_.tau, "the acceleration after a new mesh");
+      equilibrate(state_.clock.step(),
+                  state_.clock.tau(),
+                  "the acceleration after a new mesh");
     }
     // The time steps' matrix holds the dashpots too (Gamma + c kappa):
     // kappa is passed as the argument, not kept as a setting of the
@@ -623,7 +636,7 @@ namespace liftoff
   void
   TimeStepper::assemble_right_hand_side(const unsigned int step)
   {
-    assemble_loads(step, step * newmark.time_step, next_load);
+    assemble_loads(step, state_.clock.tau_at(step), next_load);
     SectionTimer::Scope t(timer, "right hand side");
     newmark.right_hand_side(matrices.mass,
                             state_.u,
@@ -678,7 +691,7 @@ namespace liftoff
     const auto result =
       active_set.solve({rhs, pressure}, u_next, state_.ghosted_u, step > 1);
     // Before the convergence test: a nan makes the contact set wander.
-    const double tau = step * newmark.time_step;
+    const double tau = state_.clock.tau_at(step);
     require_finite(step, tau, "the solution", {&u_next}, {}, [&]() {
       return cause_of_non_finite_state(next_load);
     });
@@ -709,8 +722,7 @@ namespace liftoff
                                 scratch_2);
     copy_values(next_load, state_.load);
     newmark.advance(u_next, state_.u, state_.v, state_.a);
-    state_.step = step;
-    state_.tau  = step * newmark.time_step;
+    state_.clock.set_step(step);
     if (foundation.law().has_damping())
       add_dissipated_energy();
     if (newmark.needs_force_balance())

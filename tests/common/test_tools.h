@@ -233,11 +233,12 @@ namespace liftoff_tests
                 ExcMessage("The runs have different numbers of steps."));
     double difference = 0, scale = 0;
     for (unsigned int n = 0; n < ha.size(); ++n)
-      for (unsigned int k = 0; k < ha[n].probe_w.size(); ++k)
+      for (unsigned int k = 0; k < ha[n].probes("w").size(); ++k)
         {
           difference =
-            std::max(difference, std::abs(ha[n].probe_w[k] - hb[n].probe_w[k]));
-          scale = std::max(scale, std::abs(ha[n].probe_w[k]));
+            std::max(difference,
+                     std::abs(ha[n].probes("w")[k] - hb[n].probes("w")[k]));
+          scale = std::max(scale, std::abs(ha[n].probes("w")[k]));
         }
     return difference / scale;
   }
@@ -250,13 +251,14 @@ namespace liftoff_tests
     double difference = 0, scale = 0;
     for (unsigned int n = 0; n < a.history().size(); ++n)
       {
-        const auto &ea = a.history()[n].energies, &eb = b.history()[n].energies;
-        difference = std::max({difference,
-                               std::abs(ea.kinetic - eb.kinetic),
-                               std::abs(ea.strain - eb.strain),
-                               std::abs(ea.foundation - eb.foundation),
-                               std::abs(ea.work - eb.work)});
-        scale      = std::max(scale, std::abs(ea.work));
+        const auto &ea = a.history()[n].energies(),
+                   &eb = b.history()[n].energies();
+        difference     = std::max({difference,
+                                   std::abs(ea.kinetic - eb.kinetic),
+                                   std::abs(ea.strain - eb.strain),
+                                   std::abs(ea.foundation - eb.foundation),
+                                   std::abs(ea.work - eb.work)});
+        scale          = std::max(scale, std::abs(ea.work));
       }
     return difference / scale;
   }

@@ -283,9 +283,10 @@ namespace
       {
         auto sim = liftoff_tests::run_scene(adaptive_scene(cycles), &force);
         refined.push_back(errors(*sim, fields, end_time));
-        std::cout << "(c) " << cycles
-                  << " initial refinements: " << sim->history()[1].n_dofs
-                  << " dofs in step 1, " << sim->history().back().n_dofs
+        std::cout << "(c) " << cycles << " initial refinements: "
+                  << static_cast<unsigned long>(sim->history()[1]["dofs"])
+                  << " dofs in step 1, "
+                  << static_cast<unsigned long>(sim->history().back()["dofs"])
                   << " at the end" << std::endl;
         if (cycles == 8)
           newmark = std::move(sim);

@@ -65,7 +65,8 @@ namespace
     const double a_h = liftoff_tests::first_zero([&](const double x) {
       return simulator->deflection_at(Point<2>(x, 0.0));
     });
-    return {std::abs(a_h - a) / a, simulator->history().back().n_dofs};
+    return {std::abs(a_h - a) / a,
+            static_cast<unsigned long>(simulator->history().back()["dofs"])};
   }
 } // namespace
 

@@ -62,8 +62,9 @@ end
         const auto &ra = a.history()[n], &rb = b.history()[n];
         d.contact =
           std::max(d.contact,
-                   std::abs(ra.contact_fraction - rb.contact_fraction));
-        d.iterations += (ra.iterations != rb.iterations);
+                   std::abs(ra["contact_fraction"] - rb["contact_fraction"]));
+        d.iterations +=
+          (ra["active_set_iterations"] != rb["active_set_iterations"]);
       }
     return d;
   }

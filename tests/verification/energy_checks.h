@@ -18,9 +18,9 @@ namespace liftoff_tests
     double      error = 0, work = 0;
     for (const auto &row : history)
       {
-        error =
-          std::max(error, std::abs(row.energies.error(history[0].energies)));
-        work = std::max(work, std::abs(row.energies.work));
+        error = std::max(error,
+                         std::abs(row.energies().error(history[0].energies())));
+        work  = std::max(work, std::abs(row.energies().work));
       }
     return error / work;
   }
@@ -28,10 +28,10 @@ namespace liftoff_tests
   /// |strain + foundation energy - work| / work of a static run's row:
   /// Clapeyron's identity, which only an equilibrium satisfies.
   inline double
-  clapeyron_error(const liftoff::TimeHistory::Row &row)
+  clapeyron_error(const liftoff::HistoryRow &row)
   {
-    return std::abs(row.energies.strain + row.energies.foundation
-                    - row.energies.work)
-           / row.energies.work;
+    return std::abs(row.energies().strain + row.energies().foundation
+                    - row.energies().work)
+           / row.energies().work;
   }
 } // namespace liftoff_tests

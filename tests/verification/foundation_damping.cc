@@ -54,8 +54,8 @@ namespace
   {
     double error = 0;
     for (const auto &row : simulator.history())
-      for (const double value : row.probe_w)
-        error = std::max(error, std::abs(value - w(row.tau)));
+      for (const double value : row.probes("w"))
+        error = std::max(error, std::abs(value - w(row["tau"])));
     return error / (q / gamma_f);
   }
 
@@ -68,14 +68,14 @@ namespace
     double      error = 0, work = 0;
     for (const auto &row : history)
       {
-        double e = row.energies.error(history[0].energies);
+        double e = row.energies().error(history[0].energies());
         if (!with_dissipation)
-          e -= row.energies.dissipated;
+          e -= row.energies().dissipated;
         error = std::max(error, std::abs(e));
         work  = std::max(work,
-                        std::max(std::abs(row.energies.work),
-                                 row.energies.kinetic
-                                   + history[0].energies.kinetic));
+                        std::max(std::abs(row.energies().work),
+                                 row.energies().kinetic
+                                   + history[0].energies().kinetic));
       }
     return error / work;
   }
@@ -119,7 +119,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
       liftoff_tests::run_scene(oscillator(dt, beta, gamma));
     double error = 0;
     for (unsigned int n = 0; n < simulator->history().size(); ++n)
-      for (const double value : simulator->history()[n].probe_w)
+      for (const double value : simulator->history()[n].probes("w"))
         error = std::max(error, std::abs(value - w_newmark[n]));
     checks.less("beta = 0.3025, gamma = 0.6: max |w - scalar damped Newmark| "
                 "/ (q/Gamma)",
@@ -134,8 +134,8 @@ LIFTOFF_TEST_MAIN(argc, argv)
                 relative_balance_error(*run),
                 1e-10);
     checks.within("bilateral damped: dissipated energy / work at the end",
-                  run->history().back().energies.dissipated
-                    / run->history().back().energies.work,
+                  run->history().back().energies().dissipated
+                    / run->history().back().energies().work,
                   0.3,
                   1.0);
   }
@@ -162,8 +162,8 @@ LIFTOFF_TEST_MAIN(argc, argv)
         const double error = relative_balance_error(*run);
         std::cout << "tensionless, c = 2, dt = " << dt << ": balance error "
                   << error << ", dissipated / work "
-                  << run->history().back().energies.dissipated
-                       / run->history().back().energies.work
+                  << run->history().back().energies().dissipated
+                       / run->history().back().energies().work
                   << std::endl;
         if (previous > 0)
           checks.less("tensionless damped: balance error when dt is halved "
@@ -192,7 +192,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
         tension          = std::min(tension, range.smallest_in_contact);
         missing          = std::max(missing, range.largest_out_of_contact);
         scale            = std::max(scale, range.largest_magnitude);
-        lifted = std::min(lifted, run->history().back().contact_fraction);
+        lifted = std::min(lifted, run->history().back()["contact_fraction"]);
       }
     checks.less("thrown plate: some points leave the bed (smallest contact "
                 "fraction)",

@@ -84,7 +84,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
         for (const auto &record : plate->history())
           {
             difference =
-              std::max(difference, std::abs(record.probe_w[0] - s.u));
+              std::max(difference, std::abs(record.probes("w")[0] - s.u));
             scale = std::max(scale, std::abs(s.u));
             s     = scalar_step(s, rho, gamma_f, dt, q);
           }

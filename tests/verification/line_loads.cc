@@ -254,12 +254,12 @@ namespace
     const auto  &row    = run->history().back();
     const double length = load.a.distance(load.b);
     checks.less("static run: |bed resultant / load - 1|",
-                std::abs(row.resultant / length - 1),
+                std::abs(row["resultant"] / length - 1),
                 1e-8);
     const Point<2> centre = load.a + 0.5 * (load.b - load.a);
     checks.less("static run: |centre of resultant - middle of the line|",
-                std::hypot(row.resultant_x - centre[0],
-                           row.resultant_y - centre[1]),
+                std::hypot(row["resultant_x"] - centre[0],
+                           row["resultant_y"] - centre[1]),
                 1e-9);
   }
 } // namespace

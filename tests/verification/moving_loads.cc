@@ -271,19 +271,19 @@ namespace
         const auto run = liftoff_tests::run_scene(vehicle_base() + alone);
         for (unsigned int n = 0; n < sum.size(); ++n)
           {
-            sum[n].resize(run->history()[n].probe_w.size());
+            sum[n].resize(run->history()[n].probes("w").size());
             for (unsigned int k = 0; k < sum[n].size(); ++k)
-              sum[n][k] += run->history()[n].probe_w[k];
+              sum[n][k] += run->history()[n].probes("w")[k];
           }
       }
     double difference = 0, scale = 0;
     for (unsigned int n = 0; n < sum.size(); ++n)
       for (unsigned int k = 0; k < sum[n].size(); ++k)
         {
-          difference =
-            std::max(difference,
-                     std::abs(together->history()[n].probe_w[k] - sum[n][k]));
-          scale = std::max(scale, std::abs(sum[n][k]));
+          difference = std::max(difference,
+                                std::abs(together->history()[n].probes("w")[k]
+                                         - sum[n][k]));
+          scale      = std::max(scale, std::abs(sum[n][k]));
         }
     checks.less("vehicle of " + std::to_string(wheels.size()) + " " + shape
                   + " wheels against the sum of its wheels (relative)",
@@ -293,7 +293,7 @@ namespace
     // wheels are on the plate, at the last step.
     const auto &last = together->history().back();
     checks.less("vehicle: history's x of the path at the end",
-                std::abs(last.moving_loads[0] - (-0.7 + 3 * 0.3)),
+                std::abs(last["vehicle_1_x"] - (-0.7 + 3 * 0.3)),
                 1e-12);
   }
 } // namespace

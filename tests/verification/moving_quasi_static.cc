@@ -59,22 +59,22 @@ namespace
         const double tau        = 1 + (x - start) / speed;
         const auto  &rows       = moving->history();
         const auto  &row        = rows[std::lround(tau / 0.01)];
-        const auto  &reference  = standing->history().back().probe_w;
+        const auto  &reference  = standing->history().back().probes("w");
         double       difference = 0, scale = 0;
         for (unsigned int k = 0; k < reference.size(); ++k)
           {
             difference =
-              std::max(difference, std::abs(row.probe_w[k] - reference[k]));
+              std::max(difference, std::abs(row.probes("w")[k] - reference[k]));
             scale = std::max(scale, std::abs(reference[k]));
           }
         std::ostringstream what;
-        what << model << ", load at x = " << x << " (tau = " << row.tau
+        what << model << ", load at x = " << x << " (tau = " << row["tau"]
              << "): probes against the static solution (relative)";
         checks.less(what.str(), difference / scale, 2e-3);
         if (model == "tensionless")
           checks.less("tensionless, load at x = " + std::to_string(x)
                         + ": the static plate lifts off (contact fraction)",
-                      standing->history().back().contact_fraction,
+                      standing->history().back()["contact_fraction"],
                       0.99);
       }
   }

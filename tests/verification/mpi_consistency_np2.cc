@@ -39,9 +39,11 @@ namespace
         const auto &a = serial->history()[n], &b = parallel->history()[n];
         contact_difference =
           std::max(contact_difference,
-                   std::abs(a.contact_fraction - b.contact_fraction));
-        iteration_mismatches += (a.iterations != b.iterations);
-        mesh_mismatches += (a.n_cells != b.n_cells) || (a.n_dofs != b.n_dofs);
+                   std::abs(a["contact_fraction"] - b["contact_fraction"]));
+        iteration_mismatches +=
+          (a["active_set_iterations"] != b["active_set_iterations"]);
+        mesh_mismatches +=
+          (a["cells"] != b["cells"]) || (a["dofs"] != b["dofs"]);
       }
     // 0: the mesh changes during the run (adaptive), and its unknowns are
     // checked step by step only.

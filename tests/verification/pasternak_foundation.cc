@@ -132,7 +132,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
     const auto &row = run->history().back();
     checks.less("tensionless Pasternak, static: the plate lifts off (contact "
                 "fraction)",
-                row.contact_fraction,
+                row["contact_fraction"],
                 0.95);
     checks.less("tensionless Pasternak, static: |strain + foundation energy - "
                 "F.u / 2| / that",

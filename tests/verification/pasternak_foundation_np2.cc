@@ -31,27 +31,27 @@ namespace
     for (unsigned int n = 0; n < serial->history().size(); ++n)
       {
         const auto &a = serial->history()[n], &b = parallel->history()[n];
-        const std::vector<double> x = {a.contact_fraction,
-                                       a.max_uplift,
-                                       a.resultant,
-                                       a.resultant_x,
-                                       a.resultant_y,
-                                       a.contact_area,
-                                       a.energies.foundation};
-        const std::vector<double> y = {b.contact_fraction,
-                                       b.max_uplift,
-                                       b.resultant,
-                                       b.resultant_x,
-                                       b.resultant_y,
-                                       b.contact_area,
-                                       b.energies.foundation};
+        const std::vector<double> x = {a["contact_fraction"],
+                                       a["max_uplift"],
+                                       a["resultant"],
+                                       a["resultant_x"],
+                                       a["resultant_y"],
+                                       a["contact_area"],
+                                       a.energies().foundation};
+        const std::vector<double> y = {b["contact_fraction"],
+                                       b["max_uplift"],
+                                       b["resultant"],
+                                       b["resultant_x"],
+                                       b["resultant_y"],
+                                       b["contact_area"],
+                                       b.energies().foundation};
         for (unsigned int k = 0; k < x.size(); ++k)
           {
             difference[k] = std::max(difference[k], std::abs(x[k] - y[k]));
             scale[k]      = std::max(scale[k], std::abs(x[k]));
           }
-        mismatches += (a.iterations != b.iterations) || (a.n_cells != b.n_cells)
-                      || (a.n_dofs != b.n_dofs);
+        mismatches += (a["active_set_iterations"] != b["active_set_iterations"])
+                      || (a["cells"] != b["cells"]) || (a["dofs"] != b["dofs"]);
       }
     const std::vector<std::string> names = {"contact_fraction",
                                             "max_uplift",
@@ -83,7 +83,8 @@ namespace
                 0.5);
     unsigned int n_partial = 0;
     for (const auto &row : serial->history())
-      n_partial += (row.contact_fraction > 0.01 && row.contact_fraction < 0.99);
+      n_partial +=
+        (row["contact_fraction"] > 0.01 && row["contact_fraction"] < 0.99);
     checks.within(label + ": steps with partial contact",
                   n_partial,
                   1,

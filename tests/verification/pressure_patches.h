@@ -416,13 +416,13 @@ namespace pressure_patches
             comm);
           const auto &row = run->history().back();
           checks.less(c.label + ": static run, |bed resultant / load - 1|",
-                      std::abs(row.resultant / area - 1),
+                      std::abs(row["resultant"] / area - 1),
                       1e-8);
           checks.less(c.label
                         + ": static run, |centre of resultant - "
                           "centre of patch|",
-                      std::hypot(row.resultant_x - 0.5 * (p.x0 + p.x1),
-                                 row.resultant_y - 0.5 * (p.y0 + p.y1)),
+                      std::hypot(row["resultant_x"] - 0.5 * (p.x0 + p.x1),
+                                 row["resultant_y"] - 0.5 * (p.y0 + p.y1)),
                       1e-9);
         }
   }

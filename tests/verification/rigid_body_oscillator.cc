@@ -79,8 +79,8 @@ end
   {
     double error = 0;
     for (const auto &row : simulator.history())
-      for (const double value : row.probe_w)
-        error = std::max(error, std::abs(value - w(row.tau)));
+      for (const double value : row.probes("w"))
+        error = std::max(error, std::abs(value - w(row["tau"])));
     return error / (q / gamma_f);
   }
 } // namespace
@@ -131,7 +131,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
     const auto simulator = liftoff_tests::run_scene(scene(2, dt, beta, gamma));
     double     error     = 0;
     for (unsigned int n = 0; n < simulator->history().size(); ++n)
-      for (const double value : simulator->history()[n].probe_w)
+      for (const double value : simulator->history()[n].probes("w"))
         error = std::max(error, std::abs(value - w_newmark[n]));
     checks.less("beta = 0.3025, gamma = 0.6: max |w - scalar Newmark| / "
                 "(q/Gamma)",
@@ -146,9 +146,12 @@ LIFTOFF_TEST_MAIN(argc, argv)
                 0.99);
   }
   {
-    double uplift = 0;
-    for (const auto &row : liftoff_tests::run_scene(scene(2, 0.02))->history())
-      uplift = std::max(uplift, row.max_uplift);
+    // The run outlives the loop: a range over the history of a temporary
+    // reads freed rows.
+    double     uplift = 0;
+    const auto run    = liftoff_tests::run_scene(scene(2, 0.02));
+    for (const auto &row : run->history())
+      uplift = std::max(uplift, row["max_uplift"]);
     checks.less("bilateral, pressed down: max uplift / (q/Gamma)",
                 uplift / (q / gamma_f),
                 1e-12);
@@ -160,9 +163,9 @@ LIFTOFF_TEST_MAIN(argc, argv)
     double largest = 0, when = 0;
     for (const auto &row : simulator->history())
       {
-        const double w = q / gamma_f * (1 - std::cos(omega_h * row.tau));
+        const double w = q / gamma_f * (1 - std::cos(omega_h * row["tau"]));
         if (w > largest)
-          std::tie(largest, when) = std::make_tuple(w, row.tau);
+          std::tie(largest, when) = std::make_tuple(w, row["tau"]);
       }
     const auto &envelopes = simulator->get_envelopes();
     const auto  extremes  = envelopes.extremes();
@@ -225,7 +228,7 @@ end
 )");
     double       error     = 0;
     for (const auto &row : simulator->history())
-      error = std::max(error, std::abs(row.max_uplift - V * row.tau));
+      error = std::max(error, std::abs(row["max_uplift"] - V * row["tau"]));
     checks.within("free flight: rows", simulator->history().size(), 21, 21);
     checks.less("free flight: max |max uplift - V tau| / V", error / V, 1e-10);
   }

@@ -60,17 +60,17 @@ LIFTOFF_TEST_MAIN(argc, argv)
     double     error = 0, kinetic = 0, contact = 1;
     for (const auto &row : run->history())
       {
-        for (const double w : row.probe_w)
+        for (const double w : row.probes("w"))
           error = std::max(error, std::abs(w - q / gamma_f));
-        kinetic = std::max(kinetic, row.energies.kinetic);
-        contact = std::min(contact, row.contact_fraction);
+        kinetic = std::max(kinetic, row.energies().kinetic);
+        contact = std::min(contact, row["contact_fraction"]);
       }
     checks.less("weight alone: max |w - q/Gamma| / (q/Gamma) over all steps",
                 error / (q / gamma_f),
                 1e-10);
     checks.less("weight alone: max kinetic energy / strain energy of the "
                 "bed",
-                kinetic / run->history()[0].energies.foundation,
+                kinetic / run->history()[0].energies().foundation,
                 1e-20);
     checks.within("weight alone: smallest contact fraction", contact, 1, 1);
   }
@@ -90,13 +90,14 @@ LIFTOFF_TEST_MAIN(argc, argv)
     for (unsigned int n = 0; n < bilateral->history().size(); ++n)
       {
         const auto &row = bilateral->history()[n];
-        contact = std::min(contact, tensionless->history()[n].contact_fraction);
-        for (unsigned int k = 0; k < row.probe_w.size(); ++k)
+        contact =
+          std::min(contact, tensionless->history()[n]["contact_fraction"]);
+        for (unsigned int k = 0; k < row.probes("w").size(); ++k)
           {
-            const double alone = force_alone->history()[n].probe_w[k];
+            const double alone = force_alone->history()[n].probes("w")[k];
             superposed =
               std::max(superposed,
-                       std::abs(row.probe_w[k] - q / gamma_f - alone));
+                       std::abs(row.probes("w")[k] - q / gamma_f - alone));
             scale  = std::max(scale, std::abs(alone));
             uplift = std::max(uplift, -alone);
           }
@@ -147,14 +148,14 @@ LIFTOFF_TEST_MAIN(argc, argv)
     const double rigid_edge =
       (q * mu + below - 6 * below * e) / (gamma_soft * mu);
     const double rigid_centre = (q * mu + below) / (gamma_soft * mu);
-    checks.within("0.99 P_g: contact fraction", row.contact_fraction, 1, 1);
+    checks.within("0.99 P_g: contact fraction", row["contact_fraction"], 1, 1);
     checks.less("0.99 P_g: |w(-1/2, 0) - rigid plate| / w(0, 0) of the rigid "
                 "plate",
-                std::abs(row.probe_w[0] - rigid_edge) / rigid_centre,
+                std::abs(row.probes("w")[0] - rigid_edge) / rigid_centre,
                 2e-3);
     const auto above = liftoff_tests::run_scene(scene(1.01 * threshold));
     checks.less("1.01 P_g: contact fraction",
-                above->history().back().contact_fraction,
+                above->history().back()["contact_fraction"],
                 1);
   }
   return checks.exit_code();

@@ -82,11 +82,10 @@ namespace
   // Largest difference of the SI history's column `si_name` from the
   // twin's rows times `scale`, relative to the largest of them.
   double
-  difference(
-    const std::vector<double>                                      &si,
-    const std::vector<liftoff::TimeHistory::Row>                   &rows,
-    const std::function<double(const liftoff::TimeHistory::Row &)> &twin,
-    const double                                                    scale)
+  difference(const std::vector<double>                                &si,
+             const std::vector<liftoff::HistoryRow>                   &rows,
+             const std::function<double(const liftoff::HistoryRow &)> &twin,
+             const double                                              scale)
   {
     AssertThrow(si.size() == rows.size(),
                 ExcMessage("The runs have different numbers of rows."));
@@ -150,7 +149,7 @@ namespace
     const auto   solver  = run_scene(twin);
     const auto  &rows    = solver->history();
     const double w_unit  = F0 * L * L / D;
-    using Row            = liftoff::TimeHistory::Row;
+    using Row            = liftoff::HistoryRow;
     const std::vector<std::pair<std::string, unsigned int>> probes = {
       {"w(0;0) [m]", 0},
       {"w(1;0.5) [m]", 1},
@@ -162,7 +161,7 @@ namespace
                          difference(
                            columns[name],
                            rows,
-                           [k = k](const Row &r) { return r.probe_w[k]; },
+                           [k = k](const Row &r) { return r.probes("w")[k]; },
                            w_unit));
     checks.less(analysis + ": w [m] of the SI run vs the twin's v F0 L^2 / D",
                 w_error,
@@ -171,31 +170,31 @@ namespace
     for (const auto &[column, twin_value, scale, unit] :
          std::vector<std::tuple<std::string, Value, double, std::string>>{
            {"max_uplift [m]",
-            [](const Row &r) { return r.max_uplift; },
+            [](const Row &r) { return r["max_uplift"]; },
             w_unit,
             "F0 L^2 / D"},
            {"resultant [N]",
-            [](const Row &r) { return r.resultant; },
+            [](const Row &r) { return r["resultant"]; },
             F0,
             "F0"},
            {"max_pressure [Pa]",
-            [](const Row &r) { return r.max_pressure; },
+            [](const Row &r) { return r["max_pressure"]; },
             F0 / (L * L),
             "F0 / L^2"},
            {"work [J]",
-            [](const Row &r) { return r.energies.work; },
+            [](const Row &r) { return r.energies().work; },
             F0 * w_unit,
             "F0^2 L^2 / D"},
            {"M_xx(1;0.5) [N m/m]",
-            [](const Row &r) { return r.probe_quantities[0]; },
+            [](const Row &r) { return r["M_xx(0.2;0.1)"]; },
             F0,
             "F0"},
            {"Q_y(-1.5;-1) [N/m]",
-            [](const Row &r) { return r.probe_quantities[1]; },
+            [](const Row &r) { return r["Q_y(-0.3;-0.2)"]; },
             F0 / L,
             "F0 / L"},
            {"max_M_1 [N m/m]",
-            [](const Row &r) { return r.max_m_1; },
+            [](const Row &r) { return r["max_M_1"]; },
             F0,
             "F0"}})
       checks.less(analysis + ": " + column + " vs the twin's times " + unit,
@@ -205,7 +204,7 @@ namespace
       checks.less(
         "dynamic: t [s] vs the twin's tau t0",
         difference(
-          columns["t [s]"], rows, [](const Row &r) { return r.tau; }, t0),
+          columns["t [s]"], rows, [](const Row &r) { return r["tau"]; }, t0),
         1e-12);
   }
 

@@ -129,13 +129,13 @@ LIFTOFF_TEST_MAIN(argc, argv)
           // beyond x = 0.33, so the active set must have changed at least
           // once; and it must settle well before the limit.
           checks.within(name + ": active-set iterations",
-                        simulator->history().back().iterations,
+                        simulator->history().back()["active_set_iterations"],
                         2,
                         20);
           // The library's contact bookkeeping: the Gauss points in contact
           // cover [0, a] up to the one cell that holds the contact edge.
           const double contact_length =
-            simulator->history().back().contact_fraction * half_length;
+            simulator->history().back()["contact_fraction"] * half_length;
           checks.less(name + ": |contact fraction * 1/2 - a| / cell size",
                       std::abs(contact_length - a) / (half_length / n),
                       1.0);

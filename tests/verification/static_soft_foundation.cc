@@ -172,7 +172,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
                       error / rigid(0.5),
                       round_off_limit(gamma, delta) + 10 * gamma);
           checks.less(what.str() + ": |contact fraction - c/L|",
-                      std::abs(simulator->history().back().contact_fraction
+                      std::abs(simulator->history().back()["contact_fraction"]
                                - length),
                       1e-12);
         }
@@ -205,7 +205,8 @@ LIFTOFF_TEST_MAIN(argc, argv)
                     std::abs(w * gamma - 1),
                     0.1 * gamma + round_off_limit(gamma, 0.05));
         checks.less(what.str() + ": |contact fraction - 1|",
-                    std::abs(simulator->history().back().contact_fraction - 1),
+                    std::abs(simulator->history().back()["contact_fraction"]
+                             - 1),
                     1e-12);
       }
   return checks.exit_code();

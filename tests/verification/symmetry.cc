@@ -23,7 +23,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
 
   double min_contact = 1;
   for (const auto &row : full->history())
-    min_contact = std::min(min_contact, row.contact_fraction);
+    min_contact = std::min(min_contact, row["contact_fraction"]);
   checks.less("the scene lifts off (smallest contact fraction)",
               min_contact,
               0.95);
@@ -42,8 +42,8 @@ LIFTOFF_TEST_MAIN(argc, argv)
   for (unsigned int n = 0; n < full->history().size(); ++n)
     contact_difference =
       std::max(contact_difference,
-               std::abs(full->history()[n].contact_fraction
-                        - quarter->history()[n].contact_fraction));
+               std::abs(full->history()[n]["contact_fraction"]
+                        - quarter->history()[n]["contact_fraction"]));
   checks.less("quarter vs full: contact fraction", contact_difference, 1e-12);
 
   // Global refinement of a coarser mesh gives the same mesh, hence the same
@@ -59,9 +59,10 @@ LIFTOFF_TEST_MAIN(argc, argv)
   for (const auto &row : full->history())
     for (unsigned int k = 2; k <= 4; ++k)
       {
-        mirror_difference = std::max(mirror_difference,
-                                     std::abs(row.probe_w[k] - row.probe_w[1]));
-        scale             = std::max(scale, std::abs(row.probe_w[1]));
+        mirror_difference =
+          std::max(mirror_difference,
+                   std::abs(row.probes("w")[k] - row.probes("w")[1]));
+        scale = std::max(scale, std::abs(row.probes("w")[1]));
       }
   checks.less("full model: mirrored probes agree",
               mirror_difference / scale,

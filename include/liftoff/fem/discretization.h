@@ -65,13 +65,10 @@ namespace liftoff
     distribute_dofs();
 
     /// Replace the mesh by one saved with triangulation.save() (a
-    /// checkpoint of an adaptive run) and distribute the dofs on it.
+    /// checkpoint of an adaptive run, Checkpoint::mesh_writer()) and
+    /// distribute the dofs on it.
     void
     load_mesh(const std::string &filename);
-    /// Save the mesh as `name` in `folder` for load_mesh(); returns the
-    /// names of the files deal.II wrote for it there, sorted.
-    std::vector<std::string>
-    save_mesh(const std::string &folder, const std::string &name) const;
 
     /// This rank's active cells in an order that depends on the mesh only,
     /// not on how it was reached (refined in the run or loaded from a

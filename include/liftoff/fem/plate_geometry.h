@@ -91,8 +91,6 @@ namespace liftoff
       inner_boundary   = 7  // the hole's circle of an annulus
     };
 
-    static const std::array<std::string, 4> edge_names;
-
     PlateGeometry();
 
     /// Entries in "Discretization" (Shape, Radius, Inner radius, Mesh file,
@@ -187,6 +185,10 @@ namespace liftoff
     share_of_point_load(const Point<2> &p) const;
 
   private:
+    /// The entries of `Boundary conditions`, in the order of the edges'
+    /// boundary ids.
+    static const std::array<std::string, 4> edge_names;
+
     static void
     declare_boundary_conditions(ParameterHandler &prm);
     void

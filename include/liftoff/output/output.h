@@ -16,7 +16,8 @@ namespace liftoff
   struct PlateState;
 
   /// What an Output sees after a step (or the one solve of a static
-  /// analysis): the state and the parts that give it meaning.
+  /// analysis): the state (with its clock: step, tau, dt, the last step)
+  /// and the parts that give it meaning.
   struct StepData
   {
     const PlateState                   &state;
@@ -29,11 +30,6 @@ namespace liftoff
     /// Share of the plate in contact (computed once for all outputs: it is
     /// a collective sum).
     double contact_fraction;
-    /// 0 for a static analysis.
-    double time_step;
-    /// Of the whole run (0 for a static analysis).
-    unsigned int n_steps;
-    bool         is_last_step;
   };
 
   /**

@@ -7,12 +7,11 @@
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/point_functional.h>
+#include <liftoff/output/history_columns.h>
 #include <liftoff/output/output.h>
-#include <liftoff/time/energy_balance.h>
 
 #include <functional>
 #include <string>
-#include <tuple>
 #include <vector>
 
 namespace liftoff
@@ -29,109 +28,21 @@ namespace liftoff
    * is replaced whole (atomically) at most once a second and at the end, so a
    * reader never sees a half-written row.
    *
-   * A new column is a change of this class alone: a member of Row, its
-   * value in row_of(), its name and value in make_columns(), and its place
-   * in Row::serialize(). A checkpoint keeps the column names, so one of
-   * other columns is refused by name instead of misread.
+   * A new column is one call of HistoryColumns::add() in make_columns():
+   * its name, its quantity and its value at a step. A checkpoint keeps the
+   * column names with the rows, so one of other columns is refused by name
+   * instead of misread.
    */
+  class RunSummary;
+
   class TimeHistory : public Output
   {
   public:
-    struct Row
-    {
-      double       tau              = 0;
-      unsigned int iterations       = 0;
-      unsigned int cycle_length     = 0;
-      double       contact_fraction = 0;
-      /// max(0, g - w) over the nodes of w (g the initial gap there, 0
-      /// without one): how far the plate has lifted off its bed at the
-      /// highest point (w > 0 is into the foundation), as the `uplift`
-      /// field.
-      double max_uplift = 0;
-      /// The mesh of the step (it changes with Mesh refinement).
-      unsigned long       n_cells = 0;
-      unsigned long       n_dofs  = 0;
-      std::vector<double> probe_w;
-      EnergyBalance       energies;
-      /// EnergyBalance::error() against the state at tau = 0.
-      double balance_error = 0;
-      /// TensionlessWinklerFoundation::resultant() of the full plate (if
-      /// asked for): force, centre and area in contact.
-      double resultant    = 0;
-      double resultant_x  = 0;
-      double resultant_y  = 0;
-      double contact_area = 0;
-      /// The largest bearing pressure and its point (in the meshed part),
-      /// with the resultant.
-      double max_pressure   = 0;
-      double max_pressure_x = 0;
-      double max_pressure_y = 0;
-      /// The stress resultants of `Probe quantities`, in its order.
-      std::vector<double> probe_quantities;
-      /// With `Write moment extremes`: the largest M_1, the smallest M_2
-      /// and the largest |Q| over the output points, each at its point.
-      double max_m_1   = 0;
-      double max_m_1_x = 0;
-      double max_m_1_y = 0;
-      double min_m_2   = 0;
-      double min_m_2_x = 0;
-      double min_m_2_y = 0;
-      double max_q     = 0;
-      double max_q_x   = 0;
-      double max_q_y   = 0;
-      /// x, y and the loads on the plate of each moving load (follow()).
-      std::vector<double> moving_loads;
-      std::vector<double> riding_values;
-
-      /// The members serialize() archives, in its order: a checkpoint
-      /// keeps them, and one of another layout is refused by name before
-      /// its rows are read. A new member goes into both.
-      static std::vector<std::string>
-      layout()
-      {
-        return {"tau",
-                "iterations",
-                "cycle_length",
-                "contact_fraction",
-                "max_uplift",
-                "n_cells",
-                "n_dofs",
-                "probe_w",
-                "energies",
-                "balance_error",
-                "resultant",
-                "resultant_x",
-                "resultant_y",
-                "contact_area",
-                "max_pressure",
-                "max_pressure_x",
-                "max_pressure_y",
-                "probe_quantities",
-                "max_m_1",
-                "max_m_1_x",
-                "max_m_1_y",
-                "min_m_2",
-                "min_m_2_x",
-                "min_m_2_y",
-                "max_q",
-                "max_q_x",
-                "max_q_y",
-                "moving_loads",
-                "riding_probes"};
-      }
-
-      template <class Archive>
-      void
-      serialize(Archive &archive, const unsigned int)
-      {
-        archive &tau &iterations &cycle_length &contact_fraction &max_uplift
-          &n_cells &n_dofs &probe_w &energies &balance_error &resultant
-            &resultant_x &resultant_y &contact_area &max_pressure
-              &max_pressure_x &max_pressure_y &probe_quantities &max_m_1
-                &max_m_1_x &max_m_1_y &min_m_2 &min_m_2_x &min_m_2_y &max_q
-                  &max_q_x &max_q_y &moving_loads &riding_values;
-      }
-    };
+    TimeHistory() = default;
+    /// The columns' values refer to this object.
+    TimeHistory(const TimeHistory &) = delete;
+    TimeHistory &
+    operator=(const TimeHistory &) = delete;
 
     /// Entries of the `Output` subsection.
     static void
@@ -183,18 +94,14 @@ namespace liftoff
     void
     load(InputArchive &archive) override;
 
-    const std::vector<Row> &
+    const std::vector<HistoryRow> &
     rows() const;
 
-    /// Over the rows that solved something (not tau = 0 of a dynamic run).
-    struct IterationStatistics
-    {
-      double       mean     = 0;
-      unsigned int max      = 0;
-      unsigned int n_cycled = 0;
-    };
-    IterationStatistics
-    iteration_statistics() const;
+    /// The active-set iterations per step, mean and largest, and the steps
+    /// whose set cycled, over the rows that solved something (not tau = 0
+    /// of a dynamic run), as lines of the summary.
+    void
+    add_to(RunSummary &summary) const;
 
   private:
     /// The history's column names of the probes, "w(x;y)", with enough
@@ -215,8 +122,6 @@ namespace liftoff
       double      sign = 1;
     };
     std::vector<QuantityProbe> quantity_probes;
-    std::vector<double>
-    probe_quantities(const StepData &step) const;
 
     /// A probe that rides with a moving load: w or a stress resultant at
     /// the load's current position (0 while the load is off the plate).
@@ -230,44 +135,40 @@ namespace liftoff
     std::vector<RidingProbe> riding_probes;
 
     std::vector<double>
-    riding_probe_values(const StepData &step, const Row &row) const;
+    riding_probe_values(const StepData &step) const;
 
     /// The probes' values (0 where no rank holds a cell), collective.
     std::vector<double>
     values_at(const StepData                   &step,
               const std::vector<QuantityProbe> &probes) const;
-    void
-    add_moment_extremes(const StepData &step, Row &row) const;
+    /// The largest M_1, the smallest M_2 and the largest |Q| with their
+    /// points (collective).
+    std::vector<double>
+    moment_extremes(const StepData &step) const;
+    /// max(0, g - w) over the nodes of w (g the initial gap there, 0
+    /// without one): how far the plate has lifted off its bed at the
+    /// highest point (w > 0 is into the foundation), as the `uplift` field.
+    double
+    largest_uplift(const StepData &step) const;
 
-    /// One column of history.csv: its name in the header and its value in
-    /// a row (integers are exact in a double).
-    struct Column
-    {
-      std::string                        name;
-      std::function<double(const Row &)> value;
-    };
     /// The columns of this run, in the file's order; made anew whenever a
     /// parameter that chooses them is set.
-    std::vector<Column> columns;
-    using Member =
-      std::tuple<std::string, double Row::*, PhysicalUnits::Quantity>;
-    /// The columns of `members`, in their order.
-    void
-    add_members(const std::vector<Member> &members);
+    HistoryColumns columns;
+    /// Each column's factor to the scene's units.
+    std::vector<double> scales;
     void
     add_probe_columns();
     void
     add_energy_columns();
     void
+    add_resultant_columns();
+    void
     add_quantity_probe_columns();
     void
-    make_columns();
-    /// Appends the column `name` of `value`, a `quantity` of the solver,
-    /// in the scene's units.
+    add_moving_load_columns();
     void
-    add_column(const std::string                 &name,
-               std::function<double(const Row &)> value,
-               const PhysicalUnits::Quantity      quantity);
+    make_columns();
+    /// The header's names: in an SI scene "t" for tau, each with its unit.
     std::vector<std::string>
     column_names() const;
 
@@ -287,19 +188,17 @@ namespace liftoff
     /// step on a mesh, only on a gap).
     std::vector<double> gap_at_w_dofs;
     /// The velocity with ghosts, for the dashpots' part of the resultant.
-    LA::MPI::Vector       ghosted_velocity;
-    const Discretization *discretization = nullptr;
-    GrowingTextFile       file;
-    std::vector<Row>      history;
+    LA::MPI::Vector         ghosted_velocity;
+    const Discretization   *discretization = nullptr;
+    GrowingTextFile         file;
+    std::vector<HistoryRow> history;
 
-    Row
-    row_of(const StepData &step) const;
     /// g at the w dofs of this mesh, if not yet known.
     void
     find_gap_at_w_dofs(const StepData &step);
     void
     write_header();
     void
-    write_row(const Row &row);
+    write_row(const HistoryRow &row);
   };
 } // namespace liftoff

@@ -3,6 +3,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/distributed/tria.h>
+
 
 #include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
@@ -38,19 +40,12 @@ namespace liftoff
   class Checkpoint
   {
   public:
-    /// The layout of the archives this code writes and reads: 3 since the
-    /// outputs keep their own records (a PlateState, the foundation, the
-    /// active set, then each output); 4 since the state and every energy
-    /// record hold the energy the foundation's dashpots dissipated; 5 since
-    /// history rows hold the mesh size and adaptive runs save their mesh;
-    /// 7 since the active set keeps the contact status its factor was built
-    /// from instead of a copy of the matrix's values then; 8 since the
-    /// linear solver keeps the measured error of its factor's substitution;
-    /// 10 since the time history keeps its column names; 11 since it keeps
-    /// its rows' layout too (a new column needs no new format: TimeHistory
-    /// refuses a checkpoint of other columns or rows by name); 12 since
-    /// the envelopes are kept.
-    static constexpr unsigned int format = 12;
+    /// The layout of the archives this code writes and reads
+    /// (Simulator::serialize()), raised with every change of it, so that a
+    /// checkpoint of another layout is refused by its number rather than
+    /// misread. A new history column needs none: TimeHistory keeps its
+    /// column names and refuses a checkpoint of other columns by name.
+    static constexpr unsigned int format = 13;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -75,6 +70,12 @@ namespace liftoff
     using SharedFiles =
       std::function<std::vector<std::string>(const std::string &folder)>;
 
+    /// The shared files of an adaptive run's mesh, whose cells the scene
+    /// cannot rebuild: `triangulation` saved for
+    /// Discretization::load_mesh() from mesh_file().
+    static SharedFiles
+    mesh_writer(const parallel::distributed::Triangulation<2> &triangulation);
+
     /// Write a checkpoint of step `step`; `save` fills this rank's archive,
     /// `save_shared` (if given) writes the shared files. Collective; throws
     /// on every rank if any rank fails, and then the previous checkpoint is
@@ -97,10 +98,9 @@ namespace liftoff
          const MPI_Comm     comm,
          const std::string &scene);
 
-    /// The folder of the checkpoint open() found (its shared files are
-    /// read from there).
-    const std::string &
-    folder() const;
+    /// The mesh that mesh_writer() saved in the checkpoint open() found.
+    std::string
+    mesh_file() const;
 
     /// Read this rank's archive of the checkpoint found by open(), whose
     /// checksum open() has checked on every rank.

@@ -67,6 +67,10 @@ namespace liftoff
 
     bool
     is_dynamic() const;
+    /// The run's clock at step 0: the scene's for a time integration, the
+    /// default (no step, dt = 0) for a static analysis.
+    Clock
+    clock() const;
     /// What the TimeStepper works on.
     TimeStepper::Parts
     for_stepper();

@@ -85,7 +85,7 @@ namespace liftoff
     deflection_at(const Point<2> &p) const;
 
     /// The rows of the time history, one per step (and tau = 0).
-    const std::vector<TimeHistory::Row> &
+    const std::vector<HistoryRow> &
     history() const;
     /// The envelopes (Output/Write envelopes).
     const Envelopes &
@@ -266,7 +266,7 @@ namespace liftoff
   }
 
 
-  inline const std::vector<TimeHistory::Row> &
+  inline const std::vector<HistoryRow> &
   Simulator::history() const
   {
     return time_history.rows();

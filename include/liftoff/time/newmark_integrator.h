@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/linear_algebra.h>
+#include <liftoff/time/clock.h>
 
 namespace liftoff
 {
@@ -40,10 +41,11 @@ namespace liftoff
     void
     check_end_time() const;
 
-    /// Number of steps of size dt that reach the end time (a multiple of
-    /// dt after check_end_time()).
-    unsigned int
-    n_steps() const;
+    /// The scene's clock at step 0: Time step, End time and the number of
+    /// steps between them (End time a multiple of dt after
+    /// check_end_time()).
+    Clock
+    clock() const;
 
     /// Whether the scheme damps high frequencies (gamma > 1/2: Newmark with
     /// such a Gamma, generalized-alpha with Spectral radius < 1), so that
@@ -136,8 +138,10 @@ namespace liftoff
     double beta  = 0.25;
     double gamma = 0.5;
     /// Generalized-alpha weights (0 for Newmark).
-    double alpha_m   = 0;
-    double alpha_f   = 0;
+    double alpha_m = 0;
+    double alpha_f = 0;
+
+  private:
     double time_step = 5e-4;
     double end_time  = 0.2;
   };

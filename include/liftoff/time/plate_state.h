@@ -3,6 +3,7 @@
 #include <liftoff/base/archives.h>
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/time/clock.h>
 #include <liftoff/time/energy_balance.h>
 
 namespace liftoff
@@ -20,8 +21,8 @@ namespace liftoff
    */
   struct PlateState
   {
-    unsigned int step = 0;
-    double       tau  = 0;
+    /// The step and tau of the state.
+    Clock clock;
     /// Owned entries, constraints distributed.
     LA::MPI::Vector u, v, a;
     /// u with ghost entries, for evaluation at quadrature points.
@@ -37,7 +38,7 @@ namespace liftoff
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &step &tau &work &dissipated &energies &initial_energies;
+      archive &clock &work &dissipated &energies &initial_energies;
       for (LA::MPI::Vector *vector : {&u, &v, &a, &load, &balance})
         serialize_entries(archive, *vector);
       if constexpr (Archive::is_loading::value)

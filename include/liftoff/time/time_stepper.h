@@ -67,6 +67,8 @@ namespace liftoff
       bool is_dynamic;
       /// The history writes the energies, so every state's are computed.
       bool records_energies;
+      /// The scene's clock at step 0 (a static analysis: the default).
+      Clock clock;
     };
 
     /// Called once a static solve is done, to end the run there if a stop
