@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What a profile of many points costs to set up (issue 12).
+"""What a profile of many points costs to set up.
 
 Runs one step of a full 100 x 100 Q1 plate (10 000 cells) with a diagonal
 profile of N points and without one, with each executable given, and

@@ -232,7 +232,7 @@ def compare_histories(rows, reference):
 
 def set_floor(rows, floor):
     """The floor of a scene: one substitution with the best symmetric factor
-    (CHOLMOD's), measured in this session; each row's time per step against
+    (CHOLMOD's), measured in the same run; each row's time per step against
     it."""
     for row in rows:
         row["floor"] = "%.4g" % floor

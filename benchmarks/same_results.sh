@@ -17,7 +17,7 @@
 #
 # Time: 34 s for the eight scenes of prm/, both binaries one after the
 # other (example-2-beam-pulse, 20 000 steps: 3 s per binary), on the
-# shared 2-core machine while a -j2 build ran beside it (issue 32).
+# shared 2-core machine while a -j2 build ran beside it.
 set -u
 if [ $# -ne 2 ] || [ ! -x "$1" ] || [ ! -x "$2" ]; then
   echo "usage: $0 OLD_LIFTOFF NEW_LIFTOFF (two executable liftoff binaries)" >&2
