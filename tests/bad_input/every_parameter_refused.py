@@ -63,8 +63,10 @@ def pattern_refuses(description, value):
     if match.group(1) == "Selection":
         options = description[len("[Selection "):].rstrip(" ]").split("|")
         return value not in [o.strip() for o in options]
-    # A number or a boolean is never written with these characters.
-    return not re.search(r"[0-9]", value) and value not in ("true", "false")
+    if match.group(1) == "Bool":
+        return value not in ("true", "false", "yes", "no")
+    # A number has at least one digit.
+    return not re.search(r"[0-9]", value)
 
 
 def is_first_of_numbered(path):
