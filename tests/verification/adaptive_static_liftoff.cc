@@ -22,12 +22,12 @@
 // Measured (Q2, tolerance 1e-4 on a): uniform levels 0, 1, 2 give 2.1e-4,
 // 1.4e-4, 2.7e-5 with 189, 615, 2187 dofs; the front-refined mesh 5.2e-5
 // with 855 dofs (0.39 of the cheapest uniform mesh that meets 1e-4).
-// Refining by the Kelly indicator (`liftoff_tests adaptive_static_liftoff kelly`)
-// also passes, with 1878 dofs: it refines the loaded end as well.
+// Refining by the Kelly indicator (`liftoff_tests adaptive_static_liftoff
+// kelly`) also passes, with 1878 dofs: it refines the loaded end as well.
 //
-// It can fail: `liftoff_tests adaptive_static_liftoff "point loads"` refines only
-// the cells holding the loads, not the front, and a keeps the coarse mesh's
-// error (2.2e-4): the check on a fails.
+// It can fail: `liftoff_tests adaptive_static_liftoff "point loads"` refines
+// only the cells holding the loads, not the front, and a keeps the coarse
+// mesh's error (2.2e-4): the check on a fails.
 
 #include <deal.II/base/point.h>
 

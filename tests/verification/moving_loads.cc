@@ -21,9 +21,9 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <liftoff/fem/discretization.h>
-#include <liftoff/loads/load_set.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/patch_integrator.h>
+#include <liftoff/loads/load_set.h>
 
 #include "pressure_patches.h"
 #include "test_tools.h"

@@ -8,11 +8,11 @@
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/initial_conditions.h>
-#include <liftoff/loads/load_set.h>
 #include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/plate_matrices.h>
 #include <liftoff/fem/plate_term.h>
+#include <liftoff/loads/load_set.h>
 #include <liftoff/time/energy_check.h>
 #include <liftoff/time/newmark_integrator.h>
 #include <liftoff/time/time_stepper.h>
