@@ -40,7 +40,9 @@ namespace liftoff
                                                    "Gamma",
                                                    "damping",
                                                    "shear layer",
-                                                   "self weight"};
+                                                   "self weight",
+                                                   "temperature difference",
+                                                   "thermal expansion"};
     return names;
   }
 

@@ -591,7 +591,9 @@ namespace liftoff
                                   {"force per length",
                                    scale(Quantity::shear_force)},
                                   {"velocity", w / t0},
-                                  {"angular velocity", w / (length * t0)}}};
+                                  {"angular velocity", w / (length * t0)},
+                                  {"temperature difference", 1},
+                                  {"thermal expansion", w / length}}};
     twin_values.clear();
     group_entries.clear();
     convert.convert_all(

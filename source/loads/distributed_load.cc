@@ -70,6 +70,13 @@ namespace liftoff
   }
 
 
+  const Intensity &
+  DistributedLoad::intensity_function() const
+  {
+    return intensity;
+  }
+
+
   std::string
   DistributedLoad::non_finite_spatial_part(const double tau) const
   {

@@ -80,6 +80,25 @@ namespace liftoff
   {}
 
 
+  void
+  Load::use_plate(const MindlinPlate &)
+  {}
+
+
+  bool
+  Load::bends_freely() const
+  {
+    return false;
+  }
+
+
+  FreeBending
+  Load::free_bending_at(const Point<2> &, const double) const
+  {
+    return {};
+  }
+
+
   std::optional<BoundingBox<2>>
   Load::region_between(const double, const double) const
   {

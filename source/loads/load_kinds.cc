@@ -3,6 +3,7 @@
 #include <liftoff/loads/patch_load.h>
 #include <liftoff/loads/point_load.h>
 #include <liftoff/loads/pressure.h>
+#include <liftoff/loads/temperature_load.h>
 #include <liftoff/loads/vehicle.h>
 
 namespace liftoff
@@ -36,7 +37,8 @@ namespace liftoff
       single_load<Pressure>("Pressure"),
       single_load<LineLoad>("Line load"),
       single_load<PatchLoad>("Patch load"),
-      {"Vehicle", &Vehicle::declare_parameters, &Vehicle::read, true}};
+      {"Vehicle", &Vehicle::declare_parameters, &Vehicle::read, true},
+      single_load<TemperatureLoad>("Temperature load")};
     return kinds;
   }
 } // namespace liftoff

@@ -343,6 +343,37 @@ namespace liftoff
 
 
   void
+  LoadSet::use_plate(const MindlinPlate &plate)
+  {
+    for (auto &load : loads)
+      load->use_plate(plate);
+  }
+
+
+  FreeBendingField
+  LoadSet::free_bending(const double tau) const
+  {
+    std::vector<std::pair<const Load *, double>> bending;
+    for (const auto &load : loads)
+      if (load->bends_freely())
+        bending.emplace_back(load.get(), load->history_at(tau));
+    if (bending.empty())
+      return {};
+    return [bending, tau](const Point<2> &x) {
+      FreeBending sum;
+      for (const auto &[load, h] : bending)
+        {
+          const FreeBending one = load->free_bending_at(x, tau);
+          sum.curvature += h * one.curvature;
+          sum.bottom_stress += h * one.bottom_stress;
+          sum.top_stress += h * one.top_stress;
+        }
+      return sum;
+    };
+  }
+
+
+  void
   LoadSet::set_body_force(Function<2> *force)
   {
     Assert(force == nullptr || force->n_components == 3,

@@ -6,6 +6,7 @@
 #include <liftoff/base/archives.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/output/field_output.h>
+#include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/stress_resultants.h>
 #include <liftoff/output/vtu_pieces.h>
 #include <liftoff/time/plate_state.h>
@@ -473,7 +474,8 @@ namespace liftoff
     const StressResultants resultants(plate,
                                       disc.mapping(),
                                       disc.element().shear_integration(),
-                                      solution);
+                                      solution,
+                                      free_bending);
     if (writes_moments)
       plane.add_data_vector(solution, resultants);
     const Vector<float> contact =
@@ -585,6 +587,7 @@ namespace liftoff
         || !is_due(step.state.clock.step(), step.state.clock.is_at_end()))
       return;
     ghosted_velocity = step.state.v;
+    free_bending     = step.resultants.free_bending();
     write(directory,
           *discretization,
           step.foundation,

@@ -10,15 +10,24 @@
 
 namespace liftoff
 {
-  ResultantSweep::ResultantSweep(const MindlinPlate    &plate,
-                                 const Discretization  &discretization,
-                                 const ContactLaw      &law,
-                                 const LA::MPI::Vector &ghosted_solution)
+  ResultantSweep::ResultantSweep(const MindlinPlate     &plate,
+                                 const Discretization   &discretization,
+                                 const ContactLaw       &law,
+                                 const LA::MPI::Vector  &ghosted_solution,
+                                 const FreeBendingField &free_bending)
       : plate(plate)
       , discretization(discretization)
       , law(law)
       , solution(ghosted_solution)
+      , thermal_bending(free_bending)
   {}
+
+
+  const FreeBendingField &
+  ResultantSweep::free_bending() const
+  {
+    return thermal_bending;
+  }
 
 
   const std::vector<Point<2>> &
@@ -47,7 +56,8 @@ namespace liftoff
     const StressResultants resultants(plate,
                                       disc.mapping(),
                                       disc.element().shear_integration(),
-                                      solution);
+                                      solution,
+                                      thermal_bending);
     const unsigned int     m_1 = StressResultants::field_index("M_1"),
                        m_2     = StressResultants::field_index("M_2"),
                        q_x     = StressResultants::field_index("Q_x"),

@@ -26,6 +26,26 @@ namespace liftoff
                                             "sigma_yy",
                                             "sigma_xy",
                                             "sigma_max"};
+
+    // The moments measured from the free curvature kappa_T: M_xx, M_yy and
+    // the principal moments gain D (1 + nu) kappa_T; a nonlinear profile's
+    // self-equilibrating stress is isotropic in the plane and differs
+    // between the faces. (Added only with a temperature: + 0 would turn a
+    // -0 into 0 in the files.)
+    void
+    add_free_bending(const FreeBending &thermal,
+                     const double       nu,
+                     const double       to_stress,
+                     Vector<double>    &out)
+    {
+      const double m = (1 + nu) * thermal.curvature;
+      for (const unsigned int k : {0, 1, 5, 6})
+        out[k] += m;
+      out[8] += to_stress * m + thermal.bottom_stress;
+      out[9] += to_stress * m + thermal.bottom_stress;
+      out[11] = std::max(to_stress * out[5] + thermal.bottom_stress,
+                         -to_stress * out[6] + thermal.top_stress);
+    }
   } // namespace
 
 
@@ -40,11 +60,13 @@ namespace liftoff
     const MindlinPlate                    &plate,
     const Mapping<2>                      &mapping,
     const TransverseShearStrain::Treatment treatment,
-    const LA::MPI::Vector                 &solution)
+    const LA::MPI::Vector                 &solution,
+    const FreeBendingField                &free_bending)
       : plate(plate)
       , mapping(mapping)
       , treatment(treatment)
       , solution(solution)
+      , free_bending(free_bending)
   {}
 
 
@@ -136,6 +158,7 @@ namespace liftoff
         mapping.transform_real_to_unit_cell(cell, points[q]));
     compute(cell,
             unit_points,
+            points,
             inputs.solution_values,
             inputs.solution_gradients,
             computed);
@@ -146,6 +169,7 @@ namespace liftoff
   StressResultants::compute(
     const DoFHandler<2>::cell_iterator           &cell,
     const std::vector<Point<2>>                  &unit_points,
+    const std::vector<Point<2>>                  &points,
     const std::vector<Vector<double>>            &value,
     const std::vector<std::vector<Tensor<1, 2>>> &gradient,
     std::vector<Vector<double>>                  &computed) const
@@ -188,6 +212,8 @@ namespace liftoff
         out[9]  = to_stress * m_yy;
         out[10] = to_stress * m_xy;
         out[11] = to_stress * std::max(m_1, -m_2);
+        if (free_bending)
+          add_free_bending(free_bending(points[q]), nu, to_stress, out);
       }
   }
 
@@ -215,6 +241,7 @@ namespace liftoff
     computed.resize(n, Vector<double>(names.size()));
     compute(cell,
             values.get_quadrature().get_points(),
+            values.get_quadrature_points(),
             point_values,
             gradients,
             computed);

@@ -722,7 +722,8 @@ namespace liftoff
     const StressResultants resultants(plate,
                                       disc.mapping(),
                                       disc.element().shear_integration(),
-                                      step.state.ghosted_u);
+                                      step.state.ghosted_u,
+                                      step.resultants.free_bending());
     std::vector<double>    values(probes.size(), 0.0);
     for (unsigned int k = 0; k < probes.size(); ++k)
       {

@@ -66,6 +66,7 @@ namespace liftoff
     mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
     loads.parse_parameters(prm);
+    loads.use_plate(plate);
     newmark.parse_parameters(prm);
     energy_check.parse_parameters(prm);
     active_set.parse_parameters(prm);

@@ -294,7 +294,9 @@ namespace liftoff
     const ResultantSweep resultants(parts.plate,
                                     parts.discretization,
                                     parts.foundation.law(),
-                                    state.ghosted_u);
+                                    state.ghosted_u,
+                                    parts.loads.free_bending(
+                                      state.clock.tau()));
     const StepData       step{state,
                         parts.discretization,
                         parts.foundation,

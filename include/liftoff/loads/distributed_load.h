@@ -87,6 +87,11 @@ namespace liftoff
       const BoundingBox<2>      &plate,
       const Discretization      &discretization) const override;
 
+    /// f(x, y, tau) (without Magnitude), for a kind that integrates it
+    /// itself.
+    const Intensity &
+    intensity_function() const;
+
   private:
     /// The points at which the full plate's mesh (this rank's share)
     /// evaluates it.

@@ -5,6 +5,8 @@
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/loads/free_bending.h>
 #include <liftoff/loads/load_history.h>
 #include <liftoff/loads/load_path.h>
 
@@ -111,6 +113,17 @@ namespace liftoff
                     const BoundingBox<2>      &plate,
                     const std::vector<double> &times,
                     const Discretization      &discretization) const;
+
+    /// The plate's section, for a kind that needs it (a temperature's
+    /// moment needs nu and H); the others ignore it.
+    virtual void
+    use_plate(const MindlinPlate &plate);
+    /// Whether it bends the plate freely (a temperature) ...
+    virtual bool
+    bends_freely() const;
+    /// ... and how at x at tau, h(tau) excluded (none by default).
+    virtual FreeBending
+    free_bending_at(const Point<2> &x, const double tau) const;
 
   protected:
     Load(const std::string              &name,

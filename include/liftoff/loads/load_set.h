@@ -124,6 +124,15 @@ namespace liftoff
     void
     set_body_force(Function<2> *force);
 
+    /// Hand the plate's section to the loads that need it (a temperature
+    /// load's moment); after parse_parameters().
+    void
+    use_plate(const MindlinPlate &plate);
+    /// The free curvature and face stresses of the temperature loads at
+    /// tau (each times its h(tau)), summed; empty if no load has any.
+    FreeBendingField
+    free_bending(const double tau) const;
+
   private:
     /// A moving load or a vehicle as history.csv reports it: the loads
     /// (indices into `loads`) that share its path.

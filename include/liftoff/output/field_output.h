@@ -9,6 +9,7 @@
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/loads/free_bending.h>
 #include <liftoff/output/output.h>
 #include <liftoff/output/vtu_pieces.h>
 
@@ -112,6 +113,8 @@ namespace liftoff
     const Discretization                       *discretization = nullptr;
     /// The velocity with ghosts, filled only for the steps written.
     LA::MPI::Vector ghosted_velocity;
+    /// The step's temperature loads, for the moments and stresses.
+    FreeBendingField free_bending;
     /// The entries of solution.xdmf (HDF5 output); rebuilt from `records`
     /// and the sizes of their .h5 files after a resume.
     std::vector<XDMFEntry> xdmf_entries;

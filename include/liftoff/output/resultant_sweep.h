@@ -4,6 +4,7 @@
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/loads/free_bending.h>
 
 #include <vector>
 
@@ -41,10 +42,16 @@ namespace liftoff
       double shear    = 0;
     };
 
-    ResultantSweep(const MindlinPlate    &plate,
-                   const Discretization  &discretization,
-                   const ContactLaw      &law,
-                   const LA::MPI::Vector &ghosted_solution);
+    /// `free_bending`: the temperature loads' at the step's time (empty:
+    /// none), which every output's StressResultants take from here.
+    ResultantSweep(const MindlinPlate     &plate,
+                   const Discretization   &discretization,
+                   const ContactLaw       &law,
+                   const LA::MPI::Vector  &ghosted_solution,
+                   const FreeBendingField &free_bending = {});
+
+    const FreeBendingField &
+    free_bending() const;
 
     /// The output points of this rank: its cells in the order of the
     /// active cells, in each the support points of FE_DGQ(p).
@@ -59,6 +66,7 @@ namespace liftoff
     const Discretization         &discretization;
     const ContactLaw             &law;
     const LA::MPI::Vector        &solution;
+    const FreeBendingField        thermal_bending;
     mutable std::vector<Point<2>> point_list;
     mutable std::vector<Values>   value_list;
     mutable bool                  is_computed = false;

@@ -9,6 +9,7 @@
 #include <liftoff/base/physical_units.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/transverse_shear_strain.h>
+#include <liftoff/loads/free_bending.h>
 
 #include <map>
 #include <memory>
@@ -38,10 +39,13 @@ namespace liftoff
   public:
     /// `solution` is the ghosted (w, psi_x, psi_y) the output writes; the
     /// shear forces of mitc need its values at the cell's tying points.
+    /// `free_bending` (the temperature loads' at the step's time; empty:
+    /// none) shifts the moments and adds the face stresses.
     StressResultants(const MindlinPlate                    &plate,
                      const Mapping<2>                      &mapping,
                      const TransverseShearStrain::Treatment treatment,
-                     const LA::MPI::Vector                 &solution);
+                     const LA::MPI::Vector                 &solution,
+                     const FreeBendingField                &free_bending = {});
 
     /// Field name -> what it is, for its unit and scale.
     static const std::map<std::string, PhysicalUnits::Quantity> &
@@ -82,6 +86,7 @@ namespace liftoff
     const Mapping<2>                      &mapping;
     const TransverseShearStrain::Treatment treatment;
     const LA::MPI::Vector                 &solution;
+    const FreeBendingField                 free_bending;
 
     /// The shear strains of the shape functions at one set of reference
     /// points, rebuilt when the points change (DataOut asks for the same
@@ -100,6 +105,7 @@ namespace liftoff
     void
     compute(const DoFHandler<2>::cell_iterator           &cell,
             const std::vector<Point<2>>                  &unit_points,
+            const std::vector<Point<2>>                  &points,
             const std::vector<Vector<double>>            &values,
             const std::vector<std::vector<Tensor<1, 2>>> &gradients,
             std::vector<Vector<double>>                  &computed) const;

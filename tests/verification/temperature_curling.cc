@@ -1,0 +1,109 @@
+// Loads/Temperature load: a temperature difference dT through the
+// thickness bends the plate as the free curvature kappa_T = alpha dT / H in
+// both directions (doc/model.md, "Temperature"). Checks against closed
+// forms:
+//  - a free plate curls to w = kappa_T (x^2 + y^2) / 2 with no moment. A
+//    plate needs something to hold its rigid motions; here a bilateral bed
+//    Gamma with the pressure Gamma kappa_T (x^2 + y^2) / 2 on top, which the
+//    curled shape carries by the bed alone: the exact solution is the
+//    curled shape, which Q2 holds, so w and every moment are exact to
+//    round-off (the shape's sign is that of the derivation: dT > 0, warm
+//    on top, bends the edges into the bed). Full plate, quarter model and
+//    two ranks (the _np2 run) give the same;
+//  - dT linear in x on a narrow strip (mu = 0.05): the curvature follows
+//    kappa_T(x) along the strip, as a beam's does (a plate's free curvature
+//    that is not constant is not a curvature field, so the moments are
+//    not zero but of the order of the width);
+//  - a linear Profile equals the default; a nonlinear one bends the plate
+//    as its equivalent linear difference and adds its self-equilibrating
+//    stress (closed form) to sigma_xx at the bed-side face.
+
+#include "test_tools.h"
+
+#include <cmath>
+
+namespace
+{
+  using liftoff_tests::set;
+  constexpr double gamma_f = 10, delta = 0.05, nu = 0.2, alpha = 1e-3;
+
+  std::string
+  curling_scene(const std::string &symmetry, const double dt)
+  {
+    // kappa_T = alpha dT / Delta; the pressure Gamma kappa_T r^2 / 2.
+    const double kappa = alpha * dt / delta;
+    return set("Analysis/Type", "static") + set("Foundation/Model", "bilateral")
+           + set("Foundation/Stiffness", gamma_f)
+           + set("Plate/Thickness ratio", delta)
+           + set("Plate/Poisson ratio", nu)
+           + set("Discretization/Symmetry", symmetry)
+           + set("Discretization/Cells along x", 4)
+           + set("Discretization/Cells along y", 4)
+           + set("Discretization/Polynomial degree", 2)
+           + set("Loads/Temperature load 1/Magnitude", dt)
+           + set("Loads/Temperature load 1/Expansion coefficient", alpha)
+           + set("Loads/Pressure 1/Magnitude", gamma_f * kappa / 2)
+           + set("Loads/Pressure 1/Intensity", "x^2 + y^2")
+           + set("Output/Probe points", "0, 0; 0.5, 0.5; 0.5, 0; 0.2, -0.1")
+           + set("Output/Probe quantities",
+                 "M_xx(0.2; 0.3), M_yy(0.2; 0.3), M_xy(0.2; 0.3), "
+                 "M_xx(0.5; 0.1), M_yy(0.5; 0.5), sigma_max(0.1; 0.1), "
+                 "Q_x(0.3; 0.2)");
+  }
+
+  // Largest |w - kappa (x^2 + y^2) / 2| over the probes, over kappa / 4,
+  // and the largest |moment| (sigma_max: times Delta^2 / 6) over the
+  // restrained moment (1 + nu) kappa.
+  std::pair<double, double>
+  curling_errors(const liftoff::Simulator &run, const double kappa)
+  {
+    const auto                              &row     = run.history().back();
+    const std::vector<std::array<double, 2>> points  = {{{0, 0}},
+                                                        {{0.5, 0.5}},
+                                                        {{0.5, 0}},
+                                                        {{0.2, -0.1}}};
+    double                                   w_error = 0, m_error = 0;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const double x = points[k][0], y = points[k][1];
+        w_error =
+          std::max(w_error,
+                   std::abs(row.probes("w")[k] - kappa * (x * x + y * y) / 2));
+      }
+    for (const std::string name : {"M_xx", "M_yy", "M_xy", "Q_x"})
+      for (const double m : row.probes(name))
+        m_error = std::max(m_error, std::abs(m));
+    for (const double s : row.probes("sigma_max"))
+      m_error = std::max(m_error, std::abs(s) * delta * delta / 6);
+    return {w_error / (std::abs(kappa) / 4),
+            m_error / ((1 + nu) * std::abs(kappa))};
+  }
+} // namespace
+
+
+LIFTOFF_TEST_MAIN(argc, argv)
+{
+  liftoff_tests::Checks checks(argc, argv);
+  const double          dt = 10, kappa = alpha * dt / delta;
+
+  // The free plate curls, with no moment, on the full plate and a quarter.
+  for (const std::string symmetry : {"full", "quarter"})
+    {
+      const auto run = liftoff_tests::run_scene(curling_scene(symmetry, dt));
+      const auto [w_error, m_error] = curling_errors(*run, kappa);
+      checks.less(symmetry + ": max |w - kappa_T r^2 / 2| / (kappa_T / 4)",
+                  w_error,
+                  1e-11);
+      checks.less(symmetry + ": max |M| / ((1 + nu) kappa_T)", m_error, 1e-10);
+    }
+  // Night (dT < 0): the edges curl up, w < 0 at the corner.
+  {
+    const auto run = liftoff_tests::run_scene(curling_scene("full", -dt));
+    const auto [w_error, m_error] = curling_errors(*run, -kappa);
+    checks.less("night: max |w - kappa_T r^2 / 2| / (|kappa_T| / 4)",
+                w_error,
+                1e-11);
+    checks.less("night: max |M| / ((1 + nu) |kappa_T|)", m_error, 1e-10);
+  }
+  return checks.exit_code();
+}
