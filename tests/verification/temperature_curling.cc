@@ -28,11 +28,16 @@ namespace
   constexpr double gamma_f = 10, delta = 0.05, nu = 0.2, alpha = 1e-3;
 
   std::string
-  curling_scene(const std::string &symmetry, const double dt)
+  curling_scene(const std::string &symmetry,
+                const double       dt,
+                const std::string &profile    = "1, 0",
+                const double       difference = 1)
   {
     // kappa_T = alpha dT / Delta; the pressure Gamma kappa_T r^2 / 2.
-    const double kappa = alpha * dt / delta;
-    return set("Analysis/Type", "static") + set("Foundation/Model", "bilateral")
+    const double kappa = alpha * dt * difference / delta;
+    return set("Loads/Temperature load 1/Profile", profile)
+           + set("Analysis/Type", "static")
+           + set("Foundation/Model", "bilateral")
            + set("Foundation/Stiffness", gamma_f)
            + set("Plate/Thickness ratio", delta)
            + set("Plate/Poisson ratio", nu)
@@ -104,6 +109,73 @@ LIFTOFF_TEST_MAIN(argc, argv)
                 w_error,
                 1e-11);
     checks.less("night: max |M| / ((1 + nu) |kappa_T|)", m_error, 1e-10);
+  }
+
+  // Profiles: a linear one is the default; a nonlinear one bends as its
+  // equivalent linear difference and adds its self-equilibrating stress.
+  {
+    const auto run = liftoff_tests::run_scene(
+      curling_scene("full", dt / 2, "2, 1.5, 1, 0.5, 0", 2));
+    const auto [w_error, m_error] = curling_errors(*run, kappa);
+    checks.less("linear profile 2, ..., 0 at dT / 2: max |w - kappa_T r^2 / "
+                "2| / (kappa_T / 4)",
+                w_error,
+                1e-11);
+    checks.less("linear profile: max |M| and |sigma_max| (Delta^2 / 6) / "
+                "((1 + nu) kappa_T)",
+                m_error,
+                1e-10);
+  }
+  {
+    // T(s) = 1 - s^3 by points at s = k / 4; the closed forms of the
+    // piecewise-linear profile by a fine midpoint rule.
+    const std::vector<double> t = {1, 1 - 1 / 64., 1 - 1 / 8., 1 - 27 / 64., 0};
+    const auto                profile_at = [&](const double s) {
+      const unsigned int k = std::min(3u, static_cast<unsigned int>(s * 4));
+      const double       f = s * 4 - k;
+      return (1 - f) * t[k] + f * t[k + 1];
+    };
+    double             mean = 0, difference = 0;
+    const unsigned int n = 400000;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double s = (i + 0.5) / n;
+        mean += profile_at(s) / n;
+        difference += -12 * profile_at(s) * (s - 0.5) / n;
+      }
+    const auto self_equilibrating = [&](const double s) {
+      return profile_at(s) - mean + difference * (s - 0.5);
+    };
+    // -E alpha T / (1 - nu) in F0 / L^2: -12 (1 + nu) alpha T / Delta^3.
+    const double bottom =
+      -12 * (1 + nu) * alpha * dt * self_equilibrating(1) / std::pow(delta, 3);
+    const double top =
+      -12 * (1 + nu) * alpha * dt * self_equilibrating(0) / std::pow(delta, 3);
+    std::cout << "profile 1 - s^3: mean " << mean << ", dT_eq " << difference
+              << ", T_se(0) " << self_equilibrating(0) << ", T_se(1) "
+              << self_equilibrating(1) << std::endl;
+    const auto run = liftoff_tests::run_scene(
+      curling_scene("full", dt, "1, 0.984375, 0.875, 0.578125, 0", difference)
+      + set("Output/Probe quantities",
+            "M_xx(0.2; 0.3), sigma_xx(0.2; 0.3), sigma_yy(-0.1; 0.4), "
+            "sigma_max(0.1; 0.1)"));
+    const auto [w_error, m_error] = curling_errors(*run, kappa * difference);
+    const auto &row               = run->history().back();
+    checks.less("profile 1 - s^3: max |w - kappa_eq r^2 / 2| / (kappa_eq / "
+                "4)",
+                w_error,
+                1e-11);
+    checks.less("profile 1 - s^3: |sigma_xx - closed form| / |closed form| "
+                "(bed side)",
+                std::abs(row.probes("sigma_xx")[0] - bottom) / std::abs(bottom),
+                1e-9);
+    checks.less("profile 1 - s^3: |sigma_yy - closed form| / |closed form|",
+                std::abs(row.probes("sigma_yy")[0] - bottom) / std::abs(bottom),
+                1e-9);
+    checks.less("profile 1 - s^3: |sigma_max - max(faces)| / max(faces)",
+                std::abs(row.probes("sigma_max")[0] - std::max(bottom, top))
+                  / std::max(bottom, top),
+                1e-9);
   }
   return checks.exit_code();
 }
