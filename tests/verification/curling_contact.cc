@@ -75,5 +75,30 @@ LIFTOFF_TEST_MAIN(argc, argv)
                     previous_fraction - 1e-3);
       previous_fraction = fraction;
     }
+  // Permanent (built-in curl): a time integration starts from the static
+  // equilibrium under the weight and the temperature together.
+  {
+    const double dt = 2 * dt_c;
+    const auto   static_run =
+      liftoff_tests::run_scene(scene("tensionless", q, dt));
+    const auto dynamic_run = liftoff_tests::run_scene(
+      scene("tensionless", q, dt) + set("Analysis/Type", "dynamic")
+      + set("Loads/Temperature load 1/Permanent", "true")
+      + set("Time integration/Time step", 1e-3)
+      + set("Time integration/End time", 2e-3));
+    double difference = 0, scale = 0;
+    for (const auto &row : dynamic_run->history())
+      for (unsigned int k = 0; k < 4; ++k)
+        {
+          const double w = static_run->history().back().probes("w")[k];
+          difference = std::max(difference, std::abs(row.probes("w")[k] - w));
+          scale      = std::max(scale, std::abs(w));
+        }
+    checks.less("permanent at 2 dT_c: the dynamic run rests at the static "
+                "equilibrium, max |w - w_static| / max |w_static| over its "
+                "steps",
+                difference / scale,
+                1e-9);
+  }
   return checks.exit_code();
 }
