@@ -9,9 +9,11 @@ slab):
 - without noise, to the fit's tolerance (a step of 1e-9 in ln E and ln k):
   E and k within 1e-6 (measured 7e-10 and -2e-10), every residual below
   1e-4 um (1e-7 um), in 15 liftoff runs;
-- with 1 % noise on each sensor (normal, seeded; step tolerance 1e-6), E
-  within 4 % and k within 2 % (measured +0.05 % and +0.02 %), each within 3
-  standard deviations of the Jacobian's uncertainty (1.7 % and 1.1 %);
+- with 1 % noise on each sensor (normal, seeded; step tolerance 1e-4), E
+  within 5 % and k within 3 %, about 3 standard deviations of the
+  Jacobian's uncertainty (1.4 % and 0.9 % here; seed 1 gives -4.7 % and
+  +2.8 %); measured +0.91 % and -0.40 % (0.6 and 0.5 sigma), each within 3
+  standard deviations;
 - the script writes fit.csv, fit.txt and basin_fit.png, and refuses a basin
   without the AREA sensors, naming the missing offset, in one line.
 
@@ -110,19 +112,19 @@ with tempfile.TemporaryDirectory() as folder:
               for name in ("fit.csv", "fit.txt", "basin_fit.png")),
           "fit.csv, fit.txt and basin_fit.png written")
 
-    random.seed(52)
+    random.seed(7)
     with open("truth/basin.csv") as f:
         rows = list(csv.reader(f))
     for row in rows[1:]:
         row[3] = repr(float(row[3]) * (1 + 0.01 * random.gauss(0, 1)))
     with open("noisy.csv", "w") as f:
         csv.writer(f).writerows(rows)
-    _, noisy = backcalc("noisy.csv", "noisy", "1e-6")
+    _, noisy = backcalc("noisy.csv", "noisy", "1e-4")
     e, se, k, sk = noisy
     print(f"1 % noise: E {e / E - 1:+.2%} ({abs(e - E) / se:.1f} sigma), "
           f"k {k / K - 1:+.2%} ({abs(k - K) / sk:.1f} sigma)")
-    check(abs(e / E - 1) < 0.04 and abs(k / K - 1) < 0.02,
-          "1 % noise: E within 4 %, k within 2 %")
+    check(abs(e / E - 1) < 0.05 and abs(k / K - 1) < 0.03,
+          "1 % noise: E within 5 %, k within 3 %")
     check(abs(e - E) < 3 * se and abs(k - K) < 3 * sk,
           "1 % noise: the true E and k within 3 standard deviations")
 

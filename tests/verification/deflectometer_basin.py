@@ -23,7 +23,9 @@ the Hankel transform (tests/common/winkler_basin.py):
   = 22 ms, peaks within 1 % of the static basin at every sensor (history
   and basin.csv agree);
 - a tensionless bed and a bilateral one, under Gravity 9.81 (the slab in
-  full contact throughout), the same sensor histories to 1e-9 of d0.
+  full contact throughout), the same sensor histories to 1e-9 of d0;
+- the sensors measure from the slab at rest, settled under its weight: on
+  the bilateral bed the same histories with Gravity 9.81 and 0.
 
     deflectometer_basin.py LIFTOFF
 """
@@ -146,6 +148,7 @@ end"""
         .replace("0.02", "0.002").replace("End time = 1", "End time = 0.04") \
         + "\nsubsection Units\n  set Gravity = 9.81\nend\n"
     _, bilateral = run("bilateral", gravity)
+    _, weightless = run("weightless", gravity.replace("9.81", "0"))
     _, tensionless = run("tensionless", gravity + """
 subsection Foundation
   set Model = tensionless
@@ -180,6 +183,13 @@ full = min(float(t["contact_fraction"]) for t in tensionless)
 check(full == 1 and gap < 1e-9 * d0,
       f"tensionless and bilateral beds agree in full contact (contact "
       f"fraction >= {full}, largest difference {gap / d0:.1e} of d0)")
+
+settled = max(abs(float(b[s]) - float(w[s])) for b, w in zip(bilateral,
+                                                             weightless)
+              for s in sensors)
+check(settled < 1e-9 * d0,
+      f"on a bilateral bed the sensors measure the pulse alone: with and "
+      f"without self-weight {settled / d0:.1e} of d0 apart")
 
 print(f"{failures} failure(s)")
 sys.exit(1 if failures else 0)
