@@ -1,3 +1,4 @@
+#include <liftoff/loads/deflectometer.h>
 #include <liftoff/loads/line_load.h>
 #include <liftoff/loads/load_kinds.h>
 #include <liftoff/loads/patch_load.h>
@@ -38,7 +39,8 @@ namespace liftoff
       single_load<LineLoad>("Line load"),
       single_load<PatchLoad>("Patch load"),
       {"Vehicle", &Vehicle::declare_parameters, &Vehicle::read, true},
-      single_load<TemperatureLoad>("Temperature load")};
+      single_load<TemperatureLoad>("Temperature load"),
+      single_load<Deflectometer>("Deflectometer")};
     return kinds;
   }
 } // namespace liftoff

@@ -3,6 +3,8 @@
 #include <liftoff/loads/load_history.h>
 #include <liftoff/loads/load_path.h>
 
+#include <sstream>
+
 namespace liftoff
 {
   void
@@ -31,6 +33,16 @@ namespace liftoff
     if (expression.empty())
       return nullptr;
     return std::shared_ptr<const LoadPath>(new LoadPath(owner, expression));
+  }
+
+
+  std::shared_ptr<const LoadPath>
+  LoadPath::standing_at(const std::string &owner, const Point<2> &point)
+  {
+    std::ostringstream text;
+    text.precision(17);
+    text << point[0] << "; " << point[1];
+    return std::shared_ptr<const LoadPath>(new LoadPath(owner, text.str()));
   }
 
 

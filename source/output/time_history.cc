@@ -293,6 +293,7 @@ namespace liftoff
   TimeHistory::parse_parameters(ParameterHandler   &prm,
                                 const MindlinPlate &plate_)
   {
+    other_columns.clear();
     plate        = plate_;
     probe_points = parse_points(prm.get("Probe points"));
     for (unsigned int i = 0; i < probe_points.size(); ++i)
@@ -402,6 +403,17 @@ namespace liftoff
 
 
   void
+  TimeHistory::add_columns(const std::vector<HistoryColumns::Column> &group,
+                           HistoryColumns::Values                     values)
+  {
+    if (group.empty())
+      return;
+    other_columns.emplace_back(group, std::move(values));
+    make_columns();
+  }
+
+
+  void
   TimeHistory::show_dissipated_energy(const bool show)
   {
     write_dissipated = show;
@@ -459,6 +471,8 @@ namespace liftoff
                     return moment_extremes(step);
                   });
     add_moving_load_columns();
+    for (const auto &[group, values] : other_columns)
+      columns.add(group, values);
     scales.clear();
     for (const auto &column : columns.columns())
       scales.push_back(units.scale(column.quantity));

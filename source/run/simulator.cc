@@ -63,6 +63,7 @@ namespace liftoff
       field_output.parse_parameters(scene, parts.plate);
       envelopes.parse_parameters(scene);
       scene.leave_subsection();
+      deflectometer_sensors.parse_parameters(scene);
       if (time_history.drop_default_probe_off(parts.discretization.geometry()))
         pcout << "liftoff: no probe: 0, 0 lies in the annulus's hole.\n";
       time_history.show_dissipated_energy(parts.foundation.law().has_damping());
@@ -73,6 +74,7 @@ namespace liftoff
       profile_output.follow(parts.loads.moving_load_names(), load_positions);
       for (Output *output : outputs)
         output->write_in_units_of(units);
+      deflectometer_sensors.add_columns_to(time_history);
       checkpoint.parse_parameters(scene);
       check_scene();
     });
@@ -86,6 +88,7 @@ namespace liftoff
     time_history.check_against(parts.discretization);
     profile_output.check_against(parts.discretization);
     envelopes.check_against(parts.mesh_refinement);
+    deflectometer_sensors.check_against(parts.discretization);
     if (parts.is_dynamic())
       profile_output.warn_of_times_not_reached(parts.clock().end_time(),
                                                parts.clock().time_step(),
@@ -561,6 +564,7 @@ namespace liftoff
                        parts.newmark.beta);
     time_history.add_to(summary);
     envelopes.add_to(summary);
+    deflectometer_sensors.add_to(summary);
     small_deflection.add_to(summary);
     summary.add_linear_solver(parts.active_set.linear_solver());
     summary.add_resources(timer, wall_clock.wall_time(), mpi_communicator);

@@ -26,6 +26,9 @@ namespace liftoff
     /// nullptr if it is empty (the load stands).
     static std::shared_ptr<const LoadPath>
     read(ParameterHandler &prm, const std::string &owner);
+    /// A path that stands at `point` (a load whose entry is a position).
+    static std::shared_ptr<const LoadPath>
+    standing_at(const std::string &owner, const Point<2> &point);
 
     Point<2>
     at(const double tau) const;

@@ -69,6 +69,12 @@ namespace liftoff
     follow(const std::vector<std::string>                         &names,
            const std::function<std::vector<double>(const double)> &positions);
 
+    /// Columns another output computes (a deflectometer's sensors), after
+    /// the others.
+    void
+    add_columns(const std::vector<HistoryColumns::Column> &group,
+                HistoryColumns::Values                     values);
+
     /// Write the dashpots' dissipated energy (a column `dissipated_energy`
     /// after `work`, with the energies): only a scene with dashpots has it.
     void
@@ -172,7 +178,11 @@ namespace liftoff
     std::vector<std::string>
     column_names() const;
 
-    PhysicalUnits                units;
+    PhysicalUnits units;
+    /// The groups of add_columns().
+    std::vector<
+      std::pair<std::vector<HistoryColumns::Column>, HistoryColumns::Values>>
+                                 other_columns;
     std::vector<Point<2>>        probe_points;
     bool                         write_energies        = true;
     bool                         write_dissipated      = false;

@@ -8,6 +8,7 @@
 #include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 
+#include <liftoff/output/deflectometer_sensors.h>
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/field_output.h>
 #include <liftoff/output/output.h>
@@ -135,13 +136,15 @@ namespace liftoff
     FieldOutput          field_output;
     Envelopes            envelopes;
     SmallDeflectionCheck small_deflection;
+    DeflectometerSensors deflectometer_sensors;
     ProgressLine         progress_line;
     /// What is written after each step, in this order.
     std::vector<Output *> outputs{&time_history,
                                   &profile_output,
                                   &field_output,
                                   &envelopes,
-                                  &small_deflection};
+                                  &small_deflection,
+                                  &deflectometer_sensors};
     Checkpoint            checkpoint;
 
     int         stopped_by_signal = 0;
