@@ -83,10 +83,25 @@ namespace liftoff
 
 
   void
-  Discretization::setup()
+  Discretization::create_coarse_mesh()
   {
     triangulation.clear();
-    plate_geometry.create_coarse_mesh(triangulation);
+    const SlabLayout &slabs = plate_geometry.slabs();
+    if (!slabs.is_jointed())
+      {
+        plate_geometry.create_coarse_mesh(triangulation);
+        return;
+      }
+    Triangulation<2> whole;
+    plate_geometry.create_coarse_mesh(whole);
+    slabs.cut(whole, triangulation);
+  }
+
+
+  void
+  Discretization::setup()
+  {
+    create_coarse_mesh();
     triangulation.refine_global(n_refinements);
     distribute_dofs();
     mesh_area_error = measure_area_error();
@@ -126,8 +141,7 @@ namespace liftoff
   void
   Discretization::load_mesh(const std::string &filename)
   {
-    triangulation.clear();
-    plate_geometry.create_coarse_mesh(triangulation);
+    create_coarse_mesh();
     triangulation.load(filename);
     distribute_dofs();
     mesh_area_error = measure_area_error();
@@ -206,6 +220,7 @@ namespace liftoff
                                     pattern,
                                     constraints,
                                     /*keep_constrained_dofs*/ false);
+    plate_geometry.slabs().add_couplings(dof_handler, constraints, pattern);
     SparsityTools::distribute_sparsity_pattern(pattern,
                                                locally_owned_dofs,
                                                mpi_communicator,
@@ -219,6 +234,7 @@ namespace liftoff
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    plate_geometry.slabs().tie(dof_handler, constraints);
 
     const Functions::ZeroFunction<2> zero(PlateElement::n_components);
     for (const auto &[id, mask] : plate_geometry.held_components())

@@ -76,12 +76,6 @@ namespace liftoff
   } // namespace
 
 
-  PlateGeometry::PlateGeometry()
-  {
-    edges.fill(EdgeCondition::free);
-  }
-
-
   void
   PlateGeometry::declare_parameters(ParameterHandler &prm)
   {
@@ -132,16 +126,15 @@ namespace liftoff
                       "(x >= 0, symmetry plane x = 0); quarter (x >= 0, "
                       "y >= 0). The scene always describes the full plate "
                       "and its full loads.");
-    prm.declare_entry("Cells along x",
-                      "10",
-                      Patterns::Integer(1),
-                      "Number of cells along x on the meshed part.");
-    prm.declare_entry("Cells along y",
-                      "10",
-                      Patterns::Integer(1),
-                      "Number of cells along y on the meshed part.");
+    for (const std::string axis : {"x", "y"})
+      prm.declare_entry("Cells along " + axis,
+                        "10",
+                        Patterns::Integer(1),
+                        "Number of cells along " + axis
+                          + " on the meshed part.");
     prm.leave_subsection();
     declare_boundary_conditions(prm);
+    SlabLayout::declare_parameters(prm);
   }
 
 
@@ -260,6 +253,14 @@ namespace liftoff
                   ExcMessage("Discretization/Symmetry = quarter needs Boundary "
                              "conditions/Bottom and Top to be equal (the plate "
                              "must be symmetric about y = 0)."));
+    slab_layout.parse_parameters(prm, *this);
+  }
+
+
+  const SlabLayout &
+  PlateGeometry::slabs() const
+  {
+    return slab_layout;
   }
 
 

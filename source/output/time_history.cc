@@ -7,6 +7,7 @@
 #include <liftoff/base/located_maximum.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/joint_springs.h>
 #include <liftoff/time/plate_state.h>
 
 #include <liftoff/output/resultant_sweep.h>
@@ -473,6 +474,7 @@ namespace liftoff
     add_moving_load_columns();
     for (const auto &[group, values] : other_columns)
       columns.add(group, values);
+    add_joint_columns();
     scales.clear();
     for (const auto &column : columns.columns())
       scales.push_back(units.scale(column.quantity));
@@ -517,6 +519,30 @@ namespace liftoff
       if (dissipated)
         values.push_back(e.dissipated);
       values.push_back(e.error(step.state.initial_energies));
+      return values;
+    });
+  }
+
+
+  void
+  TimeHistory::add_joint_columns()
+  {
+    if (joints.empty())
+      return;
+    std::vector<HistoryColumns::Column> group;
+    for (const auto &[index, name] : joints)
+      {
+        group.push_back({"shear_" + name, PhysicalUnits::Quantity::force});
+        group.push_back({"lte_" + name, PhysicalUnits::Quantity::number});
+      }
+    columns.add(group, [this](const StepData &step) {
+      const auto          transfer = step.joints.transfer(step.state.ghosted_u);
+      std::vector<double> values;
+      for (const auto &joint : joints)
+        {
+          values.push_back(transfer[joint.first].shear_force);
+          values.push_back(transfer[joint.first].efficiency);
+        }
       return values;
     });
   }
@@ -613,6 +639,12 @@ namespace liftoff
   void
   TimeHistory::setup(const Discretization &disc, const std::string &directory)
   {
+    joints.clear();
+    for (unsigned int j = 0; j < disc.geometry().slabs().joints().size(); ++j)
+      if (!disc.geometry().slabs().joints()[j].tied)
+        joints.emplace_back(j, disc.geometry().slabs().joints()[j].name);
+    if (!joints.empty())
+      make_columns();
     mesh_changed(disc);
     history.clear();
 

@@ -32,6 +32,7 @@ namespace liftoff
     InitialConditions::declare_parameters(prm);
     MindlinPlate::declare_parameters(prm);
     Discretization::declare_parameters(prm);
+    JointSprings::declare_parameters(prm);
     MeshRefinement::declare_parameters(prm);
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
@@ -65,6 +66,7 @@ namespace liftoff
     discretization.parse_parameters(prm, plate, units);
     mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
+    joint_springs.parse_parameters(prm);
     loads.parse_parameters(prm);
     loads.use_plate(plate);
     newmark.parse_parameters(prm);
@@ -87,6 +89,7 @@ namespace liftoff
     if (analysis == Analysis::dynamic_analysis)
       newmark.check_end_time();
     mesh_refinement.check_against(discretization);
+    joint_springs.check_against(discretization.geometry().slabs());
   }
 
 
@@ -149,6 +152,9 @@ namespace liftoff
   std::vector<SystemTerm *>
   SceneParts::system_terms()
   {
+    // Only a plate of several slabs has joints to pass forces.
+    if (discretization.geometry().slabs().is_jointed())
+      return {&plate_term, &foundation, &joint_springs};
     return {&plate_term, &foundation};
   }
 

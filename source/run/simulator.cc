@@ -303,6 +303,7 @@ namespace liftoff
     const StepData       step{state,
                         parts.discretization,
                         parts.foundation,
+                        parts.joint_springs,
                         iteration,
                         resultants,
                         parts.foundation.diagnostics().contact_area_fraction()};

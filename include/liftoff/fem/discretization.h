@@ -146,6 +146,9 @@ namespace liftoff
     bool                                             has_hanging     = false;
     double                                           mesh_area_error = 0;
 
+    /// The geometry's coarse mesh, cut along the joints.
+    void
+    create_coarse_mesh();
     void
     make_constraints();
     /// area_error() of the mesh as it is now (collective).

@@ -8,6 +8,7 @@
 #include <liftoff/base/physical_units.h>
 #include <liftoff/fem/mesh_file.h>
 #include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/slab_layout.h>
 
 #include <array>
 #include <memory>
@@ -91,8 +92,6 @@ namespace liftoff
       inner_boundary   = 7  // the hole's circle of an annulus
     };
 
-    PlateGeometry();
-
     /// Entries in "Discretization" (Shape, Radius, Inner radius, Mesh file,
     /// Symmetry, Cells along x and y) and "Boundary conditions".
     static void
@@ -137,6 +136,10 @@ namespace liftoff
     /// only a foundation makes a static problem regular. Else "".
     std::string
     only_supported_edge() const;
+
+    /// The slabs the rectangle is made of and the joints between them.
+    const SlabLayout &
+    slabs() const;
 
     PlateShape
     shape() const;
@@ -230,8 +233,12 @@ namespace liftoff
     Symmetry                        modelled_part = Symmetry::full;
     unsigned int                    n_cells_x     = 10;
     unsigned int                    n_cells_y     = 10;
-    std::array<EdgeCondition, 4>    edges;
+    std::array<EdgeCondition, 4>    edges         = {{EdgeCondition::free,
+                                                      EdgeCondition::free,
+                                                      EdgeCondition::free,
+                                                      EdgeCondition::free}};
     std::shared_ptr<const MeshFile> mesh;
+    SlabLayout                      slab_layout;
     /// A boundary that is not free: its condition and its direction (0
     /// along x, 1 along y, another value along neither).
     struct HeldBoundary

@@ -10,6 +10,7 @@ namespace liftoff
 
   // StepData holds references only: the outputs include what they use.
   class Discretization;
+  class JointSprings;
   class PhysicalUnits;
   class ResultantSweep;
   class TensionlessWinklerFoundation;
@@ -23,7 +24,9 @@ namespace liftoff
     const PlateState                   &state;
     const Discretization               &discretization;
     const TensionlessWinklerFoundation &foundation;
-    const ActiveSetResult              &iteration;
+    /// What the joints between slabs pass (a plate of one slab has none).
+    const JointSprings    &joints;
+    const ActiveSetResult &iteration;
     /// The resultants at the output points, computed by the first output
     /// that reads them.
     const ResultantSweep &resultants;

@@ -172,6 +172,9 @@ namespace liftoff
     add_quantity_probe_columns();
     void
     add_moving_load_columns();
+    /// shear_<joint> and lte_<joint> of each joint that is not tied.
+    void
+    add_joint_columns();
     void
     make_columns();
     /// The header's names: in an SI scene "t" for tau, each with its unit.
@@ -191,7 +194,9 @@ namespace liftoff
     MindlinPlate                 plate;
     std::vector<PointFunctional> probes;
     std::vector<std::string>     moving_load_names;
-    std::function<std::vector<double>(const double)> moving_load_positions;
+    /// The joints that are not tied, by their index in the layout.
+    std::vector<std::pair<unsigned int, std::string>> joints;
+    std::function<std::vector<double>(const double)>  moving_load_positions;
     /// This rank's degrees of freedom of w.
     IndexSet w_dofs;
     /// The initial gap at them, in the order of w_dofs (filled at the first

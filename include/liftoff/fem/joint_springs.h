@@ -1,0 +1,96 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <liftoff/fem/system_term.h>
+
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  struct Joint;
+  class SlabLayout;
+
+  /**
+   * What the joints between slabs pass that are not tied: aggregate
+   * interlock as springs of stiffness AGG per unit length of joint against
+   * the jump of w across it, and, if given, springs of stiffness R per unit
+   * length against the jump of the rotation psi . n about the joint's line
+   * (a moment). Energy 1/2 int_joint AGG [w]^2 + R [psi . n]^2 ds; a joint
+   * with both stiffnesses 0 is free. The springs are integrated on the
+   * finer face of each pair of faces across a joint, at its Gauss points
+   * and at the same points of the cell opposite, so meshes refined
+   * differently on the two sides are coupled exactly.
+   */
+  class JointSprings : public SystemTerm
+  {
+  public:
+    /// `Slabs/Shear stiffness` and `Slabs/Rotational stiffness`.
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+    /// Refuse a list of stiffnesses that gives neither one value nor one
+    /// per joint of `slabs`.
+    void
+    check_against(const SlabLayout &slabs) const;
+
+    void
+    setup(const Discretization &discretization) override;
+    void
+    add_to_matrix(const MatrixFactors   &factors,
+                  LA::MPI::SparseMatrix &matrix) override;
+    void
+    add_force(const TermState &state, LA::MPI::Vector &force) const override;
+    double
+    energy(const TermState &state) const override;
+
+    /// What a joint passes at ghosted_u: the shear force from its lower to
+    /// its upper slab, int AGG (w_lower - w_upper) ds, and its load
+    /// transfer efficiency w_unloaded / w_loaded at the Gauss point of the
+    /// joint where the larger |w| of its two sides is largest (1 where
+    /// the joint does not move).
+    struct Transfer
+    {
+      double shear_force = 0;
+      double efficiency  = 1;
+    };
+    /// One per joint of the layout (tied ones: 0 and 1; collective).
+    std::vector<Transfer>
+    transfer(const LA::MPI::Vector &ghosted_u) const;
+
+  private:
+    std::vector<double> shear_stiffness;
+    std::vector<double> rotational_stiffness;
+
+    /// One face of a joint with the points of the cell opposite: the dofs
+    /// of both cells (this side's first) and the jumps of w and psi . n
+    /// of each of them at each Gauss point, times sqrt(JxW).
+    struct Segment
+    {
+      unsigned int                         joint;
+      int                                  sign;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<std::vector<double>>     w_jump;
+      std::vector<std::vector<double>>     rotation_jump;
+    };
+    std::vector<Segment>  segments;
+    const Discretization *discretization = nullptr;
+    LA::MPI::SparseMatrix springs;
+    bool                  has_springs = false;
+
+    double
+    stiffness_of(const std::vector<double> &values,
+                 const unsigned int         joint) const;
+    /// The segment of `cell`'s face `face` on `joint`.
+    Segment
+    make_segment(const DoFHandler<2>::active_cell_iterator &cell,
+                 const unsigned int                         face,
+                 const unsigned int                         joint) const;
+    void
+    assemble();
+  };
+} // namespace liftoff

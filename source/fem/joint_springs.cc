@@ -1,0 +1,312 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/joint_springs.h>
+
+#include <cmath>
+
+namespace liftoff
+{
+  namespace
+  {
+    std::vector<double>
+    stiffnesses(const std::string &text, const std::string &entry)
+    {
+      std::vector<double> values;
+      for (const std::string &item : Utilities::split_string_list(text))
+        {
+          const double value = Utilities::string_to_double(item);
+          AssertThrow(std::isfinite(value) && value >= 0,
+                      ExcMessage("Slabs/" + entry + " = " + text + ": " + item
+                                 + " is no stiffness; each value must be a "
+                                   "finite number >= 0."));
+          values.push_back(value);
+        }
+      AssertThrow(!values.empty(),
+                  ExcMessage("Slabs/" + entry
+                             + " is empty: give one value for every joint, "
+                               "or one per joint."));
+      return values;
+    }
+  } // namespace
+
+
+  void
+  JointSprings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Slabs");
+    prm.declare_entry(
+      "Shear stiffness",
+      "0",
+      Patterns::List(Patterns::Double(), 1, 64),
+      "AGG, the aggregate interlock of the joints that are not tied: the "
+      "shear force per unit length of joint per unit jump of w across it "
+      "(N/m^2 in an SI scene; AGG L^3 / D dimensionless). One value for "
+      "every joint, or one per joint in the order x1, x2, ..., y1, y2, ...; "
+      "0: the joint passes no shear (free)."
+        + quantity("pressure"));
+    prm.declare_entry(
+      "Rotational stiffness",
+      "0",
+      Patterns::List(Patterns::Double(), 1, 64),
+      "The moment per unit length of joint per unit jump of the rotation "
+      "about the joint's line (N m / m per radian, that is N, in an SI "
+      "scene; R L / D dimensionless), as Shear stiffness: one value or one "
+      "per joint; 0: no moment passes."
+        + quantity("force"));
+    prm.leave_subsection();
+  }
+
+
+  void
+  JointSprings::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Slabs");
+    shear_stiffness =
+      stiffnesses(prm.get("Shear stiffness"), "Shear stiffness");
+    rotational_stiffness =
+      stiffnesses(prm.get("Rotational stiffness"), "Rotational stiffness");
+    prm.leave_subsection();
+  }
+
+
+  void
+  JointSprings::check_against(const SlabLayout &slabs) const
+  {
+    const std::size_t n = slabs.joints().size();
+    for (const auto &[values, entry] :
+         {std::make_pair(&shear_stiffness, "Shear stiffness"),
+          std::make_pair(&rotational_stiffness, "Rotational stiffness")})
+      AssertThrow(values->size() == 1 || values->size() == n,
+                  ExcMessage("Slabs/" + std::string(entry) + " has "
+                             + std::to_string(values->size())
+                             + " values; the modelled plate has "
+                             + std::to_string(n)
+                             + " joints: give one value, or one per "
+                               "joint."));
+  }
+
+
+  double
+  JointSprings::stiffness_of(const std::vector<double> &values,
+                             const unsigned int         joint) const
+  {
+    return values.size() == 1 ? values[0] : values[joint];
+  }
+
+
+  void
+  JointSprings::setup(const Discretization &disc)
+  {
+    discretization = &disc;
+    segments.clear();
+    const SlabLayout &slabs = disc.geometry().slabs();
+    has_springs             = false;
+    for (unsigned int j = 0; j < slabs.joints().size(); ++j)
+      has_springs = has_springs
+                    || (!slabs.joints()[j].tied
+                        && (stiffness_of(shear_stiffness, j) > 0
+                            || stiffness_of(rotational_stiffness, j) > 0));
+    for (const auto &cell : disc.locally_owned_cells())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary())
+            continue;
+          const Joint *joint = slabs.joint_of(cell->face(f)->boundary_id());
+          if (joint == nullptr || joint->tied)
+            continue;
+          // Each piece of the joint once: from the finer side, from the
+          // lower one where both are alike.
+          const auto neighbor = cell->periodic_neighbor(f);
+          if (neighbor->has_children()
+              || (!cell->periodic_neighbor_is_coarser(f)
+                  && cell->face(f)->boundary_id() == joint->upper_side))
+            continue;
+          segments.push_back(
+            make_segment(cell, f, joint - slabs.joints().data()));
+        }
+    // Free joints keep their segments for transfer() only.
+    if (has_springs)
+      assemble();
+  }
+
+
+  JointSprings::Segment
+  JointSprings::make_segment(const DoFHandler<2>::active_cell_iterator &cell,
+                             const unsigned int                         face,
+                             const unsigned int joint) const
+  {
+    const FiniteElement<2> &fe      = discretization->dof_handler.get_fe();
+    const Mapping<2>       &mapping = discretization->mapping();
+    const unsigned int      n       = fe.n_dofs_per_cell();
+    const Joint       &j = discretization->geometry().slabs().joints()[joint];
+    const unsigned int rotation = 1 + j.normal_axis;
+
+    FEFaceValues<2> here(mapping,
+                         fe,
+                         QGauss<1>(fe.degree + 1),
+                         update_values | update_quadrature_points
+                           | update_JxW_values);
+    here.reinit(cell, face);
+    const auto            opposite = cell->periodic_neighbor(face);
+    std::vector<Point<2>> unit_points;
+    for (const Point<2> &p : here.get_quadrature_points())
+      unit_points.push_back(mapping.transform_real_to_unit_cell(opposite, p));
+    FEValues<2> there(mapping, fe, Quadrature<2>(unit_points), update_values);
+    there.reinit(opposite);
+
+    Segment segment;
+    segment.joint = joint;
+    segment.sign  = cell->face(face)->boundary_id() == j.lower_side ? 1 : -1;
+    segment.dofs.resize(2 * n);
+    std::vector<types::global_dof_index> opposite_dofs(n);
+    cell->get_dof_indices(segment.dofs);
+    segment.dofs.resize(n);
+    opposite->get_dof_indices(opposite_dofs);
+    segment.dofs.insert(segment.dofs.end(),
+                        opposite_dofs.begin(),
+                        opposite_dofs.end());
+    for (const unsigned int q : here.quadrature_point_indices())
+      {
+        const double        root = std::sqrt(here.JxW(q));
+        std::vector<double> w(2 * n), psi(2 * n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            w[i]       = root * here.shape_value_component(i, q, 0);
+            w[n + i]   = -root * there.shape_value_component(i, q, 0);
+            psi[i]     = root * here.shape_value_component(i, q, rotation);
+            psi[n + i] = -root * there.shape_value_component(i, q, rotation);
+          }
+        segment.w_jump.push_back(w);
+        segment.rotation_jump.push_back(psi);
+      }
+    return segment;
+  }
+
+
+  void
+  JointSprings::assemble()
+  {
+    const Discretization  &disc = *discretization;
+    DynamicSparsityPattern pattern(disc.locally_relevant_dofs.size(),
+                                   disc.locally_relevant_dofs.size(),
+                                   disc.locally_relevant_dofs);
+    for (const Segment &segment : segments)
+      disc.constraints.add_entries_local_to_global(segment.dofs,
+                                                   pattern,
+                                                   false);
+    SparsityTools::distribute_sparsity_pattern(pattern,
+                                               disc.locally_owned_dofs,
+                                               disc.mpi_communicator,
+                                               disc.locally_relevant_dofs);
+    springs.reinit(disc.locally_owned_dofs,
+                   disc.locally_owned_dofs,
+                   pattern,
+                   disc.mpi_communicator);
+    for (const Segment &segment : segments)
+      {
+        const std::size_t m   = segment.dofs.size();
+        const double      agg = stiffness_of(shear_stiffness, segment.joint);
+        const double      r = stiffness_of(rotational_stiffness, segment.joint);
+        FullMatrix<double> local(m, m);
+        for (unsigned int q = 0; q < segment.w_jump.size(); ++q)
+          for (unsigned int i = 0; i < m; ++i)
+            for (unsigned int k = 0; k < m; ++k)
+              local(i, k) +=
+                agg * segment.w_jump[q][i] * segment.w_jump[q][k]
+                + r * segment.rotation_jump[q][i] * segment.rotation_jump[q][k];
+        disc.constraints.distribute_local_to_global(local,
+                                                    segment.dofs,
+                                                    springs);
+      }
+    springs.compress(VectorOperation::add);
+  }
+
+
+  void
+  JointSprings::add_to_matrix(const MatrixFactors &,
+                              LA::MPI::SparseMatrix &matrix)
+  {
+    if (has_springs)
+      matrix.add(1.0, springs);
+  }
+
+
+  void
+  JointSprings::add_force(const TermState &state, LA::MPI::Vector &force) const
+  {
+    if (!has_springs)
+      return;
+    springs.vmult(state.scratch, state.u);
+    force += state.scratch;
+  }
+
+
+  double
+  JointSprings::energy(const TermState &state) const
+  {
+    if (!has_springs)
+      return 0;
+    springs.vmult(state.scratch, state.u);
+    // The constrained rows hold a diagonal of their own, not the joint's.
+    discretization->constraints.set_zero(state.scratch);
+    return 0.5 * (state.scratch * state.u);
+  }
+
+
+  std::vector<JointSprings::Transfer>
+  JointSprings::transfer(const LA::MPI::Vector &ghosted_u) const
+  {
+    const unsigned int n_joints =
+      discretization->geometry().slabs().joints().size();
+    std::vector<double> force(n_joints, 0.0);
+    // Per joint: the largest |w| of a side, and the ratio of the other
+    // side's w to it there.
+    std::vector<std::pair<double, double>> loaded(n_joints, {0.0, 1.0});
+    for (const Segment &segment : segments)
+      {
+        const double      agg = stiffness_of(shear_stiffness, segment.joint);
+        const std::size_t n   = segment.dofs.size() / 2;
+        for (const std::vector<double> &jump : segment.w_jump)
+          {
+            // Each side's w times sqrt(JxW), and sqrt(JxW) itself as the
+            // sum of its w shape values (a partition of unity).
+            double here = 0, there = 0, root = 0;
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                here += jump[i] * ghosted_u(segment.dofs[i]);
+                there -= jump[n + i] * ghosted_u(segment.dofs[n + i]);
+                root += jump[i];
+              }
+            force[segment.joint] += segment.sign * agg * (here - there) * root;
+            const double larger = std::max(std::abs(here), std::abs(there));
+            if (larger / root > loaded[segment.joint].first)
+              loaded[segment.joint] = {larger / root,
+                                       std::abs(here) < std::abs(there)
+                                         ? here / there
+                                         : there / here};
+          }
+      }
+    const MPI_Comm comm = discretization->mpi_communicator;
+    Utilities::MPI::sum(force, comm, force);
+    const auto            all = Utilities::MPI::all_gather(comm, loaded);
+    std::vector<Transfer> result(n_joints);
+    for (unsigned int j = 0; j < n_joints; ++j)
+      {
+        result[j].shear_force = force[j];
+        double largest        = 0;
+        for (const auto &rank : all)
+          if (rank[j].first > largest)
+            {
+              largest              = rank[j].first;
+              result[j].efficiency = rank[j].second;
+            }
+      }
+    return result;
+  }
+} // namespace liftoff

@@ -1,0 +1,288 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
+#include <liftoff/fem/plate_geometry.h>
+#include <liftoff/fem/slab_layout.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace liftoff
+{
+  namespace
+  {
+    /// The joints' boundary ids follow the edges', planes' and a mesh
+    /// file's few tags.
+    constexpr types::boundary_id first_joint_id = 64;
+  } // namespace
+
+
+  void
+  SlabLayout::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Slabs");
+    prm.declare_entry("Slabs along x",
+                      "1",
+                      Patterns::Integer(1, 32),
+                      "The rectangle as this many slabs of equal length "
+                      "along x, with the transverse joints x1, x2, ... "
+                      "between them (from the left). Each joint must lie on "
+                      "a line of the coarse cells (Discretization/Cells "
+                      "along x a multiple of the slabs on the meshed part).");
+    prm.declare_entry("Slabs along y",
+                      "1",
+                      Patterns::Integer(1, 32),
+                      "Slabs of equal width along y, with the longitudinal "
+                      "joints y1, y2, ... between them (from the bottom).");
+    prm.declare_entry("Tied joints",
+                      "",
+                      Patterns::List(Patterns::Anything()),
+                      "Joints (x1, y2, ...) that are monolithic: w and psi "
+                      "continuous across them, as if there were no joint."
+                        + quantity("text"));
+    prm.leave_subsection();
+  }
+
+
+  void
+  SlabLayout::parse_parameters(ParameterHandler    &prm,
+                               const PlateGeometry &geometry)
+  {
+    prm.enter_subsection("Slabs");
+    n_slabs = {{static_cast<unsigned int>(prm.get_integer("Slabs along x")),
+                static_cast<unsigned int>(prm.get_integer("Slabs along y"))}};
+    const std::vector<std::string> tied =
+      Utilities::split_string_list(prm.get("Tied joints"));
+    prm.leave_subsection();
+
+    joint_list.clear();
+    if (!is_jointed())
+      {
+        AssertThrow(tied.empty(),
+                    ExcMessage("Slabs/Tied joints = " + tied[0]
+                               + ": the plate is one slab (Slabs along x "
+                                 "and y are 1), it has no joints."));
+        return;
+      }
+    AssertThrow(geometry.shape() == PlateShape::rectangle,
+                ExcMessage("Slabs/Slabs along x and y: slabs are made on the "
+                           "rectangle only, not on "
+                           + geometry.shape_setting() + "."));
+    place_joints(geometry);
+    for (const std::string &name : tied)
+      {
+        const auto joint =
+          std::find_if(joint_list.begin(), joint_list.end(), [&](auto &j) {
+            return j.name == name;
+          });
+        AssertThrow(joint != joint_list.end(),
+                    ExcMessage("Slabs/Tied joints: " + name
+                               + " is no joint of the modelled plate."));
+        joint->tied = true;
+      }
+  }
+
+
+  void
+  SlabLayout::place_joints(const PlateGeometry &geometry)
+  {
+    const auto [low, high] = geometry.plate_box().get_boundary_points();
+    const auto [modelled_low, modelled_high] =
+      geometry.modelled_box().get_boundary_points();
+    const char *axis_names[2] = {"x", "y"};
+    for (unsigned int axis = 0; axis < 2; ++axis)
+      {
+        origin[axis]      = low[axis];
+        slab_size[axis]   = (high[axis] - low[axis]) / n_slabs[axis];
+        const double cell = (modelled_high[axis] - modelled_low[axis])
+                            / geometry.coarse_cells_along(axis);
+        for (unsigned int j = 1; j < n_slabs[axis]; ++j)
+          {
+            const double      position = low[axis] + j * slab_size[axis];
+            const std::string name     = axis_names[axis] + std::to_string(j);
+            const std::string what =
+              "Slabs/Slabs along " + std::string(axis_names[axis]) + " = "
+              + std::to_string(n_slabs[axis]) + " puts the joint " + name
+              + " at " + axis_names[axis] + " = " + format_number(position);
+            const double tolerance = 1e-10 * (high[axis] - low[axis]);
+            AssertThrow(std::abs(position) > tolerance
+                          || geometry.symmetry_axes().size() <= axis,
+                        ExcMessage(what
+                                   + ", on the symmetry plane of "
+                                     "Discretization/Symmetry: model "
+                                     "the full plate."));
+            if (position < modelled_low[axis] + tolerance)
+              continue;
+            const double cells = (position - modelled_low[axis]) / cell;
+            AssertThrow(std::abs(cells - std::round(cells)) < 1e-8,
+                        ExcMessage(what
+                                   + ", inside a coarse cell: make "
+                                     "Discretization/Cells along "
+                                   + axis_names[axis]
+                                   + " a multiple of the slabs on the "
+                                     "meshed part."));
+            const types::boundary_id id =
+              first_joint_id + 2 * joint_list.size();
+            joint_list.push_back({name, axis, position, id, id + 1u, false});
+          }
+      }
+  }
+
+
+  bool
+  SlabLayout::is_jointed() const
+  {
+    return n_slabs[0] * n_slabs[1] > 1;
+  }
+
+
+  const std::vector<Joint> &
+  SlabLayout::joints() const
+  {
+    return joint_list;
+  }
+
+
+  const Joint *
+  SlabLayout::joint_of(const types::boundary_id id) const
+  {
+    for (const Joint &joint : joint_list)
+      if (id == joint.lower_side || id == joint.upper_side)
+        return &joint;
+    return nullptr;
+  }
+
+
+  unsigned int
+  SlabLayout::slab_of(const Point<2> &p) const
+  {
+    std::array<unsigned int, 2> index;
+    for (unsigned int axis = 0; axis < 2; ++axis)
+      index[axis] = std::min<unsigned int>(
+        n_slabs[axis] - 1,
+        std::max(0.0, std::floor((p[axis] - origin[axis]) / slab_size[axis])));
+    return index[0] + n_slabs[0] * index[1];
+  }
+
+
+  void
+  SlabLayout::cut(const Triangulation<2>                  &whole,
+                  parallel::distributed::Triangulation<2> &cut) const
+  {
+    // A vertex once per slab that uses it.
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> copy_of;
+    std::vector<Point<2>>                                         vertices;
+    std::vector<CellData<2>>                                      cells;
+    for (const auto &cell : whole.active_cell_iterators())
+      {
+        const unsigned int slab = slab_of(cell->center());
+        CellData<2>        data;
+        data.material_id = slab;
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto [it, is_new] =
+              copy_of.try_emplace({cell->vertex_index(v), slab},
+                                  vertices.size());
+            if (is_new)
+              vertices.push_back(cell->vertex(v));
+            data.vertices[v] = it->second;
+          }
+        cells.push_back(data);
+      }
+    cut.create_triangulation(vertices, cells, SubCellData());
+
+    mark_faces(whole, cut);
+    for (const Joint &joint : joint_list)
+      {
+        std::vector<GridTools::PeriodicFacePair<
+          parallel::distributed::Triangulation<2>::cell_iterator>>
+          pairs;
+        GridTools::collect_periodic_faces(
+          cut, joint.lower_side, joint.upper_side, joint.normal_axis, pairs);
+        cut.add_periodicity(pairs);
+      }
+  }
+
+
+  void
+  SlabLayout::mark_faces(const Triangulation<2> &whole,
+                         Triangulation<2>       &cut) const
+  {
+    // The edges' and planes' ids at the same places; the other faces on
+    // the boundary now are the joints'.
+    std::vector<std::pair<Point<2>, types::boundary_id>> edge_ids;
+    for (const auto &face : whole.active_face_iterators())
+      if (face->at_boundary())
+        edge_ids.emplace_back(face->center(), face->boundary_id());
+    const double tolerance = 1e-10 * GridTools::minimal_cell_diameter(whole);
+    for (const auto &cell : cut.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const auto edge =
+              std::find_if(edge_ids.begin(), edge_ids.end(), [&](auto &e) {
+                return e.first.distance(face->center()) < tolerance;
+              });
+            if (edge != edge_ids.end())
+              {
+                face->set_boundary_id(edge->second);
+                continue;
+              }
+            for (const Joint &joint : joint_list)
+              if (std::abs(face->center()[joint.normal_axis] - joint.position)
+                  < tolerance)
+                face->set_boundary_id(cell->center()[joint.normal_axis]
+                                          < joint.position
+                                        ? joint.lower_side
+                                        : joint.upper_side);
+          }
+  }
+
+
+  void
+  SlabLayout::add_couplings(const DoFHandler<2>             &dof_handler,
+                            const AffineConstraints<double> &constraints,
+                            DynamicSparsityPattern          &pattern) const
+  {
+    const unsigned int n = dof_handler.get_fe().n_dofs_per_cell();
+    std::vector<types::global_dof_index> both(2 * n), there(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const Joint *joint = cell->face(f)->at_boundary()
+                                   ? joint_of(cell->face(f)->boundary_id())
+                                   : nullptr;
+            if (joint == nullptr || joint->tied)
+              continue;
+            // A finer neighbour couples from its side, as it sees this
+            // cell as its coarser neighbour.
+            const auto neighbor = cell->periodic_neighbor(f);
+            if (neighbor->has_children())
+              continue;
+            cell->get_dof_indices(both);
+            neighbor->get_dof_indices(there);
+            both.resize(n);
+            both.insert(both.end(), there.begin(), there.end());
+            constraints.add_entries_local_to_global(both, pattern, false);
+          }
+  }
+
+
+  void
+  SlabLayout::tie(const DoFHandler<2>       &dof_handler,
+                  AffineConstraints<double> &constraints) const
+  {
+    for (const Joint &joint : joint_list)
+      if (joint.tied)
+        DoFTools::make_periodicity_constraints(dof_handler,
+                                               joint.lower_side,
+                                               joint.upper_side,
+                                               joint.normal_axis,
+                                               constraints);
+  }
+} // namespace liftoff
