@@ -354,7 +354,10 @@ namespace liftoff
                 set_entry(out, path, twin, path + " = " + entry.value);
               }
             if (twin != entry.value)
-              changed[path] = {entry.value, twin, quantities[0]};
+              changed[path] = {entry.value,
+                               twin,
+                               quantities[0],
+                               entry.value == entry.default_value};
           }
       }
 
@@ -696,15 +699,21 @@ namespace liftoff
     // A number of the twin beyond 1e100 (or below 1e-100) is a unit of
     // these Units far from the slab's: the likely cause, whatever
     // overflowed.
-    for (const auto &[path, entry] : twin_values)
-      for (const auto &[item, separator] :
-           items_of(group_entries.count(path) == 0 ? entry.twin : ""))
-        if (Patterns::Double().match(item))
-          if (const double x = std::abs(Utilities::string_to_double(item));
-              x > 1e100 || (x > 0 && x < 1e-100))
-            return message + " The cause in this SI scene: " + path + " = "
-                   + entry.si + " is " + item + " in the solver's unit of "
-                   + entry.quantity + ", " + unit_origin(entry.quantity) + ".";
+    // An entry the scene wrote before one left at its default (the
+    // Duration of a deflectometer that is off).
+    for (const bool defaults : {false, true})
+      for (const auto &[path, entry] : twin_values)
+        for (const auto &[item, separator] : items_of(
+               group_entries.count(path) == 0 && entry.is_default == defaults
+                 ? entry.twin
+                 : ""))
+          if (Patterns::Double().match(item))
+            if (const double x = std::abs(Utilities::string_to_double(item));
+                x > 1e100 || (x > 0 && x < 1e-100))
+              return message + " The cause in this SI scene: " + path + " = "
+                     + entry.si + " is " + item + " in the solver's unit of "
+                     + entry.quantity + ", " + unit_origin(entry.quantity)
+                     + ".";
     return message;
   }
 

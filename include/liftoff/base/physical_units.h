@@ -165,6 +165,8 @@ namespace liftoff
     struct Converted
     {
       std::string si, twin, quantity;
+      /// The scene left it at its declared default.
+      bool is_default = false;
     };
 
   private:
