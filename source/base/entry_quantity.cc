@@ -42,7 +42,8 @@ namespace liftoff
                                                    "shear layer",
                                                    "self weight",
                                                    "temperature difference",
-                                                   "thermal expansion"};
+                                                   "thermal expansion",
+                                                   "pressure per length"};
     return names;
   }
 

@@ -576,27 +576,28 @@ namespace liftoff
     scene.print_parameters(text, ParameterHandler::ShortPRM);
     dimensionless.parse_input(text, "the scene");
     const double         w = scale(Quantity::deflection);
-    const SceneConverter convert{declared_entries(scene),
-                                 scene,
-                                 dimensionless,
-                                 length,
-                                 width,
-                                 t0,
-                                 is_rectangle,
-                                 {{"number", 1},
-                                  {"position", length},
-                                  {"length", length},
-                                  {"deflection", w},
-                                  {"rotation", w / length},
-                                  {"time", t0},
-                                  {"force", scale(Quantity::force)},
-                                  {"pressure", scale(Quantity::pressure)},
-                                  {"force per length",
-                                   scale(Quantity::shear_force)},
-                                  {"velocity", w / t0},
-                                  {"angular velocity", w / (length * t0)},
-                                  {"temperature difference", 1},
-                                  {"thermal expansion", w / length}}};
+    const SceneConverter convert{
+      declared_entries(scene),
+      scene,
+      dimensionless,
+      length,
+      width,
+      t0,
+      is_rectangle,
+      {{"number", 1},
+       {"position", length},
+       {"length", length},
+       {"deflection", w},
+       {"rotation", w / length},
+       {"time", t0},
+       {"force", scale(Quantity::force)},
+       {"pressure", scale(Quantity::pressure)},
+       {"force per length", scale(Quantity::shear_force)},
+       {"velocity", w / t0},
+       {"angular velocity", w / (length * t0)},
+       {"temperature difference", 1},
+       {"thermal expansion", w / length},
+       {"pressure per length", scale(Quantity::pressure) / length}}};
     twin_values.clear();
     group_entries.clear();
     convert.convert_all(

@@ -86,9 +86,89 @@ namespace liftoff
     SectionTimer                 &timer)
       : discretization(discretization)
       , foundation(foundation)
+      , terms{&foundation}
       , timer(timer)
       , solver(timer)
   {}
+
+
+  void
+  ActiveSetIteration::drive_also(const std::vector<StatusTerm *> &others)
+  {
+    terms = {&foundation};
+    terms.insert(terms.end(), others.begin(), others.end());
+  }
+
+
+  ActiveSetIteration::Statuses
+  ActiveSetIteration::statuses() const
+  {
+    Statuses all;
+    for (const StatusTerm *term : terms)
+      all.push_back(term->status());
+    return all;
+  }
+
+
+  ActiveSetIteration::Statuses
+  ActiveSetIteration::statuses_in_matrix() const
+  {
+    Statuses all;
+    for (const StatusTerm *term : terms)
+      all.push_back(term->status_in_matrix());
+    return all;
+  }
+
+
+  unsigned long
+  ActiveSetIteration::count_changes(
+    const std::function<unsigned long(StatusTerm &)> &change)
+  {
+    unsigned long n = 0;
+    for (StatusTerm *term : terms)
+      n += change(*term);
+    return n;
+  }
+
+
+  bool
+  ActiveSetIteration::has_status_load() const
+  {
+    for (const StatusTerm *term : terms)
+      if (term->has_status_load())
+        return true;
+    return false;
+  }
+
+
+  void
+  ActiveSetIteration::update_status(const LA::MPI::Vector &ghosted_u,
+                                    const SpringPressure  &pressure)
+  {
+    count_changes([&](StatusTerm &term) {
+      return term.update_status(ghosted_u, pressure);
+    });
+  }
+
+
+  void
+  ActiveSetIteration::add_status_loads(const SpringPressure &pressure,
+                                       LA::MPI::Vector      &vector) const
+  {
+    for (const StatusTerm *term : terms)
+      if (term->has_status_load())
+        term->add_status_load(pressure, vector);
+  }
+
+
+  double
+  ActiveSetIteration::status_load_work(const LA::MPI::Vector &ghosted_u) const
+  {
+    double work = 0;
+    for (const StatusTerm *term : terms)
+      work += term->status_load_work(ghosted_u);
+    return work;
+  }
 
 
   void
@@ -108,12 +188,13 @@ namespace liftoff
     copy_values(src, change_owned);
     ghosts.distribute(discretization.constraints, change_owned, change_source);
     dst = 0;
-    foundation.add_change_product(since == Since::factorisation
-                                    ? factorised_status
-                                    : solved_status,
-                                  velocity_factor,
-                                  change_source,
-                                  dst);
+    const Statuses &reference =
+      since == Since::factorisation ? factorised_status : solved_status;
+    for (unsigned int t = 0; t < terms.size(); ++t)
+      terms[t]->add_change_product(reference[t],
+                                   velocity_factor,
+                                   change_source,
+                                   dst);
   }
 
 
@@ -138,7 +219,14 @@ namespace liftoff
     velocity_factor = kappa;
     discretization.reinit_matrix(matrix);
     write_base(matrix);
-    foundation.add_to_matrix(factorised_status, velocity_factor, matrix);
+    AssertThrow(factorised_status.size() == terms.size(),
+                ExcMessage("The checkpoint holds the statuses of "
+                           + std::to_string(factorised_status.size())
+                           + " terms where the scene has "
+                           + std::to_string(terms.size())
+                           + ": it was written for another scene."));
+    for (unsigned int t = 0; t < terms.size(); ++t)
+      terms[t]->add_to_matrix(factorised_status[t], velocity_factor, matrix);
     solver.load(archive, matrix, discretization, this);
     set_matrix_values(current, matrix);
   }
@@ -155,8 +243,9 @@ namespace liftoff
       velocity_factor = kappa;
       discretization.reinit_matrix(matrix);
       write_base(matrix);
-      foundation.add_to_matrix({0.0, velocity_factor}, matrix);
-      factorised_status = foundation.status_in_matrix();
+      for (StatusTerm *term : terms)
+        term->add_to_matrix({0.0, velocity_factor}, matrix);
+      factorised_status = statuses_in_matrix();
     }
     solver.prepare(matrix, discretization, this);
   }
@@ -167,8 +256,9 @@ namespace liftoff
   {
     SectionTimer::Scope t(timer, "foundation update");
     write_base(matrix);
-    factorised_status = foundation.status_in_matrix();
-    foundation.add_to_matrix(factorised_status, velocity_factor, matrix);
+    factorised_status = statuses_in_matrix();
+    for (unsigned int t = 0; t < terms.size(); ++t)
+      terms[t]->add_to_matrix(factorised_status[t], velocity_factor, matrix);
   }
 
 
@@ -215,7 +305,7 @@ namespace liftoff
     // The residual, computed in double, carries round-off of the order of
     // eps ||A|| ||x||; the correction it gives is then of the order of the
     // error that the conditioning makes of that round-off.
-    const LA::MPI::Vector &system_rhs = with_gap_load(system);
+    const LA::MPI::Vector &system_rhs = with_status_loads(system);
     LA::MPI::Vector        residual(system_rhs), correction(system_rhs);
     matrix.vmult(residual, x);
     residual.sadd(-1.0, 1.0, system_rhs);
@@ -228,13 +318,13 @@ namespace liftoff
 
 
   const LA::MPI::Vector &
-  ActiveSetIteration::with_gap_load(const System &system)
+  ActiveSetIteration::with_status_loads(const System &system)
   {
-    if (!foundation.law().has_gap())
+    if (!has_status_load())
       return system.rhs;
-    rhs_with_gap = system.rhs;
-    foundation.add_gap_load(system.pressure, rhs_with_gap);
-    return rhs_with_gap;
+    rhs_with_loads = system.rhs;
+    add_status_loads(system.pressure, rhs_with_loads);
+    return rhs_with_loads;
   }
 
 
@@ -247,17 +337,22 @@ namespace liftoff
   {
     {
       SectionTimer::Scope t(timer, "foundation update");
-      if (foundation.update_matrix(velocity_factor, matrix) > 0)
+      if (count_changes([&](StatusTerm &term) {
+            return term.update_matrix(velocity_factor, matrix);
+          })
+          > 0)
         solver.matrix_changed();
     }
-    solver.solve(solution, with_gap_load(system), accuracy, continues_solve);
+    solver.solve(solution,
+                 with_status_loads(system),
+                 accuracy,
+                 continues_solve);
     // The next solve of this step continues this one if nothing but the
-    // springs' status changes in between: a gap load changes with the
-    // status, and hanging nodes take their masters' values in the solution
+    // statuses change in between: a status load changes with the status,
+    // and hanging nodes take their masters' values in the solution
     // (below).
-    solved_status = foundation.status_in_matrix();
-    continues_solve =
-      !foundation.law().has_gap() && !discretization.has_hanging_nodes();
+    solved_status   = statuses_in_matrix();
+    continues_solve = !has_status_load() && !discretization.has_hanging_nodes();
     ghosts.distribute(discretization.constraints, solution, ghosted_solution);
   }
 
@@ -271,10 +366,14 @@ namespace liftoff
   {
     solve_with_current_set(system, solution, ghosted_solution, accuracy);
     if (system.requires_contact
-        && !is_solution_of_system(solution, with_gap_load(system), accuracy))
+        && !is_solution_of_system(solution,
+                                  with_status_loads(system),
+                                  accuracy))
       return {};
     SectionTimer::Scope t(timer, "contact update");
-    return foundation.update_contact_status(ghosted_solution, system.pressure);
+    return count_changes([&](StatusTerm &term) {
+      return term.update_status(ghosted_solution, system.pressure);
+    });
   }
 
 
@@ -303,10 +402,9 @@ namespace liftoff
 
 
   unsigned int
-  ActiveSetIteration::find_in(
-    const std::vector<std::vector<unsigned char>> &visited) const
+  ActiveSetIteration::find_in(const std::vector<Statuses> &visited) const
   {
-    const auto &status = foundation.contact_status();
+    const Statuses status = statuses();
     for (unsigned int k = 0; k < visited.size(); ++k)
       if (Utilities::MPI::min(static_cast<int>(visited[k] == status),
                               discretization.mpi_communicator)
@@ -317,8 +415,8 @@ namespace liftoff
 
 
   bool
-  ActiveSetIteration::has_settled(const unsigned long               n_changed,
-                                  const std::vector<unsigned char> &start_set)
+  ActiveSetIteration::has_settled(const unsigned long n_changed,
+                                  const Statuses     &start_set)
   {
     // Points whose w_h ends inside the round-off band keep the status they
     // had when the step began. The rule's choice there would otherwise
@@ -328,7 +426,13 @@ namespace liftoff
     // left 6.6 % of it out of contact where full solves kept it in).
     // Restoring it (and solving once more) makes the converged set a
     // function of the step's start alone.
-    return n_changed == 0 && foundation.keep_status_in_band(start_set) == 0;
+    if (n_changed > 0)
+      return false;
+    unsigned int t = 0;
+    return count_changes([&](StatusTerm &term) {
+             return term.keep_status_in_band(start_set[t++]);
+           })
+           == 0;
   }
 
 
@@ -341,26 +445,27 @@ namespace liftoff
     // heading.
     SectionTimer::Scope t(timer, "contact update");
     ghosts.copy(prediction, ghosted_solution);
-    foundation.update_contact_status(ghosted_solution, pressure);
+    update_status(ghosted_solution, pressure);
   }
 
 
   void
-  ActiveSetIteration::solve_with_union(
-    const std::vector<std::vector<unsigned char>> &visited,
-    const unsigned int                             first,
-    const System                                  &system,
-    LA::MPI::Vector                               &solution,
-    LA::MPI::Vector                               &ghosted_solution)
+  ActiveSetIteration::solve_with_union(const std::vector<Statuses> &visited,
+                                       const unsigned int           first,
+                                       const System                &system,
+                                       LA::MPI::Vector             &solution,
+                                       LA::MPI::Vector &ghosted_solution)
   {
     // Springs wherever any set of the cycle had them: the stiffer choice,
     // whose error is a tension in the springs of the points that the
     // solution lifts.
-    std::vector<unsigned char> all(visited[first].size(), 0);
-    for (unsigned int k = first; k < visited.size(); ++k)
-      for (unsigned int i = 0; i < all.size(); ++i)
-        all[i] |= visited[k][i];
-    foundation.set_contact_status(all);
+    for (unsigned int t = 0; t < terms.size(); ++t)
+      {
+        StatusTerm::Status all(visited[first][t].size(), 0);
+        for (unsigned int k = first; k < visited.size(); ++k)
+          terms[t]->unite(visited[k][t], all);
+        terms[t]->set_status(all);
+      }
     solve_with_current_set(system, solution, ghosted_solution);
   }
 
@@ -376,13 +481,12 @@ namespace liftoff
     continues_solve = false;
     // The set the previous step ended with: the status of points that end
     // in the round-off band.
-    const std::vector<unsigned char> start_set = foundation.contact_status();
+    const Statuses start_set = statuses();
     if (guess_is_prediction && starts_from_prediction)
       start_from_prediction(solution, system.pressure, ghosted_solution);
     // The sets of this step so far. The solution depends on the set only,
     // so meeting one again means the iteration would go round for ever.
-    std::vector<std::vector<unsigned char>> visited{
-      foundation.contact_status()};
+    std::vector<Statuses> visited{statuses()};
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
@@ -420,7 +524,7 @@ namespace liftoff
             result.converged = true;
             return result;
           }
-        visited.push_back(foundation.contact_status());
+        visited.push_back(statuses());
       }
     return result;
   }

@@ -54,8 +54,8 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::set_status(const unsigned int  i,
-                                           const unsigned char status)
+  TensionlessWinklerFoundation::change_status(const unsigned int  i,
+                                              const unsigned char status)
   {
     if (in_contact[i] == status)
       return;
@@ -69,14 +69,13 @@ namespace liftoff
   {
     if (contact_law.model() != ContactLaw::Model::none)
       for (unsigned int i = 0; i < in_contact.size(); ++i)
-        set_status(i, 1);
+        change_status(i, 1);
   }
 
 
   unsigned long
-  TensionlessWinklerFoundation::update_contact_status(
-    const LA::MPI::Vector &u,
-    const SpringPressure  &pressure)
+  TensionlessWinklerFoundation::update_status(const LA::MPI::Vector &u,
+                                              const SpringPressure  &pressure)
   {
     if (contact_law.model() != ContactLaw::Model::tensionless)
       return 0;
@@ -105,7 +104,7 @@ namespace liftoff
         const unsigned char now =
           contact_law.next_status(in_contact[i], compression[i], band);
         n_changed += (now != in_contact[i]);
-        set_status(i, now);
+        change_status(i, now);
       }
     return Utilities::MPI::sum(n_changed, comm);
   }
@@ -121,7 +120,7 @@ namespace liftoff
       for (unsigned int i = 0; i < in_contact.size(); ++i)
         if (std::abs(compression[i]) <= band && in_contact[i] != earlier[i])
           {
-            set_status(i, earlier[i]);
+            change_status(i, earlier[i]);
             ++n_changed;
           }
     return Utilities::MPI::sum(n_changed,
@@ -130,19 +129,19 @@ namespace liftoff
 
 
   const std::vector<unsigned char> &
-  TensionlessWinklerFoundation::contact_status() const
+  TensionlessWinklerFoundation::status() const
   {
     return in_contact;
   }
 
 
   void
-  TensionlessWinklerFoundation::set_contact_status(
+  TensionlessWinklerFoundation::set_status(
     const std::vector<unsigned char> &status)
   {
     AssertDimension(status.size(), in_contact.size());
     for (unsigned int i = 0; i < status.size(); ++i)
-      set_status(i, status[i]);
+      change_status(i, status[i]);
   }
 
 
@@ -199,13 +198,6 @@ namespace liftoff
   }
 
 
-  bool
-  TensionlessWinklerFoundation::has_status() const
-  {
-    return true;
-  }
-
-
   void
   TensionlessWinklerFoundation::add_force(const TermState &state,
                                           LA::MPI::Vector &force) const
@@ -228,8 +220,8 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::add_gap_load(const SpringPressure &pressure,
-                                             LA::MPI::Vector      &vector) const
+  TensionlessWinklerFoundation::add_status_load(const SpringPressure &pressure,
+                                                LA::MPI::Vector &vector) const
   {
     Assert(contact_law.has_gap() && pressure.gap.size() == in_contact.size(),
            ExcInternalError());
@@ -242,6 +234,30 @@ namespace liftoff
                  pressure.gap.begin() + (c + 1) * n_q);
       },
       vector);
+  }
+
+
+  bool
+  TensionlessWinklerFoundation::has_status_load() const
+  {
+    return contact_law.has_gap();
+  }
+
+
+  double
+  TensionlessWinklerFoundation::status_load_work(
+    const LA::MPI::Vector &ghosted_u) const
+  {
+    return foundation_diagnostics.gap_work(ghosted_u);
+  }
+
+
+  void
+  TensionlessWinklerFoundation::unite(const Status &status, Status &all) const
+  {
+    AssertDimension(status.size(), all.size());
+    for (unsigned int i = 0; i < all.size(); ++i)
+      all[i] |= status[i];
   }
 
 

@@ -112,24 +112,13 @@ namespace liftoff
                     || (!slabs.joints()[j].tied
                         && (stiffness_of(shear_stiffness, j) > 0
                             || stiffness_of(rotational_stiffness, j) > 0));
-    for (const auto &cell : disc.locally_owned_cells())
-      for (const unsigned int f : cell->face_indices())
-        {
-          if (!cell->face(f)->at_boundary())
-            continue;
-          const Joint *joint = slabs.joint_of(cell->face(f)->boundary_id());
-          if (joint == nullptr || joint->tied)
-            continue;
-          // Each piece of the joint once: from the finer side, from the
-          // lower one where both are alike.
-          const auto neighbor = cell->periodic_neighbor(f);
-          if (neighbor->has_children()
-              || (!cell->periodic_neighbor_is_coarser(f)
-                  && cell->face(f)->boundary_id() == joint->upper_side))
-            continue;
-          segments.push_back(
-            make_segment(cell, f, joint - slabs.joints().data()));
-        }
+    slabs.for_each_joint_face(
+      disc.dof_handler,
+      [&](const DoFHandler<2>::active_cell_iterator &cell,
+          const unsigned int                         face,
+          const unsigned int                         joint) {
+        segments.push_back(make_segment(cell, face, joint));
+      });
     // Free joints keep their segments for transfer() only.
     if (has_springs)
       assemble();

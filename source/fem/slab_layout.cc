@@ -285,4 +285,31 @@ namespace liftoff
                                                joint.normal_axis,
                                                constraints);
   }
+
+
+  void
+  SlabLayout::for_each_joint_face(
+    const DoFHandler<2>                           &dof_handler,
+    const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+                             const unsigned int,
+                             const unsigned int)> &f) const
+  {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int face : cell->face_indices())
+          {
+            if (!cell->face(face)->at_boundary())
+              continue;
+            const Joint *joint = joint_of(cell->face(face)->boundary_id());
+            if (joint == nullptr || joint->tied)
+              continue;
+            // Each piece of the joint once: from the finer side, from the
+            // lower one where both are alike.
+            if (cell->periodic_neighbor(face)->has_children()
+                || (!cell->periodic_neighbor_is_coarser(face)
+                    && cell->face(face)->boundary_id() == joint->upper_side))
+              continue;
+            f(cell, face, joint - joint_list.data());
+          }
+  }
 } // namespace liftoff

@@ -33,6 +33,7 @@ namespace liftoff
     MindlinPlate::declare_parameters(prm);
     Discretization::declare_parameters(prm);
     JointSprings::declare_parameters(prm);
+    JointDowels::declare_parameters(prm);
     MeshRefinement::declare_parameters(prm);
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
@@ -67,6 +68,10 @@ namespace liftoff
     mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
     joint_springs.parse_parameters(prm);
+    joint_dowels.parse_parameters(prm);
+    joint_dowels.place_on(discretization.geometry());
+    if (!joint_dowels.names().empty())
+      active_set.drive_also({&joint_dowels});
     loads.parse_parameters(prm);
     loads.use_plate(plate);
     newmark.parse_parameters(prm);
@@ -153,6 +158,8 @@ namespace liftoff
   SceneParts::system_terms()
   {
     // Only a plate of several slabs has joints to pass forces.
+    if (!joint_dowels.names().empty())
+      return {&plate_term, &foundation, &joint_springs, &joint_dowels};
     if (discretization.geometry().slabs().is_jointed())
       return {&plate_term, &foundation, &joint_springs};
     return {&plate_term, &foundation};

@@ -75,6 +75,7 @@ namespace liftoff
       for (Output *output : outputs)
         output->write_in_units_of(units);
       deflectometer_sensors.add_columns_to(time_history);
+      dowel_forces.add_columns_to(time_history);
       checkpoint.parse_parameters(scene);
       check_scene();
     });
@@ -304,6 +305,7 @@ namespace liftoff
                         parts.discretization,
                         parts.foundation,
                         parts.joint_springs,
+                        parts.joint_dowels,
                         iteration,
                         resultants,
                         parts.foundation.diagnostics().contact_area_fraction()};
@@ -421,8 +423,8 @@ namespace liftoff
     unsigned int r = 0;
     for (; r < parts.mesh_refinement.n_initial_refinements(); ++r)
       {
-        parts.foundation.update_contact_status(
-          stepper->state().ghosted_u, parts.foundation.law().pressure());
+        parts.active_set.update_status(stepper->state().ghosted_u,
+                                       parts.foundation.law().pressure());
         if (!adapt_mesh())
           break;
         // The fields themselves, not their interpolant on the old mesh.
@@ -563,10 +565,8 @@ namespace liftoff
                        parts.energy_check,
                        parts.is_dynamic(),
                        parts.newmark.beta);
-    time_history.add_to(summary);
-    envelopes.add_to(summary);
-    deflectometer_sensors.add_to(summary);
-    small_deflection.add_to(summary);
+    for (const Output *output : outputs)
+      output->add_to(summary);
     summary.add_linear_solver(parts.active_set.linear_solver());
     summary.add_resources(timer, wall_clock.wall_time(), mpi_communicator);
     return summary;

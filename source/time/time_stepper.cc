@@ -446,7 +446,7 @@ namespace liftoff
     // equilibrium then gains the gap's term (gap_work()).
     state_.work =
       0.5 * discretization.geometry().n_symmetry_copies()
-      * (load * state_.u + foundation.diagnostics().gap_work(state_.ghosted_u));
+      * (load * state_.u + active_set.status_load_work(state_.ghosted_u));
     state_.energies = energies();
     require_finite_state("an energy", {}, state_.energies.values(), load);
     check_static_equilibrium(load);
@@ -586,7 +586,7 @@ namespace liftoff
                            const std::string &what)
   {
     const SpringPressure pressure = pressure_at_state_velocity();
-    foundation.update_contact_status(state_.ghosted_u, pressure);
+    active_set.update_status(state_.ghosted_u, pressure);
     assemble_loads(step, tau, state_.load);
     force_balance(state_.load, pressure, state_.balance);
     if (foundation.law().has_damping())
@@ -781,8 +781,7 @@ namespace liftoff
     for (const SystemTerm *term : terms)
       term->add_force({state_.u, state_.ghosted_u, scratch}, balance);
     balance.sadd(-1.0, 1.0, load);
-    if (foundation.law().has_gap())
-      foundation.add_gap_load(pressure, balance);
+    active_set.add_status_loads(pressure, balance);
   }
 
 

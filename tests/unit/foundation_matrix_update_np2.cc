@@ -123,8 +123,7 @@ namespace
         discretization.constraints.distribute(u);
         ghosted_u = u;
         n_flipped +=
-          foundation.update_contact_status(ghosted_u,
-                                           foundation.law().pressure());
+          foundation.update_status(ghosted_u, foundation.law().pressure());
         // Update only every other round, so some points flip twice between
         // two updates.
         if (round % 2 == 1)
@@ -243,7 +242,7 @@ namespace
     damped.setup(discretization);
     damped.add_to_matrix({0.0, kappa}, held); // all points in contact
     damped.setup(discretization);             // the same mesh again
-    const std::vector<unsigned char> all_in = damped.contact_status();
+    const std::vector<unsigned char> all_in = damped.status();
 
     liftoff::LA::MPI::Vector u, ghosted_u;
     discretization.reinit_vector(u);
@@ -254,12 +253,12 @@ namespace
                              u);
     discretization.constraints.distribute(u);
     ghosted_u = u;
-    damped.update_contact_status(ghosted_u, damped.law().pressure());
+    damped.update_status(ghosted_u, damped.law().pressure());
     checks.within("dashpots: points updated",
                   double(damped.update_matrix(kappa, held)),
                   100,
                   1e9);
-    reference.set_contact_status(damped.contact_status());
+    reference.set_status(damped.status());
     reference.add_to_matrix({}, fresh);
     checks.less("dashpots: matrix held with kappa vs springs Gamma + c kappa "
                 "(relative Frobenius norm)",

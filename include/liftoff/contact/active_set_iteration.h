@@ -5,6 +5,7 @@
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/contact/active_set_result.h>
+#include <liftoff/contact/status_term.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/solver/ghost_update.h>
@@ -20,7 +21,10 @@ namespace liftoff
   /**
    * The iteration of eq. (3.9): solve (B + K_f(S)) u = b with the foundation
    * stiffness of the current contact set S, rebuild S from u at the Gauss
-   * points, repeat until S no longer changes. B (plate stiffness plus the
+   * points, repeat until S no longer changes. S stands for the statuses of
+   * all the system's terms that have one (StatusTerm: the foundation, and
+   * the dowels of a jointed plate), driven together: one solve, then each
+   * term's status from it, until none changes. B (plate stiffness plus the
    * time integrator's mass term) is fixed for a mesh and time step; the
    * system matrix B + K_f(S) is built and factorised once and afterwards
    * only the springs of the Gauss points whose status flipped are added or
@@ -54,6 +58,24 @@ namespace liftoff
     ActiveSetIteration(const Discretization         &discretization,
                        TensionlessWinklerFoundation &foundation,
                        SectionTimer                 &timer);
+
+    /// The terms with a status it drives besides the foundation (before
+    /// the first set_base_matrix()).
+    void
+    drive_also(const std::vector<StatusTerm *> &others);
+
+    /// Every term's status from `ghosted_u` (a state, not a solve).
+    void
+    update_status(const LA::MPI::Vector &ghosted_u,
+                  const SpringPressure  &pressure);
+    /// vector += the terms' loads of their statuses (their forces' parts
+    /// that do not depend on u).
+    void
+    add_status_loads(const SpringPressure &pressure,
+                     LA::MPI::Vector      &vector) const;
+    /// The sum of the terms' StatusTerm::status_load_work().
+    double
+    status_load_work(const LA::MPI::Vector &ghosted_u) const;
 
     /// Writes the values of B into a matrix of the plate's pattern
     /// (Discretization::reinit_matrix), replacing all it held.
@@ -127,9 +149,13 @@ namespace liftoff
     refinement_change(const LA::MPI::Vector &x, const System &system);
 
   private:
+    using Statuses = std::vector<StatusTerm::Status>;
+
     const Discretization         &discretization;
     TensionlessWinklerFoundation &foundation;
-    SectionTimer                 &timer;
+    /// The foundation first.
+    std::vector<StatusTerm *> terms;
+    SectionTimer             &timer;
     /// B + K_f(S), kept in step with S.
     LA::MPI::SparseMatrix matrix;
     BaseMatrix            write_base;
@@ -137,17 +163,17 @@ namespace liftoff
     double velocity_factor = 0;
     /// The S of the matrix the solver's factor was built from, which
     /// B + K_f(S) gives again bit for bit (by rebuild_matrix()).
-    std::vector<unsigned char> factorised_status;
+    Statuses factorised_status;
     /// Declared after `matrix`: a factorisation must die before its matrix.
     LinearSolver solver;
     /// rhs + f_g(S) when the foundation has a gap.
-    LA::MPI::Vector rhs_with_gap;
+    LA::MPI::Vector rhs_with_loads;
     /// The vector the solver multiplies by the change of the matrix since
     /// its factorisation or last solve, with its constraints applied, and
     /// with ghosts.
     LA::MPI::Vector change_owned, change_source;
     /// The S of the matrix at the last solve.
-    std::vector<unsigned char> solved_status;
+    Statuses solved_status;
     /// The next solve may continue the last one (LinearSolver::solve()).
     bool continues_solve = false;
 
@@ -164,10 +190,10 @@ namespace liftoff
                        const Since            since) override;
 
     /// The right-hand side of the system for the current set: its rhs,
-    /// plus the springs' push on the gap f_g(S) if the foundation has one
-    /// (the reaction is affine then).
+    /// plus the terms' status loads (the springs' push on a gap f_g(S),
+    /// loose dowels' offsets), with which the reaction is affine.
     const LA::MPI::Vector &
-    with_gap_load(const System &system);
+    with_status_loads(const System &system);
     /// The solution's copies to its ghosted form, with one import kept.
     GhostUpdate ghosts;
 
@@ -207,8 +233,7 @@ namespace liftoff
     /// band differs from `start_set`, the set the step began with (those
     /// are restored). Collective.
     bool
-    has_settled(const unsigned long               n_changed,
-                const std::vector<unsigned char> &start_set);
+    has_settled(const unsigned long n_changed, const Statuses &start_set);
     /// Give the foundation the set the contact rule gives the prediction
     /// (ghosted_solution is set to it).
     void
@@ -217,14 +242,26 @@ namespace liftoff
                           LA::MPI::Vector       &ghosted_solution);
     /// Solve with the union of the sets visited[first], ... (a cycle).
     void
-    solve_with_union(const std::vector<std::vector<unsigned char>> &visited,
-                     const unsigned int                             first,
-                     const System                                  &system,
-                     LA::MPI::Vector                               &solution,
-                     LA::MPI::Vector &ghosted_solution);
-    /// Index of the set in `visited` equal to the foundation's current set
+    solve_with_union(const std::vector<Statuses> &visited,
+                     const unsigned int           first,
+                     const System                &system,
+                     LA::MPI::Vector             &solution,
+                     LA::MPI::Vector             &ghosted_solution);
+    /// Index of the statuses in `visited` equal to the terms' current ones
     /// on every rank, or visited.size().
     unsigned int
-    find_in(const std::vector<std::vector<unsigned char>> &visited) const;
+    find_in(const std::vector<Statuses> &visited) const;
+    /// The terms' statuses, and those their matrix entries hold.
+    Statuses
+    statuses() const;
+    Statuses
+    statuses_in_matrix() const;
+    /// The number of statuses changed (over all ranks) by `change` applied
+    /// to each term.
+    unsigned long
+    count_changes(const std::function<unsigned long(StatusTerm &)> &change);
+    /// Whether some term has a load of its status.
+    bool
+    has_status_load() const;
   };
 } // namespace liftoff

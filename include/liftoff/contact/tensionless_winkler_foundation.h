@@ -9,6 +9,7 @@
 #include <liftoff/contact/foundation_diagnostics.h>
 #include <liftoff/contact/foundation_points.h>
 #include <liftoff/contact/spring_term.h>
+#include <liftoff/contact/status_term.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/system_term.h>
 
@@ -32,7 +33,7 @@ namespace liftoff
    * pre-compression) shifts the springs: they act where w > g, with the
    * reaction -Gamma (w - g). The reaction is then affine in u,
    * K_f(S) u - f_g(S): the matrix is that of g = 0, and f_g(S), the springs'
-   * push on the gap, joins the right-hand side (add_gap_load()). A scene
+   * push on the gap, joins the right-hand side (add_status_load()). A scene
    * without a gap (g = 0 at every Gauss point) takes none of these paths.
    *
    * Dashpots c per unit area beside the springs make the pressure
@@ -62,10 +63,10 @@ namespace liftoff
    * (FoundationDiagnostics). It owns the contact status, the one state
    * that all of them read.
    *
-   * It is a term of the plate's system (SystemTerm) with a status: the
+   * It is a term of the plate's system with a status (StatusTerm): the
    * active-set iteration adds and updates its matrix entries.
    */
-  class TensionlessWinklerFoundation : public SystemTerm
+  class TensionlessWinklerFoundation : public StatusTerm
   {
   public:
     TensionlessWinklerFoundation();
@@ -83,9 +84,6 @@ namespace liftoff
     void
     setup(const Discretization &discretization) override;
 
-    /// Its matrix is that of the contact status (true).
-    bool
-    has_status() const override;
     /// Add the foundation stiffness K_f of the current status, with the
     /// springs' stiffness Gamma + c kappa (kappa = `factors.velocity`: 0
     /// in a static solve, gamma / (beta dt) in a time step), to `matrix`,
@@ -122,57 +120,63 @@ namespace liftoff
     /// |w_h - e|. Returns the number of points (over all ranks) whose
     /// status changed.
     unsigned long
-    update_contact_status(const LA::MPI::Vector &ghosted_solution,
-                          const SpringPressure  &pressure);
-
+    update_status(const LA::MPI::Vector &ghosted_solution,
+                  const SpringPressure  &pressure) override;
     /// Give the points whose w_h lay inside the round-off band at the last
-    /// update_contact_status() the status they have in `earlier`: inside
-    /// the band the rule keeps a status, and this says which. Returns the
-    /// number of points (over all ranks) whose status changed.
+    /// update_status() the status they have in `earlier`: inside the band
+    /// the rule keeps a status, and this says which.
     unsigned long
-    keep_status_in_band(const std::vector<unsigned char> &earlier);
-
+    keep_status_in_band(const Status &earlier) override;
     /// The status of the locally owned Gauss points (1: in contact), and
-    /// its replacement; the layout is this class's own, the same between
-    /// calls on one mesh.
-    const std::vector<unsigned char> &
-    contact_status() const;
+    /// its replacement.
+    const Status &
+    status() const override;
     void
-    set_contact_status(const std::vector<unsigned char> &status);
-
-    /// Add the K_f of `status` (a contact_status() of this mesh) to
+    set_status(const Status &status) override;
+    /// A point is in contact in the union if it is in any.
+    void
+    unite(const Status &status, Status &all) const override;
+    /// Add the K_f of `status` (a status() of this mesh) to
     /// `matrix`, which then holds no status that update_matrix() knows of:
     /// to build again a matrix that was built from that status.
     void
-    add_to_matrix(const std::vector<unsigned char> &status,
-                  const double                      velocity_factor,
-                  LA::MPI::SparseMatrix            &matrix) const;
+    add_to_matrix(const Status          &status,
+                  const double           velocity_factor,
+                  LA::MPI::SparseMatrix &matrix) const override;
     /// The status whose K_f the matrix of add_to_matrix() and
     /// update_matrix() holds.
-    const std::vector<unsigned char> &
-    status_in_matrix() const;
+    const Status &
+    status_in_matrix() const override;
     /// Bring the K_f held in `matrix` (by add_to_matrix() with the same
     /// velocity_factor) up to date with the status: only the points that
     /// changed are touched. Returns the number of points updated over all
     /// ranks (0: `matrix` is unchanged).
     unsigned long
-    update_matrix(const double velocity_factor, LA::MPI::SparseMatrix &matrix);
+    update_matrix(const double           velocity_factor,
+                  LA::MPI::SparseMatrix &matrix) override;
     /// dst += (K_f(status_in_matrix()) - K_f(reference)) src: the product
     /// with the change of the matrix since it held the status `reference`,
     /// from the cells whose status differs. `ghosted_src` must satisfy the
     /// constraints (GhostUpdate::distribute()); `dst` has no ghosts.
     /// Collective.
     void
-    add_change_product(const std::vector<unsigned char> &reference,
-                       const double                      velocity_factor,
-                       const LA::MPI::Vector            &ghosted_src,
-                       LA::MPI::Vector                  &dst) const;
+    add_change_product(const Status          &reference,
+                       const double           velocity_factor,
+                       const LA::MPI::Vector &ghosted_src,
+                       LA::MPI::Vector       &dst) const override;
 
+    /// Whether the springs have a gap (law().has_gap()).
+    bool
+    has_status_load() const override;
     /// vector += f_g(status) = k int_S e phi_i, the part of the
     /// foundation's force that does not depend on u, for the pressure
-    /// k (w - e). Call only if law().has_gap().
+    /// k (w - e). Call only if has_status_load().
     void
-    add_gap_load(const SpringPressure &pressure, LA::MPI::Vector &vector) const;
+    add_status_load(const SpringPressure &pressure,
+                    LA::MPI::Vector      &vector) const override;
+    /// FoundationDiagnostics::gap_work().
+    double
+    status_load_work(const LA::MPI::Vector &ghosted_u) const override;
     /// vector += the force whose work the bed takes without storing it:
     /// the dashpots' c int_S v phi_i, and int_S ([in contact] Gamma (w - g)
     /// - p_s(w - g)) phi_i, the springs' force the solver applies less the
@@ -208,6 +212,6 @@ namespace liftoff
 
     /// Record a status change of point i for update_matrix().
     void
-    set_status(const unsigned int i, const unsigned char status);
+    change_status(const unsigned int i, const unsigned char status);
   };
 } // namespace liftoff

@@ -7,6 +7,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,16 @@ namespace liftoff
     add_couplings(const DoFHandler<2>             &dof_handler,
                   const AffineConstraints<double> &constraints,
                   DynamicSparsityPattern          &pattern) const;
+    /// f(cell, face, joint) once for each piece of the joints that are not
+    /// tied, from the locally owned cell on its finer side (the lower one
+    /// where both are alike): each piece of a joint is visited on one rank
+    /// exactly once, with the cell opposite its periodic neighbour.
+    void
+    for_each_joint_face(
+      const DoFHandler<2>                           &dof_handler,
+      const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+                               const unsigned int,
+                               const unsigned int)> &f) const;
     /// The tied joints' dofs identified across them.
     void
     tie(const DoFHandler<2> &dof_handler, AffineConstraints<double> &c) const;

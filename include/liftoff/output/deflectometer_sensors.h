@@ -59,7 +59,7 @@ namespace liftoff
 
     /// The basin: each sensor's peak deflection and its time.
     void
-    add_to(RunSummary &summary) const;
+    add_to(RunSummary &summary) const override;
     /// The peaks (solver's units), in the order of the offsets.
     const std::vector<double> &
     peaks() const;

@@ -78,7 +78,7 @@ namespace liftoff
 
     /// extremes() as a section of the summary (collective).
     void
-    add_to(RunSummary &summary) const;
+    add_to(RunSummary &summary) const override;
 
   private:
     /// One envelope: a quantity's largest value (or, for a smallest one,

@@ -11,8 +11,10 @@ namespace liftoff
   // StepData holds references only: the outputs include what they use.
   class Discretization;
   class JointSprings;
+  class JointDowels;
   class PhysicalUnits;
   class ResultantSweep;
+  class RunSummary;
   class TensionlessWinklerFoundation;
   struct PlateState;
 
@@ -26,6 +28,7 @@ namespace liftoff
     const TensionlessWinklerFoundation &foundation;
     /// What the joints between slabs pass (a plate of one slab has none).
     const JointSprings    &joints;
+    const JointDowels     &dowels;
     const ActiveSetResult &iteration;
     /// The resultants at the output points, computed by the first output
     /// that reads them.
@@ -47,6 +50,11 @@ namespace liftoff
   {
   public:
     virtual ~Output() = default;
+
+    /// Its lines in the run's summary, if it has any.
+    virtual void
+    add_to(RunSummary &) const
+    {}
 
     /// Write in the scene's units (an SI scene's outputs in SI, with the
     /// units in the headers); an output that does not convert keeps the

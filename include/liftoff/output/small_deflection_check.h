@@ -57,7 +57,7 @@ namespace liftoff
 
     /// The largest |w| / H as an entry of the summary (SI scenes only).
     void
-    add_to(RunSummary &summary) const;
+    add_to(RunSummary &summary) const override;
 
   private:
     bool is_checked = false;

@@ -107,7 +107,7 @@ namespace liftoff
     /// whose set cycled, over the rows that solved something (not tau = 0
     /// of a dynamic run), as lines of the summary.
     void
-    add_to(RunSummary &summary) const;
+    add_to(RunSummary &summary) const override;
 
   private:
     /// The history's column names of the probes, "w(x;y)", with enough

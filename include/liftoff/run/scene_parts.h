@@ -8,6 +8,7 @@
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/initial_conditions.h>
+#include <liftoff/fem/joint_dowels.h>
 #include <liftoff/fem/joint_springs.h>
 #include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/fem/mindlin_plate.h>
@@ -88,6 +89,7 @@ namespace liftoff
     PlateTerm                    plate_term{matrices, plate};
     TensionlessWinklerFoundation foundation;
     JointSprings                 joint_springs;
+    JointDowels                  joint_dowels;
     LoadSet                      loads;
     NewmarkIntegrator            newmark;
     EnergyCheck                  energy_check;

@@ -9,6 +9,7 @@
 #include <liftoff/base/section_timer.h>
 
 #include <liftoff/output/deflectometer_sensors.h>
+#include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/field_output.h>
 #include <liftoff/output/output.h>
@@ -137,14 +138,16 @@ namespace liftoff
     Envelopes            envelopes;
     SmallDeflectionCheck small_deflection;
     DeflectometerSensors deflectometer_sensors;
+    DowelForces          dowel_forces{parts.joint_dowels};
     ProgressLine         progress_line;
     /// What is written after each step, in this order.
     std::vector<Output *> outputs{&time_history,
                                   &profile_output,
                                   &field_output,
                                   &envelopes,
-                                  &small_deflection,
-                                  &deflectometer_sensors};
+                                  &deflectometer_sensors,
+                                  &dowel_forces,
+                                  &small_deflection};
     Checkpoint            checkpoint;
 
     int         stopped_by_signal = 0;

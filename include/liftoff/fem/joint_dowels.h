@@ -1,0 +1,206 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <liftoff/contact/status_term.h>
+
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  using namespace dealii;
+
+  class SlabLayout;
+  class PlateGeometry;
+
+  /**
+   * A steel dowel bar across an open joint, embedded in the concrete of
+   * both slabs: Friberg's beam on an elastic foundation of modulus K (the
+   * modulus of dowel support) on each side, the bare bar across the
+   * opening z. A shear force P across the joint moves one slab against the
+   * other by Delta = P / C,
+   *
+   *   1 / C = (2 + beta z) / (2 beta^3 E I) + z (1 + beta z) / (2 beta^2 E I)
+   *           + z^3 / (12 E I) + z / (G A_s),
+   *
+   * beta = (K d / (4 E I))^(1/4): twice the bar's deflection at the face
+   * of the concrete, the rotation of the faces carried across the opening,
+   * the bar's bending and its shear (A_s = 0.9 A) across it
+   * (doc/model.md). The largest bearing stress on the concrete is K times
+   * the deflection at the face, K P (2 + beta z) / (4 beta^3 E I).
+   */
+  struct DowelBar
+  {
+    double diameter        = 0;
+    double modulus         = 0;
+    double poisson_ratio   = 0.3;
+    double support_modulus = 0;
+    double opening         = 0;
+
+    /// C, the force per unit relative deflection of the two slabs.
+    double
+    stiffness() const;
+    /// The bearing stress on the concrete at the face of the joint under
+    /// a force P.
+    double
+    bearing_stress(const double force) const;
+  };
+
+
+  /**
+   * Dowels at points along the joints between slabs: each a spring of
+   * stiffness C between the two slabs' w at its point, with a looseness g:
+   * no force while the jump [w] = w_lower - w_upper is within g, and
+   * F = C ([w] - g sign [w]) beyond. Energy 1/2 C (|[w]| - g)^2 where
+   * |[w]| > g. A dowel's status is slack, engaged with [w] > g, or engaged
+   * with [w] < -g; within a status its force is affine in u, and the
+   * active-set iteration drives it with the foundation's contact set
+   * (StatusTerm). With g = 0 a dowel is always engaged: a linear spring.
+   *
+   * A dowel belongs to the rank that owns the cell on the finer side of
+   * the joint where it sits (the side JointSprings integrates on), and is
+   * evaluated there and at the same point of the cell opposite.
+   */
+  class JointDowels : public StatusTerm
+  {
+  public:
+    /// Subsection `Slabs/Dowels`.
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+    /// Places the dowels on the joints of `geometry`'s slabs, refusing a
+    /// joint that is not there or is tied, a position off the joint, and a
+    /// model with symmetry planes.
+    void
+    place_on(const PlateGeometry &geometry);
+
+    /// The dowels' names (none: the scene has no dowels), dowel_<joint>_<k> (k
+    /// from 1 along the joint), in the order of forces().
+    const std::vector<std::string> &
+    names() const;
+    /// The stiffness C of each dowel.
+    double
+    stiffness() const;
+    /// The bar, if the stiffness comes from it (Stiffness = 0).
+    const DowelBar *
+    bar() const;
+
+    void
+    setup(const Discretization &discretization) override;
+    void
+    add_to_matrix(const MatrixFactors   &factors,
+                  LA::MPI::SparseMatrix &matrix) override;
+    void
+    add_force(const TermState &state, LA::MPI::Vector &force) const override;
+    double
+    energy(const TermState &state) const override;
+
+    unsigned long
+    update_status(const LA::MPI::Vector &ghosted_u,
+                  const SpringPressure  &pressure) override;
+    unsigned long
+    keep_status_in_band(const Status &earlier) override;
+    const Status &
+    status() const override;
+    void
+    set_status(const Status &status) override;
+    /// A dowel engaged in any status of the union is engaged; engaged both
+    /// ways, it acts as a spring without looseness.
+    void
+    unite(const Status &status, Status &all) const override;
+    const Status &
+    status_in_matrix() const override;
+    void
+    add_to_matrix(const Status          &status,
+                  const double           velocity_factor,
+                  LA::MPI::SparseMatrix &matrix) const override;
+    unsigned long
+    update_matrix(const double           velocity_factor,
+                  LA::MPI::SparseMatrix &matrix) override;
+    void
+    add_change_product(const Status          &reference,
+                       const double           velocity_factor,
+                       const LA::MPI::Vector &ghosted_src,
+                       LA::MPI::Vector       &dst) const override;
+    bool
+    has_status_load() const override;
+    void
+    add_status_load(const SpringPressure &pressure,
+                    LA::MPI::Vector      &vector) const override;
+    double
+    status_load_work(const LA::MPI::Vector &ghosted_u) const override;
+
+    /// Each dowel's force F (from the lower slab to the upper one) at
+    /// ghosted_u with the current status, on every rank (collective).
+    std::vector<double>
+    forces(const LA::MPI::Vector &ghosted_u) const;
+
+    void
+    save(OutputArchive &archive) const override;
+    void
+    load(InputArchive &archive) override;
+
+  private:
+    /// The statuses: engaged with the lower slab's w ahead by more than
+    /// g, or the upper's; `both`, a spring without looseness (g = 0, or
+    /// the union of a cycle).
+    enum : unsigned char
+    {
+      slack = 0,
+      lower = 1,
+      upper = 2,
+      both  = 3
+    };
+
+    std::vector<std::string> joint_names;
+    std::vector<double>      positions;
+    double                   spacing         = 0;
+    double                   edge_distance   = 0;
+    double                   given_stiffness = 0;
+    DowelBar                 dowel_bar;
+    double                   looseness = 0;
+
+    /// Per dowel of the plate: its joint, and its point.
+    std::vector<unsigned int> joint_of;
+    std::vector<Point<2>>     locations;
+    std::vector<std::string>  dowel_names;
+
+    /// A dowel of this rank: its number, the dofs of the two cells, and
+    /// [w] at its point as their coefficients.
+    struct Local
+    {
+      unsigned int                         index;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  jump;
+    };
+    std::vector<Local>    local;
+    Status                current, in_matrix;
+    std::vector<double>   last_jump;
+    double                band           = 0;
+    const Discretization *discretization = nullptr;
+
+    /// [w] of local dowel i at ghosted_u.
+    double
+    jump_of(const unsigned int i, const LA::MPI::Vector &ghosted_u) const;
+    /// The sign of the looseness in the force of a status: F = C ([w] - g s).
+    double
+    offset_sign(const unsigned char status) const;
+    /// matrix += factor C b b^T of local dowel i (no compress).
+    void
+    add_dowel(const unsigned int     i,
+              const double           factor,
+              LA::MPI::SparseMatrix &matrix) const;
+    /// vector += factor b of local dowel i (no compress).
+    void
+    add_vector(const unsigned int i,
+               const double       factor,
+               LA::MPI::Vector   &vector) const;
+    /// The dowel positions along a joint of length `length`.
+    std::vector<double>
+    positions_along(const double length) const;
+  };
+} // namespace liftoff

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <liftoff/base/physical_units.h>
+#include <liftoff/output/output.h>
+
+#include <string>
+#include <vector>
+
+namespace liftoff
+{
+  class TimeHistory;
+
+  /**
+   * The dowels' forces (Slabs/Dowels): each dowel's force in history.csv
+   * (columns dowel_<joint>_<k>, from the lower slab to the upper one), and
+   * in the summary the dowels' stiffness and the largest force of the run
+   * with its dowel and time, and, for bars of Friberg's analysis, the
+   * bearing stress on the concrete under it. A scene without dowels writes
+   * none of these.
+   */
+  class DowelForces : public Output
+  {
+  public:
+    explicit DowelForces(const JointDowels &dowels);
+
+    void
+    write_in_units_of(const PhysicalUnits &scene_units) override;
+    /// Adds the dowels' columns to `history`.
+    void
+    add_columns_to(TimeHistory &history) const;
+    void
+    setup(const Discretization &discretization,
+          const std::string    &directory) override;
+    void
+    mesh_changed(const Discretization &) override
+    {}
+    void
+    execute(const StepData &step) override;
+    void
+    flush() override
+    {}
+    void
+    save(OutputArchive &archive) const override;
+    void
+    load(InputArchive &archive) override;
+    void
+    add_to(RunSummary &summary) const override;
+
+  private:
+    const JointDowels &dowels;
+    PhysicalUnits      units;
+    /// The largest |force| so far (solver's units), its dowel and time.
+    double       largest      = 0;
+    unsigned int largest_of   = 0;
+    double       largest_time = 0;
+  };
+} // namespace liftoff

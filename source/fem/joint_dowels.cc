@@ -1,0 +1,615 @@
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
+#include <liftoff/fem/discretization.h>
+#include <liftoff/fem/joint_dowels.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace liftoff
+{
+  double
+  DowelBar::stiffness() const
+  {
+    const double pi   = numbers::PI;
+    const double EI   = modulus * pi * std::pow(diameter, 4) / 64;
+    const double beta = std::pow(support_modulus * diameter / (4 * EI), 0.25);
+    const double z    = opening;
+    const double shear =
+      modulus / (2 * (1 + poisson_ratio)) * 0.9 * pi * diameter * diameter / 4;
+    const double flexibility = (2 + beta * z) / (2 * std::pow(beta, 3) * EI)
+                               + z * (1 + beta * z) / (2 * beta * beta * EI)
+                               + std::pow(z, 3) / (12 * EI) + z / shear;
+    return 1 / flexibility;
+  }
+
+
+  double
+  DowelBar::bearing_stress(const double force) const
+  {
+    const double EI   = modulus * numbers::PI * std::pow(diameter, 4) / 64;
+    const double beta = std::pow(support_modulus * diameter / (4 * EI), 0.25);
+    return support_modulus * std::abs(force) * (2 + beta * opening)
+           / (4 * std::pow(beta, 3) * EI);
+  }
+
+
+  void
+  JointDowels::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Slabs");
+    prm.enter_subsection("Dowels");
+    prm.declare_entry("Joints",
+                      "",
+                      Patterns::Anything(),
+                      "The joints with dowels, by name (x1, x2, ... across "
+                      "x; y1, ... across y), separated by commas; empty: "
+                      "no dowels. A joint with dowels may also have "
+                      "Slabs/Shear stiffness; it may not be tied."
+                        + quantity("text"));
+    prm.declare_entry(
+      "Positions",
+      "",
+      Patterns::List(Patterns::Double(0.0), 0, 1000),
+      "The dowels' distances along each doweled joint from the plate's "
+      "edge where the joint begins (its end at the lower y for x1, ..., at "
+      "the lower x for y1, ...); empty: from Spacing."
+        + quantity("length"));
+    prm.declare_entry("Spacing",
+                      "0",
+                      Patterns::Double(0.0),
+                      "The distance between neighbouring dowels, used when "
+                      "Positions is empty: dowels from Edge distance to the "
+                      "length of the joint less Edge distance."
+                        + quantity("length"));
+    prm.declare_entry("Edge distance",
+                      "0",
+                      Patterns::Double(0.0),
+                      "The distance of the first dowel from the plate's edge "
+                      "(with Spacing); 0: half the spacing."
+                        + quantity("length"));
+    prm.declare_entry(
+      "Stiffness",
+      "0",
+      Patterns::Double(0.0),
+      "C, the force a dowel passes per unit jump of w across the joint (N/m "
+      "in an SI scene); 0: from the bar by Friberg's analysis (Diameter, "
+      "Steel modulus, Steel Poisson ratio, Modulus of dowel support, Joint "
+      "opening; doc/model.md)."
+        + quantity("force per length"));
+    prm.declare_entry("Diameter",
+                      "0",
+                      Patterns::Double(0.0),
+                      "The bar's diameter d." + quantity("length"));
+    prm.declare_entry("Steel modulus",
+                      "0",
+                      Patterns::Double(0.0),
+                      "The bar's Young's modulus E_d." + quantity("pressure"));
+    prm.declare_entry("Steel Poisson ratio",
+                      "0.3",
+                      Patterns::Double(0.0, 0.5),
+                      "The bar's Poisson ratio, for its shear modulus."
+                        + quantity("number"));
+    prm.declare_entry("Modulus of dowel support",
+                      "0",
+                      Patterns::Double(0.0),
+                      "K, the concrete's reaction per unit area of the bar's "
+                      "projection per unit deflection of the bar (N/m^3 in "
+                      "an SI scene; 0.8 to 1.5e12 for concrete)."
+                        + quantity("pressure per length"));
+    prm.declare_entry("Joint opening",
+                      "0",
+                      Patterns::Double(0.0),
+                      "z, the width of the open joint the bars span."
+                        + quantity("length"));
+    prm.declare_entry(
+      "Looseness",
+      "0",
+      Patterns::Double(0.0),
+      "g, the play of a dowel in its hole: no force while |w_lower - "
+      "w_upper| <= g, the force C (|[w]| - g) beyond (a second tensionless "
+      "law, in the same active-set iteration as the foundation)."
+        + quantity("deflection"));
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+  void
+  JointDowels::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Slabs");
+    prm.enter_subsection("Dowels");
+    const std::string joints_text = prm.get("Joints");
+    joint_names                   = Utilities::split_string_list(joints_text);
+    joint_names.erase(std::remove(joint_names.begin(), joint_names.end(), ""),
+                      joint_names.end());
+    positions.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Positions")))
+      positions.push_back(Utilities::string_to_double(item));
+    spacing                   = prm.get_double("Spacing");
+    edge_distance             = prm.get_double("Edge distance");
+    given_stiffness           = prm.get_double("Stiffness");
+    dowel_bar.diameter        = prm.get_double("Diameter");
+    dowel_bar.modulus         = prm.get_double("Steel modulus");
+    dowel_bar.poisson_ratio   = prm.get_double("Steel Poisson ratio");
+    dowel_bar.support_modulus = prm.get_double("Modulus of dowel support");
+    dowel_bar.opening         = prm.get_double("Joint opening");
+    looseness                 = prm.get_double("Looseness");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    if (joint_names.empty())
+      return;
+    AssertThrow(!positions.empty() || spacing > 0,
+                ExcMessage("Slabs/Dowels/Joints = " + joints_text
+                           + " has no dowels: give Slabs/Dowels/Positions or "
+                             "a Spacing > 0."));
+    AssertThrow(given_stiffness > 0
+                  || (dowel_bar.diameter > 0 && dowel_bar.modulus > 0
+                      && dowel_bar.support_modulus > 0),
+                ExcMessage("Slabs/Dowels: give the dowels' Stiffness > 0, or "
+                           "the bar's Diameter, Steel modulus and Modulus of "
+                           "dowel support (all > 0) to compute it."));
+    AssertThrow(std::isfinite(stiffness()) && stiffness() > 0,
+                ExcMessage("Slabs/Dowels: the bar gives the stiffness "
+                           + format_number(stiffness())
+                           + "; check Diameter, Steel modulus, Modulus of "
+                             "dowel support and Joint opening."));
+  }
+
+
+  double
+  JointDowels::stiffness() const
+  {
+    return given_stiffness > 0 ? given_stiffness : dowel_bar.stiffness();
+  }
+
+
+  const DowelBar *
+  JointDowels::bar() const
+  {
+    return given_stiffness > 0 ? nullptr : &dowel_bar;
+  }
+
+
+  const std::vector<std::string> &
+  JointDowels::names() const
+  {
+    return dowel_names;
+  }
+
+
+  std::vector<double>
+  JointDowels::positions_along(const double length) const
+  {
+    if (!positions.empty())
+      return positions;
+    const double        edge = edge_distance > 0 ? edge_distance : spacing / 2;
+    std::vector<double> along;
+    for (double d = edge; d <= length - edge + 1e-10 * length; d += spacing)
+      along.push_back(d);
+    return along;
+  }
+
+
+  void
+  JointDowels::place_on(const PlateGeometry &geometry)
+  {
+    joint_of.clear();
+    locations.clear();
+    dowel_names.clear();
+    if (joint_names.empty())
+      return;
+    AssertThrow(geometry.n_symmetry_copies() == 1,
+                ExcMessage("Slabs/Dowels/Joints: dowels need the full plate "
+                           "(Discretization/Symmetry = full)."));
+    const std::vector<Joint> &joints = geometry.slabs().joints();
+    std::string               known;
+    for (const Joint &joint : joints)
+      known += (known.empty() ? "" : ", ") + joint.name;
+    const auto [low, high] = geometry.plate_box().get_boundary_points();
+    for (const std::string &name : joint_names)
+      {
+        const auto joint =
+          std::find_if(joints.begin(), joints.end(), [&](const Joint &j) {
+            return j.name == name;
+          });
+        AssertThrow(joint != joints.end(),
+                    ExcMessage("Slabs/Dowels/Joints names " + name
+                               + ", which the plate does not have; its joints "
+                                 "are: "
+                               + (known.empty() ? "none" : known)
+                               + " (Slabs/Slabs along x and y)."));
+        AssertThrow(!joint->tied,
+                    ExcMessage("Slabs/Dowels/Joints names " + name
+                               + ", which Slabs/Tied joints ties: a tied "
+                                 "joint is monolithic and has no dowels."));
+        AssertThrow(
+          std::count(joint_names.begin(), joint_names.end(), name) == 1,
+          ExcMessage("Slabs/Dowels/Joints names " + name + " twice."));
+        const unsigned int        along  = 1 - joint->normal_axis;
+        const double              length = high[along] - low[along];
+        const std::vector<double> at     = positions_along(length);
+        AssertThrow(!at.empty(),
+                    ExcMessage("Slabs/Dowels: Spacing and Edge distance put "
+                               "no dowel on the joint "
+                               + name + ", which is " + format_number(length)
+                               + " long."));
+        for (unsigned int k = 0; k < at.size(); ++k)
+          {
+            AssertThrow(at[k] > 0 && at[k] < length,
+                        ExcMessage(
+                          "Slabs/Dowels: a dowel at " + format_number(at[k])
+                          + " from the edge is off the joint " + name
+                          + ", which is " + format_number(length) + " long."));
+            Point<2> p;
+            p[joint->normal_axis] = joint->position;
+            p[along]              = low[along] + at[k];
+            joint_of.push_back(joint - joints.begin());
+            locations.push_back(p);
+            dowel_names.push_back("dowel_" + name + "_"
+                                  + std::to_string(k + 1));
+          }
+      }
+  }
+
+
+  void
+  JointDowels::setup(const Discretization &disc)
+  {
+    discretization = &disc;
+    local.clear();
+    const SlabLayout       &slabs   = disc.geometry().slabs();
+    const FiniteElement<2> &fe      = disc.dof_handler.get_fe();
+    const Mapping<2>       &mapping = disc.mapping();
+    const unsigned int      n       = fe.n_dofs_per_cell();
+    // w's shape values of `cell` at the point p.
+    const auto w_at = [&](const DoFHandler<2>::active_cell_iterator &cell,
+                          const Point<2>                            &p) {
+      FEValues<2> values(mapping,
+                         fe,
+                         Quadrature<2>(
+                           mapping.transform_real_to_unit_cell(cell, p)),
+                         update_values);
+      values.reinit(cell);
+      std::vector<double> phi(n);
+      for (unsigned int i = 0; i < n; ++i)
+        phi[i] = values.shape_value_component(i, 0, 0);
+      return phi;
+    };
+    slabs.for_each_joint_face(
+      disc.dof_handler,
+      [&](const DoFHandler<2>::active_cell_iterator &cell,
+          const unsigned int                         face,
+          const unsigned int                         joint) {
+        const Joint       &j     = slabs.joints()[joint];
+        const unsigned int along = 1 - j.normal_axis;
+        const double       a     = cell->face(face)->vertex(0)[along];
+        const double       b     = cell->face(face)->vertex(1)[along];
+        const double       tol   = 1e-10 * std::abs(b - a);
+        for (unsigned int d = 0; d < locations.size(); ++d)
+          {
+            const double x = locations[d][along];
+            // Half-open pieces: a dowel at a vertex belongs to one.
+            if (joint_of[d] != joint || x < std::min(a, b) - tol
+                || x >= std::max(a, b) - tol)
+              continue;
+            const auto   opposite = cell->periodic_neighbor(face);
+            const double sign =
+              cell->face(face)->boundary_id() == j.lower_side ? 1 : -1;
+            Local dowel{d, std::vector<types::global_dof_index>(n), {}};
+            std::vector<types::global_dof_index> there(n);
+            cell->get_dof_indices(dowel.dofs);
+            opposite->get_dof_indices(there);
+            dowel.dofs.insert(dowel.dofs.end(), there.begin(), there.end());
+            for (const double phi : w_at(cell, locations[d]))
+              dowel.jump.push_back(sign * phi);
+            for (const double phi : w_at(opposite, locations[d]))
+              dowel.jump.push_back(-sign * phi);
+            local.push_back(dowel);
+          }
+      });
+    AssertThrow(Utilities::MPI::sum(local.size(), disc.mpi_communicator)
+                  == locations.size(),
+                ExcInternalError());
+    current.assign(local.size(), looseness > 0 ? slack : both);
+    in_matrix = current;
+    last_jump.assign(local.size(), 0.0);
+  }
+
+
+  double
+  JointDowels::jump_of(const unsigned int     i,
+                       const LA::MPI::Vector &ghosted_u) const
+  {
+    double jump = 0;
+    for (unsigned int k = 0; k < local[i].dofs.size(); ++k)
+      jump += local[i].jump[k] * ghosted_u(local[i].dofs[k]);
+    return jump;
+  }
+
+
+  double
+  JointDowels::offset_sign(const unsigned char status) const
+  {
+    return status == lower ? 1.0 : (status == upper ? -1.0 : 0.0);
+  }
+
+
+  void
+  JointDowels::add_dowel(const unsigned int     i,
+                         const double           factor,
+                         LA::MPI::SparseMatrix &matrix) const
+  {
+    const std::vector<double> &b = local[i].jump;
+    FullMatrix<double>         cell_matrix(b.size(), b.size());
+    for (unsigned int r = 0; r < b.size(); ++r)
+      for (unsigned int c = 0; c < b.size(); ++c)
+        cell_matrix(r, c) = factor * stiffness() * b[r] * b[c];
+    discretization->constraints.distribute_local_to_global(cell_matrix,
+                                                           local[i].dofs,
+                                                           matrix);
+  }
+
+
+  void
+  JointDowels::add_vector(const unsigned int i,
+                          const double       factor,
+                          LA::MPI::Vector   &vector) const
+  {
+    Vector<double> cell_vector(local[i].jump.begin(), local[i].jump.end());
+    cell_vector *= factor;
+    discretization->constraints.distribute_local_to_global(cell_vector,
+                                                           local[i].dofs,
+                                                           vector);
+  }
+
+
+  void
+  JointDowels::add_to_matrix(const MatrixFactors   &factors,
+                             LA::MPI::SparseMatrix &matrix)
+  {
+    add_to_matrix(current, factors.velocity, matrix);
+    in_matrix = current;
+  }
+
+
+  void
+  JointDowels::add_to_matrix(const Status &status,
+                             const double,
+                             LA::MPI::SparseMatrix &matrix) const
+  {
+    AssertThrow(status.size() == local.size(),
+                ExcMessage("A dowel status of another mesh."));
+    for (unsigned int i = 0; i < local.size(); ++i)
+      if (status[i] != slack)
+        add_dowel(i, 1.0, matrix);
+    matrix.compress(VectorOperation::add);
+  }
+
+
+  unsigned long
+  JointDowels::update_matrix(const double, LA::MPI::SparseMatrix &matrix)
+  {
+    unsigned long n_updated = 0;
+    for (unsigned int i = 0; i < local.size(); ++i)
+      {
+        const bool was = in_matrix[i] != slack, is = current[i] != slack;
+        if (was != is)
+          {
+            add_dowel(i, is ? 1.0 : -1.0, matrix);
+            ++n_updated;
+          }
+      }
+    in_matrix = current;
+    n_updated =
+      Utilities::MPI::sum(n_updated, discretization->mpi_communicator);
+    if (n_updated > 0)
+      matrix.compress(VectorOperation::add);
+    return n_updated;
+  }
+
+
+  void
+  JointDowels::add_change_product(const Status &reference,
+                                  const double,
+                                  const LA::MPI::Vector &ghosted_src,
+                                  LA::MPI::Vector       &dst) const
+  {
+    for (unsigned int i = 0; i < local.size(); ++i)
+      {
+        const bool was = reference[i] != slack, is = in_matrix[i] != slack;
+        if (was != is)
+          add_vector(i,
+                     (is ? 1.0 : -1.0) * stiffness() * jump_of(i, ghosted_src),
+                     dst);
+      }
+    dst.compress(VectorOperation::add);
+  }
+
+
+  void
+  JointDowels::add_force(const TermState &state, LA::MPI::Vector &force) const
+  {
+    for (unsigned int i = 0; i < local.size(); ++i)
+      if (current[i] != slack)
+        add_vector(i, stiffness() * jump_of(i, state.ghosted_u), force);
+    force.compress(VectorOperation::add);
+  }
+
+
+  double
+  JointDowels::energy(const TermState &state) const
+  {
+    double energy = 0;
+    for (unsigned int i = 0; i < local.size(); ++i)
+      if (current[i] != slack)
+        energy += 0.5 * stiffness()
+                  * std::pow(jump_of(i, state.ghosted_u)
+                               - looseness * offset_sign(current[i]),
+                             2);
+    return Utilities::MPI::sum(energy, discretization->mpi_communicator);
+  }
+
+
+  bool
+  JointDowels::has_status_load() const
+  {
+    return looseness > 0 && !locations.empty();
+  }
+
+
+  void
+  JointDowels::add_status_load(const SpringPressure &,
+                               LA::MPI::Vector &vector) const
+  {
+    for (unsigned int i = 0; i < local.size(); ++i)
+      if (current[i] == lower || current[i] == upper)
+        add_vector(i,
+                   stiffness() * looseness * offset_sign(current[i]),
+                   vector);
+    vector.compress(VectorOperation::add);
+  }
+
+
+  double
+  JointDowels::status_load_work(const LA::MPI::Vector &ghosted_u) const
+  {
+    // A dowel's F [w] = C ([w] - g s) [w] is 2 E + C g s ([w] - g s): its
+    // stored energy is half its work less this.
+    double work = 0;
+    for (unsigned int i = 0; i < local.size(); ++i)
+      {
+        const double offset = looseness * offset_sign(current[i]);
+        work += stiffness() * offset * (offset - jump_of(i, ghosted_u));
+      }
+    return Utilities::MPI::sum(work, discretization->mpi_communicator);
+  }
+
+
+  unsigned long
+  JointDowels::update_status(const LA::MPI::Vector &ghosted_u,
+                             const SpringPressure &)
+  {
+    if (looseness == 0)
+      return 0;
+    double largest = looseness;
+    for (unsigned int i = 0; i < local.size(); ++i)
+      {
+        last_jump[i] = jump_of(i, ghosted_u);
+        largest      = std::max(largest, std::abs(last_jump[i]));
+      }
+    // The same relative band as the bed's contact rule would take: round-off
+    // of the solution, not a physical width.
+    band =
+      1e-10 * Utilities::MPI::max(largest, discretization->mpi_communicator);
+    unsigned long n_changed = 0;
+    for (unsigned int i = 0; i < local.size(); ++i)
+      {
+        const double  jump = last_jump[i];
+        unsigned char now  = current[i];
+        if (jump > looseness + band)
+          now = lower;
+        else if (jump < -looseness - band)
+          now = upper;
+        else if (std::abs(jump) < looseness - band)
+          now = slack;
+        else if (now != slack && now != (jump > 0 ? lower : upper))
+          now = slack;
+        n_changed += (now != current[i]);
+        current[i] = now;
+      }
+    return Utilities::MPI::sum(n_changed, discretization->mpi_communicator);
+  }
+
+
+  unsigned long
+  JointDowels::keep_status_in_band(const Status &earlier)
+  {
+    AssertDimension(earlier.size(), current.size());
+    unsigned long n_changed = 0;
+    for (unsigned int i = 0; i < local.size(); ++i)
+      {
+        const double jump        = last_jump[i];
+        const bool   in_band     = std::abs(std::abs(jump) - looseness) <= band;
+        const unsigned char side = jump > 0 ? lower : upper;
+        if (looseness > 0 && in_band && current[i] != earlier[i]
+            && (earlier[i] == slack || earlier[i] == side))
+          {
+            current[i] = earlier[i];
+            ++n_changed;
+          }
+      }
+    return Utilities::MPI::sum(n_changed, discretization->mpi_communicator);
+  }
+
+
+  const StatusTerm::Status &
+  JointDowels::status() const
+  {
+    return current;
+  }
+
+
+  void
+  JointDowels::set_status(const Status &status)
+  {
+    AssertDimension(status.size(), current.size());
+    current = status;
+  }
+
+
+  void
+  JointDowels::unite(const Status &status, Status &all) const
+  {
+    AssertDimension(status.size(), all.size());
+    for (unsigned int i = 0; i < all.size(); ++i)
+      all[i] |= status[i];
+  }
+
+
+  const StatusTerm::Status &
+  JointDowels::status_in_matrix() const
+  {
+    return in_matrix;
+  }
+
+
+  std::vector<double>
+  JointDowels::forces(const LA::MPI::Vector &ghosted_u) const
+  {
+    std::vector<double> force(locations.size(), 0.0);
+    for (unsigned int i = 0; i < local.size(); ++i)
+      if (current[i] != slack)
+        force[local[i].index] =
+          stiffness()
+          * (jump_of(i, ghosted_u) - looseness * offset_sign(current[i]));
+    Utilities::MPI::sum(force, discretization->mpi_communicator, force);
+    return force;
+  }
+
+
+  void
+  JointDowels::save(OutputArchive &archive) const
+  {
+    archive << current << in_matrix;
+  }
+
+
+  void
+  JointDowels::load(InputArchive &archive)
+  {
+    const std::size_t n = current.size();
+    archive >> current >> in_matrix;
+    AssertThrow(current.size() == n && in_matrix.size() == n,
+                ExcMessage("The checkpoint's dowel status has "
+                           + std::to_string(current.size())
+                           + " dowels where this rank has " + std::to_string(n)
+                           + ": it was written for another mesh."));
+  }
+} // namespace liftoff
