@@ -39,6 +39,48 @@ namespace liftoff
 
 
   void
+  DowelBar::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Diameter",
+                      "0",
+                      Patterns::Double(0.0),
+                      "The bar's diameter d." + quantity("length"));
+    prm.declare_entry("Steel modulus",
+                      "0",
+                      Patterns::Double(0.0),
+                      "The bar's Young's modulus E_d." + quantity("pressure"));
+    prm.declare_entry("Steel Poisson ratio",
+                      "0.3",
+                      Patterns::Double(0.0, 0.5),
+                      "The bar's Poisson ratio, for its shear modulus."
+                        + quantity("number"));
+    prm.declare_entry("Modulus of dowel support",
+                      "0",
+                      Patterns::Double(0.0),
+                      "K, the concrete's reaction per unit area of the bar's "
+                      "projection per unit deflection of the bar (N/m^3 in "
+                      "an SI scene; 0.8 to 1.5e12 for concrete)."
+                        + quantity("pressure per length"));
+    prm.declare_entry("Joint opening",
+                      "0",
+                      Patterns::Double(0.0),
+                      "z, the width of the open joint the bars span."
+                        + quantity("length"));
+  }
+
+
+  void
+  DowelBar::parse_parameters(ParameterHandler &prm)
+  {
+    diameter        = prm.get_double("Diameter");
+    modulus         = prm.get_double("Steel modulus");
+    poisson_ratio   = prm.get_double("Steel Poisson ratio");
+    support_modulus = prm.get_double("Modulus of dowel support");
+    opening         = prm.get_double("Joint opening");
+  }
+
+
+  void
   JointDowels::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Slabs");
@@ -81,31 +123,7 @@ namespace liftoff
       "Steel modulus, Steel Poisson ratio, Modulus of dowel support, Joint "
       "opening; doc/model.md)."
         + quantity("force per length"));
-    prm.declare_entry("Diameter",
-                      "0",
-                      Patterns::Double(0.0),
-                      "The bar's diameter d." + quantity("length"));
-    prm.declare_entry("Steel modulus",
-                      "0",
-                      Patterns::Double(0.0),
-                      "The bar's Young's modulus E_d." + quantity("pressure"));
-    prm.declare_entry("Steel Poisson ratio",
-                      "0.3",
-                      Patterns::Double(0.0, 0.5),
-                      "The bar's Poisson ratio, for its shear modulus."
-                        + quantity("number"));
-    prm.declare_entry("Modulus of dowel support",
-                      "0",
-                      Patterns::Double(0.0),
-                      "K, the concrete's reaction per unit area of the bar's "
-                      "projection per unit deflection of the bar (N/m^3 in "
-                      "an SI scene; 0.8 to 1.5e12 for concrete)."
-                        + quantity("pressure per length"));
-    prm.declare_entry("Joint opening",
-                      "0",
-                      Patterns::Double(0.0),
-                      "z, the width of the open joint the bars span."
-                        + quantity("length"));
+    DowelBar::declare_parameters(prm);
     prm.declare_entry(
       "Looseness",
       "0",
@@ -132,15 +150,11 @@ namespace liftoff
     for (const std::string &item :
          Utilities::split_string_list(prm.get("Positions")))
       positions.push_back(Utilities::string_to_double(item));
-    spacing                   = prm.get_double("Spacing");
-    edge_distance             = prm.get_double("Edge distance");
-    given_stiffness           = prm.get_double("Stiffness");
-    dowel_bar.diameter        = prm.get_double("Diameter");
-    dowel_bar.modulus         = prm.get_double("Steel modulus");
-    dowel_bar.poisson_ratio   = prm.get_double("Steel Poisson ratio");
-    dowel_bar.support_modulus = prm.get_double("Modulus of dowel support");
-    dowel_bar.opening         = prm.get_double("Joint opening");
-    looseness                 = prm.get_double("Looseness");
+    spacing         = prm.get_double("Spacing");
+    edge_distance   = prm.get_double("Edge distance");
+    given_stiffness = prm.get_double("Stiffness");
+    dowel_bar.parse_parameters(prm);
+    looseness = prm.get_double("Looseness");
     prm.leave_subsection();
     prm.leave_subsection();
     if (joint_names.empty())
@@ -259,36 +273,53 @@ namespace liftoff
   }
 
 
+  JointDowels::Local
+  JointDowels::make_local(const DoFHandler<2>::active_cell_iterator &cell,
+                          const unsigned int                         face,
+                          const unsigned int                         d) const
+  {
+    const FiniteElement<2> &fe      = discretization->dof_handler.get_fe();
+    const Mapping<2>       &mapping = discretization->mapping();
+    const unsigned int      n       = fe.n_dofs_per_cell();
+    const Joint            &joint =
+      discretization->geometry().slabs().joints()[joint_of[d]];
+    // [w] = w_lower - w_upper: this cell's side first.
+    const double sign =
+      cell->face(face)->boundary_id() == joint.lower_side ? 1 : -1;
+    const auto opposite = cell->periodic_neighbor(face);
+    Local      dowel{d, {}, {}};
+    for (const auto &[side, factor] :
+         {std::make_pair(DoFHandler<2>::cell_iterator(cell), sign),
+          std::make_pair(opposite, -sign)})
+      {
+        std::vector<types::global_dof_index> dofs(n);
+        side->get_dof_indices(dofs);
+        dowel.dofs.insert(dowel.dofs.end(), dofs.begin(), dofs.end());
+        FEValues<2> values(mapping,
+                           fe,
+                           Quadrature<2>(mapping.transform_real_to_unit_cell(
+                             side, locations[d])),
+                           update_values);
+        values.reinit(side);
+        for (unsigned int i = 0; i < n; ++i)
+          dowel.jump.push_back(factor * values.shape_value_component(i, 0, 0));
+      }
+    return dowel;
+  }
+
+
   void
   JointDowels::setup(const Discretization &disc)
   {
     discretization = &disc;
     local.clear();
-    const SlabLayout       &slabs   = disc.geometry().slabs();
-    const FiniteElement<2> &fe      = disc.dof_handler.get_fe();
-    const Mapping<2>       &mapping = disc.mapping();
-    const unsigned int      n       = fe.n_dofs_per_cell();
-    // w's shape values of `cell` at the point p.
-    const auto w_at = [&](const DoFHandler<2>::active_cell_iterator &cell,
-                          const Point<2>                            &p) {
-      FEValues<2> values(mapping,
-                         fe,
-                         Quadrature<2>(
-                           mapping.transform_real_to_unit_cell(cell, p)),
-                         update_values);
-      values.reinit(cell);
-      std::vector<double> phi(n);
-      for (unsigned int i = 0; i < n; ++i)
-        phi[i] = values.shape_value_component(i, 0, 0);
-      return phi;
-    };
+    const SlabLayout &slabs = disc.geometry().slabs();
     slabs.for_each_joint_face(
       disc.dof_handler,
       [&](const DoFHandler<2>::active_cell_iterator &cell,
           const unsigned int                         face,
           const unsigned int                         joint) {
-        const Joint       &j     = slabs.joints()[joint];
-        const unsigned int along = 1 - j.normal_axis;
+        const unsigned int along = 1 - slabs.joints()[joint].normal_axis;
         const double       a     = cell->face(face)->vertex(0)[along];
         const double       b     = cell->face(face)->vertex(1)[along];
         const double       tol   = 1e-10 * std::abs(b - a);
@@ -296,22 +327,9 @@ namespace liftoff
           {
             const double x = locations[d][along];
             // Half-open pieces: a dowel at a vertex belongs to one.
-            if (joint_of[d] != joint || x < std::min(a, b) - tol
-                || x >= std::max(a, b) - tol)
-              continue;
-            const auto   opposite = cell->periodic_neighbor(face);
-            const double sign =
-              cell->face(face)->boundary_id() == j.lower_side ? 1 : -1;
-            Local dowel{d, std::vector<types::global_dof_index>(n), {}};
-            std::vector<types::global_dof_index> there(n);
-            cell->get_dof_indices(dowel.dofs);
-            opposite->get_dof_indices(there);
-            dowel.dofs.insert(dowel.dofs.end(), there.begin(), there.end());
-            for (const double phi : w_at(cell, locations[d]))
-              dowel.jump.push_back(sign * phi);
-            for (const double phi : w_at(opposite, locations[d]))
-              dowel.jump.push_back(-sign * phi);
-            local.push_back(dowel);
+            if (joint_of[d] == joint && x >= std::min(a, b) - tol
+                && x < std::max(a, b) - tol)
+              local.push_back(make_local(cell, face, d));
           }
       });
     AssertThrow(Utilities::MPI::sum(local.size(), disc.mpi_communicator)

@@ -5,10 +5,8 @@ namespace liftoff
 {
   namespace
   {
-    using Analysis                     = SceneParts::Analysis;
-    const Selection<Analysis> analyses = {
-      {"dynamic", Analysis::dynamic_analysis},
-      {"static", Analysis::static_analysis}};
+    // Whether the analysis is a time integration.
+    const Selection<bool> analyses = {{"dynamic", true}, {"static", false}};
   } // namespace
 
 
@@ -60,7 +58,7 @@ namespace liftoff
                                const PhysicalUnits &units)
   {
     prm.enter_subsection("Analysis");
-    analysis = analyses.parse(prm.get("Type"), "Analysis/Type");
+    dynamic = analyses.parse(prm.get("Type"), "Analysis/Type");
     prm.leave_subsection();
     initial_conditions.parse_parameters(prm);
     plate.parse_parameters(prm);
@@ -84,14 +82,14 @@ namespace liftoff
   void
   SceneParts::check() const
   {
-    if (analysis == Analysis::static_analysis)
+    if (!dynamic)
       AssertThrow(discretization.geometry().has_kinematic_support()
                     || foundation.law().model() != ContactLaw::Model::none,
                   ExcMessage("Analysis/Type = static: a plate with all edges "
                              "free and Foundation/Model = none has no static "
                              "equilibrium."));
 
-    if (analysis == Analysis::dynamic_analysis)
+    if (dynamic)
       newmark.check_end_time();
     mesh_refinement.check_against(discretization);
     joint_springs.check_against(discretization.geometry().slabs());
@@ -119,7 +117,7 @@ namespace liftoff
   Clock
   SceneParts::clock() const
   {
-    return analysis == Analysis::static_analysis ? Clock() : newmark.clock();
+    return dynamic ? newmark.clock() : Clock();
   }
 
 
@@ -129,28 +127,25 @@ namespace liftoff
     // Nothing to compute: most likely a load whose Magnitude was left at its
     // default 0.
     if (loads.is_empty() && !foundation.law().is_pressing_plate())
-      AssertThrow(analysis == Analysis::dynamic_analysis
-                    && !initial_conditions.is_at_rest(discretization),
+      AssertThrow(dynamic && !initial_conditions.is_at_rest(discretization),
                   ExcMessage(
                     "The scene has no load (every Loads/.../Magnitude is 0)"
-                    + std::string(analysis == Analysis::dynamic_analysis
-                                    ? " and starts at rest (Initial "
-                                      "conditions are 0)"
-                                    : "")
+                    + std::string(dynamic ? " and starts at rest (Initial "
+                                            "conditions are 0)"
+                                          : "")
                     + " on a bed that presses nowhere (Foundation/Initial "
                       "gap >= 0), so its solution is u = 0. Give a load a "
                       "Magnitude"
-                    + (analysis == Analysis::dynamic_analysis
-                         ? ", or the plate an initial displacement or "
-                           "velocity."
-                         : ".")));
+                    + (dynamic ? ", or the plate an initial displacement or "
+                                 "velocity."
+                               : ".")));
   }
 
 
   bool
   SceneParts::is_dynamic() const
   {
-    return analysis == Analysis::dynamic_analysis;
+    return dynamic;
   }
 
 

@@ -29,6 +29,12 @@ namespace liftoff
   public:
     using Status = std::vector<unsigned char>;
 
+    /// A term's status describes its matrices: it is never copied.
+    StatusTerm()                   = default;
+    StatusTerm(const StatusTerm &) = delete;
+    StatusTerm &
+    operator=(const StatusTerm &) = delete;
+
     bool
     has_status() const override
     {

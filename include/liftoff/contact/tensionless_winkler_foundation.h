@@ -70,9 +70,6 @@ namespace liftoff
   {
   public:
     TensionlessWinklerFoundation();
-    TensionlessWinklerFoundation(const TensionlessWinklerFoundation &) = delete;
-    TensionlessWinklerFoundation &
-    operator=(const TensionlessWinklerFoundation &) = delete;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -40,6 +40,12 @@ namespace liftoff
     double support_modulus = 0;
     double opening         = 0;
 
+    /// Its entries in the current subsection (`Slabs/Dowels`).
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
     /// C, the force per unit relative deflection of the two slabs.
     double
     stiffness() const;
@@ -183,6 +189,11 @@ namespace liftoff
     double                band           = 0;
     const Discretization *discretization = nullptr;
 
+    /// Dowel d, on the piece `face` of `cell` (a piece of its joint).
+    Local
+    make_local(const DoFHandler<2>::active_cell_iterator &cell,
+               const unsigned int                         face,
+               const unsigned int                         d) const;
     /// [w] of local dowel i at ghosted_u.
     double
     jump_of(const unsigned int i, const LA::MPI::Vector &ghosted_u) const;

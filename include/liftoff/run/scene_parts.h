@@ -32,13 +32,6 @@ namespace liftoff
    */
   struct SceneParts
   {
-    /// `Analysis/Type`.
-    enum class Analysis
-    {
-      static_analysis,
-      dynamic_analysis
-    };
-
     SceneParts(const MPI_Comm comm, SectionTimer &timer);
 
     /// The parameters of every part below (not the outputs' and the
@@ -81,7 +74,8 @@ namespace liftoff
     std::vector<SystemTerm *>
     system_terms();
 
-    Analysis                     analysis = Analysis::dynamic_analysis;
+    /// `Analysis/Type = dynamic` (else static).
+    bool                         dynamic = true;
     InitialConditions            initial_conditions;
     MindlinPlate                 plate;
     Discretization               discretization;

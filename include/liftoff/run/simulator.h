@@ -56,9 +56,6 @@ namespace liftoff
       resume
     };
 
-    /// `Analysis/Type`.
-    using Analysis = SceneParts::Analysis;
-
     /// With verbose = false nothing is printed (tests); show_progress =
     /// false leaves out the progress line only (`liftoff --quiet`).
     explicit Simulator(const MPI_Comm comm,
