@@ -12,6 +12,27 @@
 
 namespace liftoff
 {
+  namespace
+  {
+    // Trilinos' first add after an insert assembles the object, a
+    // collective call, on the rank that adds: a rank that holds no dowel
+    // must take that step too, or the ranks wait for each other for ever
+    // (seen: two ranks, loose dowels, self-weight).
+    void
+    add_on_every_rank(LA::MPI::Vector &vector)
+    {
+      vector.add(0, nullptr, nullptr);
+    }
+
+
+    void
+    add_on_every_rank(LA::MPI::SparseMatrix &matrix)
+    {
+      matrix.add(0, 0, 0.0);
+    }
+  } // namespace
+
+
   double
   DowelBar::stiffness() const
   {
@@ -404,6 +425,7 @@ namespace liftoff
   {
     AssertThrow(status.size() == local.size(),
                 ExcMessage("A dowel status of another mesh."));
+    add_on_every_rank(matrix);
     for (unsigned int i = 0; i < local.size(); ++i)
       if (status[i] != slack)
         add_dowel(i, 1.0, matrix);
@@ -414,6 +436,7 @@ namespace liftoff
   unsigned long
   JointDowels::update_matrix(const double, LA::MPI::SparseMatrix &matrix)
   {
+    add_on_every_rank(matrix);
     unsigned long n_updated = 0;
     for (unsigned int i = 0; i < local.size(); ++i)
       {
@@ -439,6 +462,7 @@ namespace liftoff
                                   const LA::MPI::Vector &ghosted_src,
                                   LA::MPI::Vector       &dst) const
   {
+    add_on_every_rank(dst);
     for (unsigned int i = 0; i < local.size(); ++i)
       {
         const bool was = reference[i] != slack, is = in_matrix[i] != slack;
@@ -454,6 +478,7 @@ namespace liftoff
   void
   JointDowels::add_force(const TermState &state, LA::MPI::Vector &force) const
   {
+    add_on_every_rank(force);
     for (unsigned int i = 0; i < local.size(); ++i)
       if (current[i] != slack)
         add_vector(i, stiffness() * jump_of(i, state.ghosted_u), force);
@@ -486,6 +511,7 @@ namespace liftoff
   JointDowels::add_status_load(const SpringPressure &,
                                LA::MPI::Vector &vector) const
   {
+    add_on_every_rank(vector);
     for (unsigned int i = 0; i < local.size(); ++i)
       if (current[i] == lower || current[i] == upper)
         add_vector(i,
