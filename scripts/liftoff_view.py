@@ -27,6 +27,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liftoff_runs import used_parameters  # noqa: E402
+import liftoff_view_marks as marks_of  # noqa: E402
+import liftoff_view_draw as draw  # noqa: E402
 
 import paraview.simple as pv  # noqa: E402
 
@@ -49,17 +51,20 @@ ODD_FIELDS = {"Q_x": "X", "Q_y": "Y", "M_xy": "XY", "sigma_xy": "XY",
               "M_1_angle": "XY"}
 
 
-def with_reflection_signs(plate, field, symmetry):
-    """The plate and the name of `field` with the signs of the reflections
+def with_reflection_signs(plate, field, symmetry, factor=1.0):
+    """The plate and the name of the array to draw: `field` times `factor`
+    (an SI field in engineering units), with the signs of the reflections
     applied where the field is odd under them."""
     planes = {"full": "", "half": "X", "quarter": "XY"}[symmetry]
     axes = [a for a in ODD_FIELDS.get(field, "") if a in planes]
-    if not axes:
+    if not axes and factor == 1.0:
         return plate, field
-    factor = "*".join("sign(coords%s)" % a for a in axes)
-    name = field + " (whole plate)"
+    terms = ["sign(coords%s)" % a for a in axes]
+    if factor != 1.0:
+        terms.append("%.17g" % factor)
+    name = field + (" (whole plate)" if axes else " (drawn)")
     return pv.Calculator(Input=plate, ResultArrayName=name,
-                         Function="%s*%s" % (field, factor)), name
+                         Function="*".join([field] + terms)), name
 
 
 def field_unit(directory, field):
@@ -85,7 +90,17 @@ def largest_deflection(source, times):
     return largest
 
 
-def main():
+def field_range(source, field, times):
+    """The range of `field` over every output time."""
+    low, high = float("inf"), -float("inf")
+    for t in times:
+        source.UpdatePipeline(t)
+        a, b = source.PointData[field].GetRange()
+        low, high = min(low, a), max(high, b)
+    return low, high
+
+
+def arguments():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("directory", help="a run's Output/Directory")
     parser.add_argument("--pictures", help="folder for the pictures "
@@ -100,29 +115,120 @@ def main():
                         help="the point or cell field that colours the "
                         "plate (default contact_status; refinement_level "
                         "shows an adaptive mesh)")
-    args = parser.parse_args()
+    parser.add_argument("--top", action="store_true",
+                        help="a top view of the flat plate with the "
+                        "outline of the contact zone")
+    parser.add_argument("--animation", action="store_true",
+                        help="also FOLDER/view.gif: the pictures in turn, "
+                        "0.2 s each")
+    parser.add_argument("--no-loads", action="store_true",
+                        help="draw the plate alone, without the loads, "
+                        "sensors, probes and joints")
+    return parser.parse_args()
+
+
+def open_run(args):
+    """The reader, its times, the run's parameters and history."""
     pvd = os.path.join(args.directory, "solution.pvd")
     if not os.path.exists(pvd):
         sys.exit("liftoff-view: error: %s does not exist (set Output/VTU "
                  "interval > 0)" % pvd)
-    used = used_parameters(args.directory)
-    symmetry = used.get("Discretization/Symmetry", "full")
-    pictures = args.pictures or os.path.join(args.directory, "pictures")
-    os.makedirs(pictures, exist_ok=True)
-
     reader = pv.PVDReader(FileName=pvd)
-    times = list(reader.TimestepValues) or [0.0]
     fields = list(reader.PointData.keys())
     if args.field not in fields:
         sys.exit("liftoff-view: error: --field %s: the files have no such "
                  "field; they have %s" % (args.field, ", ".join(fields)))
+    history = os.path.join(args.directory, "history.csv")
+    history = marks_of.History(history) if os.path.exists(history) else None
+    return (reader, list(reader.TimestepValues) or [0.0],
+            used_parameters(args.directory), history)
+
+
+def colour_scale(view, display, plate, field, times, args, unit):
+    """The colour map and bar: the field's range over the run rounded, its
+    title with the unit drawn; returns the range."""
+    pv.ColorBy(display, ("POINTS", field))
+    lut = pv.GetColorTransferFunction(field)
+    lut.ApplyPreset("Cool to Warm", True)
+    if args.field == "contact_status":
+        low, high = 0.0, 1.0
+        title = "contact (fraction of Gauss points)"
+    else:
+        low, high = rounded_range(*field_range(plate, field, times))
+        title = args.field + (" [%s]" % unit if unit else "")
+    lut.RescaleTransferFunction(low, high)
+    lut.AutomaticRescaleRangeMode = "Never"
+    bar = pv.GetScalarBar(lut, view)
+    bar.Title = title
+    bar.ComponentTitle = ""
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    bar.RangeLabelFormat = "%-#.3g"
+    bar.LabelFormat = "%-#.3g"
+    display.SetScalarBarVisibility(view, True)
+
+
+def rounded_range(low, high):
+    return draw.rounded_range(low, high)
+
+
+def place_camera(view, top, bounds):
+    """A view from the front right and above, or from above; the plate
+    filling the picture."""
+    if top:
+        view.CameraPosition = [0, 0, 10]
+        view.CameraViewUp = [0, 1, 0]
+        view.CameraParallelProjection = 1
+    else:
+        view.CameraPosition = [1.3, -1.6, 1.0]
+        view.CameraViewUp = [0, 0, 1]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.ResetCamera(*bounds)
+    camera = view.GetActiveCamera()
+    if top:
+        camera.SetParallelScale(0.9 * camera.GetParallelScale())
+    else:
+        camera.Dolly(1.6)
+    view.CameraPosition = camera.GetPosition()
+
+
+def contact_outline(view, plate, lift):
+    """The line between contact and lift-off: contact_status = 1/2."""
+    contour = pv.Contour(Input=plate, ContourBy=["POINTS", "contact_status"],
+                         Isosurfaces=[0.5])
+    raised = pv.Transform(Input=contour)
+    raised.Transform.Translate = [0, 0, lift]
+    shown = pv.Show(raised, view)
+    shown.ColorArrayName = [None, ""]
+    shown.AmbientColor = shown.DiffuseColor = [0, 0, 0]
+    shown.LineWidth = 3.0
+
+
+def make_view(args):
+    width, height = (int(v) for v in args.size.split(","))
+    view = pv.CreateView("RenderView")
+    view.ViewSize = [width, height]
+    view.OrientationAxesVisibility = 1
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    return view, width, height
+
+
+def main():
+    args = arguments()
+    reader, times, used, history = open_run(args)
+    symmetry = used.get("Discretization/Symmetry", "full")
+    pictures = args.pictures or os.path.join(args.directory, "pictures")
+    os.makedirs(pictures, exist_ok=True)
     plate = whole_plate(reader, symmetry)
     largest = largest_deflection(plate, times)
     # The plate's length is 1 in a dimensionless scene, metres in SI.
     plate.UpdatePipeline(times[0])
-    x_min, x_max = plate.GetDataInformation().GetBounds()[0:2]
-    scale = args.scale or (0.15 * (x_max - x_min) / largest if largest > 0
-                           else 1.0)
+    extent = plate.GetDataInformation().GetBounds()[0:4]
+    length = extent[1] - extent[0]
+    scale = args.scale or (0.15 * length / largest if largest > 0 else 1.0)
     si = used.get("Units/System") == "SI"
     # z = -scale w: w > 0 is into the foundation, which lies below the
     # plate. Outputs of liftoff before the displacement vector are warped
@@ -133,79 +239,72 @@ def main():
         plate = pv.Calculator(Input=plate, ResultArrayName="w_vector",
                               Function="w*kHat")
         vector = "w_vector"
-    plate, field = with_reflection_signs(plate, args.field, symmetry)
-    warped = pv.WarpByVector(Input=plate, Vectors=["POINTS", vector],
-                             ScaleFactor=-scale)
-
-    width, height = (int(v) for v in args.size.split(","))
-    view = pv.CreateView("RenderView")
-    view.ViewSize = [width, height]
-    view.OrientationAxesVisibility = 1
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
+    unit = field_unit(args.directory, args.field)
+    factor = 1.0
+    if si and args.field != "contact_status":
+        raw = field_range(plate, args.field, times)
+        factor, unit = draw.engineering_unit(unit, max(map(abs, raw)))
+    coloured, field = with_reflection_signs(plate, args.field, symmetry,
+                                            factor)
+    drawn_scale = 0.0 if args.top else scale
+    warped = pv.WarpByVector(Input=coloured, Vectors=["POINTS", vector],
+                             ScaleFactor=-drawn_scale)
+    view, width, height = make_view(args)
     warped.UpdatePipeline(times[-1])
     display = pv.Show(warped, view)
-    # deal.II writes cell data as point data of each cell's own points.
-    pv.ColorBy(display, ("POINTS", field))
-    lut = pv.GetColorTransferFunction(field)
-    lut.ApplyPreset("Cool to Warm", True)
-    if args.field == "contact_status":
-        lut.RescaleTransferFunction(0.0, 1.0)
-        titles = "contact (fraction of Gauss points)"
-    else:
-        # The range over every output time, so that all pictures share it.
-        low, high = float("inf"), -float("inf")
-        for t in times:
-            plate.UpdatePipeline(t)
-            a, b = plate.PointData[field].GetRange()
-            low, high = min(low, a), max(high, b)
-        lut.RescaleTransferFunction(low, high if high > low else low + 1)
-        titles = field
-    unit = field_unit(args.directory, args.field)
-    if args.field != "contact_status" and unit:
-        titles += " [%s]" % unit
-    lut.AutomaticRescaleRangeMode = "Never"
-    bar = pv.GetScalarBar(lut, view)
-    bar.Title = titles
-    bar.ComponentTitle = ""
-    bar.TitleColor = bar.LabelColor = [0, 0, 0]
-    display.SetScalarBarVisibility(view, True)
+    colour_scale(view, display, coloured, field, times, args, unit)
+    if args.top and "contact_status" in reader.PointData.keys():
+        contact_outline(view, warped, 0.005 * length)
+    layer = None if args.no_loads else draw.MarkLayer(view, length)
     label = pv.Text(Text="")
     label_display = pv.Show(label, view)
     label_display.Color = [0, 0, 0]
     label_display.WindowLocation = "Upper Left Corner"
-
-    view.CameraPosition = [1.3, -1.6, 1.0]
-    view.CameraFocalPoint = [0, 0, 0]
-    view.CameraViewUp = [0, 0, 1]
+    label_display.FontSize = 14
+    w_factor, w_unit = (1e3, " mm") if si else (1.0, "")
     rows = ["picture,tau,max_w,x_min,x_max,y_min,y_max,z_min,z_max,"
             "field_min,field_max,field_unit"]
+    load_rows = ["picture,mark,x,y,z,column,row"]
+    pngs = []
     for k, t in enumerate(times):
         view.ViewTime = t
         warped.UpdatePipeline(t)
-        label.Text = ("%s   %s = %.5g%s   w drawn x %.3g (down: into the "
-                      "foundation)" % (os.path.basename(
-                          os.path.normpath(args.directory)),
-                          "t" if si else "tau", t, " s" if si else "",
-                          scale))
-        if k == 0:
-            view.ResetCamera()
-        name = "view_%05d.png" % k
-        pv.SaveScreenshot(os.path.join(pictures, name), view,
-                          ImageResolution=[width, height])
-        bounds = warped.GetDataInformation().GetBounds()
         plate.UpdatePipeline(t)
         max_w = plate.PointData["w"].GetRange()[1]
+        label.Text = ("%s   %s = %.5g%s   max w = %.3g%s   w drawn x %.3g,"
+                      " down" % (
+                          os.path.basename(os.path.normpath(args.directory)),
+                          "t" if si else "tau", t, " s" if si else "",
+                          w_factor * max_w, w_unit, drawn_scale))
+        tips = []
+        if layer:
+            tips = layer.update(marks_of.scene_marks(used, history, t,
+                                                     extent),
+                                plate, vector, drawn_scale)
+        if k == 0:
+            place_camera(view, args.top, warped.GetDataInformation()
+                         .GetBounds())
+        name = "view_%05d.png" % k
+        pngs.append(os.path.join(pictures, name))
+        pv.Render(view)
+        pv.SaveScreenshot(pngs[-1], view, ImageResolution=[width, height])
+        for tip in tips:
+            load_rows.append("%s,arrow,%.9g,%.9g,%.9g,%.2f,%.2f" % (
+                (name,) + tuple(tip) + draw.pixel_of(view, tip)))
+        bounds = warped.GetDataInformation().GetBounds()
+        coloured.UpdatePipeline(t)
         rows.append("%s,%.17g,%.17g,%s,%s" % (name, t, max_w, ",".join(
-            "%.17g" % b for b in bounds + plate.PointData[field].GetRange()),
-            unit))
+            "%.17g" % b for b in bounds + coloured.PointData[field]
+            .GetRange()), unit))
     with open(os.path.join(pictures, "view.csv"), "w") as f:
         f.write("\n".join(rows) + "\n")
-    print("liftoff-view: %d picture(s) in %s, warped by %s"
-          % (len(times), pictures, vector))
+    with open(os.path.join(pictures, "loads.csv"), "w") as f:
+        f.write("\n".join(load_rows) + "\n")
+    if args.animation:
+        draw.write_gif(pngs, os.path.join(pictures, "view.gif"))
+    print("liftoff-view: %d picture(s) in %s, warped by %s%s"
+          % (len(times), pictures, vector,
+             ", view.gif" if args.animation else ""))
 
 
 if __name__ == "__main__":
