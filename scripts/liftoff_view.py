@@ -21,6 +21,7 @@ reflected parts.
 """
 
 import argparse
+import math
 import os
 import re
 import sys
@@ -173,7 +174,8 @@ def rounded_range(low, high):
 
 def place_camera(view, top, bounds):
     """A view from the front right and above, or from above; the plate
-    filling the picture."""
+    filling the picture: its box's corners, projected, centred and spanning
+    0.8 of the width or height (three rounds of pan and zoom)."""
     if top:
         view.CameraPosition = [0, 0, 10]
         view.CameraViewUp = [0, 1, 0]
@@ -184,27 +186,62 @@ def place_camera(view, top, bounds):
     view.CameraFocalPoint = [0, 0, 0]
     view.ResetCamera(*bounds)
     camera = view.GetActiveCamera()
-    if top:
-        camera.SetParallelScale(0.9 * camera.GetParallelScale())
-    else:
-        camera.Dolly(1.6)
-    view.CameraPosition = camera.GetPosition()
+    width, height = view.ViewSize
+    corners = [(x, y, z) for x in bounds[0:2] for y in bounds[2:4]
+               for z in bounds[4:6]]
+    for _ in range(3):
+        pv.Render(view)
+        pixels = [draw.pixel_of(view, c) for c in corners]
+        columns, rows = [p[0] for p in pixels], [p[1] for p in pixels]
+        # Pan: the box's centre in the picture's centre (world units per
+        # pixel at the focal point from the view angle or parallel scale).
+        span = (2 * camera.GetParallelScale() if top else 2 * camera
+                .GetDistance() * math.tan(math.radians(
+                    camera.GetViewAngle() / 2)))
+        per_pixel = span / height
+        dx = (sum(columns) / len(columns) - width / 2) * per_pixel
+        dy = (height / 2 - sum(rows) / len(rows)) * per_pixel
+        right = _cross(camera.GetDirectionOfProjection(),
+                       camera.GetViewUp())
+        shift = [dx * r + dy * u for r, u in zip(right, camera.GetViewUp())]
+        camera.SetFocalPoint(*[f + d for f, d in zip(camera.GetFocalPoint(),
+                                                     shift)])
+        camera.SetPosition(*[p + d for p, d in zip(camera.GetPosition(),
+                                                   shift)])
+        zoom = (0.72 if top else 0.8) * min(width / (max(columns) - min(columns)),
+                         height / (max(rows) - min(rows)))
+        camera.Zoom(zoom) if top else camera.Dolly(zoom)
 
 
-def contact_outline(view, plate, lift):
-    """The line between contact and lift-off: contact_status = 1/2."""
-    contour = pv.Contour(Input=plate, ContourBy=["POINTS", "contact_status"],
-                         Isosurfaces=[0.5])
+def _cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0])
+
+
+def contact_outline(view, plate, lift, times):
+    """The line between contact and lift-off: where the uplift (g - w)^+,
+    continuous unlike the cells' contact status, leaves 0 (1e-3 of its
+    largest value over the run)."""
+    high = field_range(plate, "uplift", times)[1]
+    contour = pv.Contour(Input=plate, ContourBy=["POINTS", "uplift"],
+                         Isosurfaces=[1e-3 * high if high > 0 else 1e300])
     raised = pv.Transform(Input=contour)
     raised.Transform.Translate = [0, 0, lift]
     shown = pv.Show(raised, view)
-    shown.ColorArrayName = [None, ""]
+    shown.ColorArrayName = ["POINTS", ""]
     shown.AmbientColor = shown.DiffuseColor = [0, 0, 0]
     shown.LineWidth = 3.0
 
 
 def make_view(args):
-    width, height = (int(v) for v in args.size.split(","))
+    try:
+        width, height = (int(v) for v in args.size.split(","))
+    except ValueError:
+        sys.exit("liftoff-view: error: --size %s: give width,height in "
+                 "pixels (e.g. 1000,600)" % args.size)
+    if width < 50 or height < 50:
+        sys.exit("liftoff-view: error: --size %s: at least 50,50 pixels"
+                 % args.size)
     view = pv.CreateView("RenderView")
     view.ViewSize = [width, height]
     view.OrientationAxesVisibility = 1
@@ -253,8 +290,8 @@ def main():
     warped.UpdatePipeline(times[-1])
     display = pv.Show(warped, view)
     colour_scale(view, display, coloured, field, times, args, unit)
-    if args.top and "contact_status" in reader.PointData.keys():
-        contact_outline(view, warped, 0.005 * length)
+    if args.top and "uplift" in reader.PointData.keys():
+        contact_outline(view, warped, 0.005 * length, times)
     layer = None if args.no_loads else draw.MarkLayer(view, length)
     label = pv.Text(Text="")
     label_display = pv.Show(label, view)
