@@ -25,6 +25,7 @@ import math
 import os
 import re
 import sys
+from types import SimpleNamespace
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liftoff_runs import used_parameters  # noqa: E402
@@ -155,7 +156,7 @@ def colour_scale(view, display, plate, field, times, args, unit):
         low, high = 0.0, 1.0
         title = "contact (fraction of Gauss points)"
     else:
-        low, high = rounded_range(*field_range(plate, field, times))
+        low, high = draw.rounded_range(*field_range(plate, field, times))
         title = args.field + (" [%s]" % unit if unit else "")
     lut.RescaleTransferFunction(low, high)
     lut.AutomaticRescaleRangeMode = "Never"
@@ -166,10 +167,6 @@ def colour_scale(view, display, plate, field, times, args, unit):
     bar.RangeLabelFormat = "%-#.3g"
     bar.LabelFormat = "%-#.3g"
     display.SetScalarBarVisibility(view, True)
-
-
-def rounded_range(low, high):
-    return draw.rounded_range(low, high)
 
 
 def place_camera(view, top, bounds):
@@ -250,97 +247,122 @@ def make_view(args):
         view.UseColorPaletteForBackground = 0
     except AttributeError:
         pass
-    return view, width, height
+    return view
 
 
-def main():
-    args = arguments()
+def build_pipeline(args):
+    """The run's plate reflected, coloured and warped, with what the
+    pictures need to know about it."""
     reader, times, used, history = open_run(args)
+    run = SimpleNamespace(times=times, used=used, history=history)
     symmetry = used.get("Discretization/Symmetry", "full")
-    pictures = args.pictures or os.path.join(args.directory, "pictures")
-    os.makedirs(pictures, exist_ok=True)
     plate = whole_plate(reader, symmetry)
     largest = largest_deflection(plate, times)
     # The plate's length is 1 in a dimensionless scene, metres in SI.
     plate.UpdatePipeline(times[0])
-    extent = plate.GetDataInformation().GetBounds()[0:4]
-    length = extent[1] - extent[0]
-    scale = args.scale or (0.15 * length / largest if largest > 0 else 1.0)
-    si = used.get("Units/System") == "SI"
+    run.extent = plate.GetDataInformation().GetBounds()[0:4]
+    run.length = run.extent[1] - run.extent[0]
+    scale = args.scale or (0.15 * run.length / largest if largest > 0
+                           else 1.0)
+    run.si = used.get("Units/System") == "SI"
     # z = -scale w: w > 0 is into the foundation, which lies below the
     # plate. Outputs of liftoff before the displacement vector are warped
     # by one made from w.
     if "displacement" in reader.PointData.keys():
-        vector = "displacement"
+        run.vector = "displacement"
     else:
         plate = pv.Calculator(Input=plate, ResultArrayName="w_vector",
                               Function="w*kHat")
-        vector = "w_vector"
-    unit = field_unit(args.directory, args.field)
+        run.vector = "w_vector"
+    run.unit = field_unit(args.directory, args.field)
     factor = 1.0
-    if si and args.field != "contact_status":
+    if run.si and args.field != "contact_status":
         raw = field_range(plate, args.field, times)
-        factor, unit = draw.engineering_unit(unit, max(map(abs, raw)))
-    coloured, field = with_reflection_signs(plate, args.field, symmetry,
-                                            factor)
-    drawn_scale = 0.0 if args.top else scale
-    warped = pv.WarpByVector(Input=coloured, Vectors=["POINTS", vector],
-                             ScaleFactor=-drawn_scale)
-    view, width, height = make_view(args)
-    warped.UpdatePipeline(times[-1])
-    display = pv.Show(warped, view)
-    colour_scale(view, display, coloured, field, times, args, unit)
-    if args.top and "uplift" in reader.PointData.keys():
-        contact_outline(view, warped, 0.005 * length, times)
-    layer = None if args.no_loads else draw.MarkLayer(view, length)
+        factor, run.unit = draw.engineering_unit(run.unit,
+                                                 max(map(abs, raw)))
+    run.coloured, run.field = with_reflection_signs(plate, args.field,
+                                                    symmetry, factor)
+    run.plate, run.has_uplift = plate, "uplift" in reader.PointData.keys()
+    run.scale = 0.0 if args.top else scale
+    run.warped = pv.WarpByVector(Input=run.coloured,
+                                 Vectors=["POINTS", run.vector],
+                                 ScaleFactor=-run.scale)
+    return run
+
+
+def time_label(view, run, directory):
+    """The text in the upper left corner."""
     label = pv.Text(Text="")
-    label_display = pv.Show(label, view)
-    label_display.Color = [0, 0, 0]
-    label_display.WindowLocation = "Upper Left Corner"
-    label_display.FontSize = 14
-    w_factor, w_unit = (1e3, " mm") if si else (1.0, "")
+    shown = pv.Show(label, view)
+    shown.Color = [0, 0, 0]
+    shown.WindowLocation = "Upper Left Corner"
+    shown.FontSize = 14
+    w_factor, w_unit = (1e3, " mm") if run.si else (1.0, "")
+    name = os.path.basename(os.path.normpath(directory))
+
+    def at(t, max_w):
+        label.Text = ("%s   %s = %.5g%s   max w = %.3g%s   w drawn x %.3g,"
+                      " down" % (name, "t" if run.si else "tau", t,
+                                 " s" if run.si else "", w_factor * max_w,
+                                 w_unit, run.scale))
+    return at
+
+
+def draw_pictures(args, run, view, pictures):
+    """One picture per output time; returns the rows of view.csv and
+    loads.csv and the pictures' paths."""
+    display = pv.Show(run.warped, view)
+    colour_scale(view, display, run.coloured, run.field, run.times, args,
+                 run.unit)
+    if args.top and run.has_uplift:
+        contact_outline(view, run.warped, 0.005 * run.length, run.times)
+    layer = None if args.no_loads else draw.MarkLayer(view, run.length)
+    label = time_label(view, run, args.directory)
     rows = ["picture,tau,max_w,x_min,x_max,y_min,y_max,z_min,z_max,"
             "field_min,field_max,field_unit"]
     load_rows = ["picture,mark,x,y,z,column,row"]
     pngs = []
-    for k, t in enumerate(times):
+    for k, t in enumerate(run.times):
         view.ViewTime = t
-        warped.UpdatePipeline(t)
-        plate.UpdatePipeline(t)
-        max_w = plate.PointData["w"].GetRange()[1]
-        label.Text = ("%s   %s = %.5g%s   max w = %.3g%s   w drawn x %.3g,"
-                      " down" % (
-                          os.path.basename(os.path.normpath(args.directory)),
-                          "t" if si else "tau", t, " s" if si else "",
-                          w_factor * max_w, w_unit, drawn_scale))
-        tips = []
-        if layer:
-            tips = layer.update(marks_of.scene_marks(used, history, t,
-                                                     extent),
-                                plate, vector, drawn_scale)
+        run.warped.UpdatePipeline(t)
+        run.plate.UpdatePipeline(t)
+        max_w = run.plate.PointData["w"].GetRange()[1]
+        label(t, max_w)
+        tips = layer.update(marks_of.scene_marks(
+            run.used, run.history, t, run.extent), run.plate, run.vector,
+            run.scale) if layer else []
         if k == 0:
-            place_camera(view, args.top, warped.GetDataInformation()
-                         .GetBounds())
+            place_camera(view, args.top,
+                         run.warped.GetDataInformation().GetBounds())
         name = "view_%05d.png" % k
         pngs.append(os.path.join(pictures, name))
         pv.Render(view)
-        pv.SaveScreenshot(pngs[-1], view, ImageResolution=[width, height])
+        pv.SaveScreenshot(pngs[-1], view, ImageResolution=view.ViewSize)
         for tip in tips:
             load_rows.append("%s,arrow,%.9g,%.9g,%.9g,%.2f,%.2f" % (
                 (name,) + tuple(tip) + draw.pixel_of(view, tip)))
-        bounds = warped.GetDataInformation().GetBounds()
-        coloured.UpdatePipeline(t)
+        bounds = run.warped.GetDataInformation().GetBounds()
+        run.coloured.UpdatePipeline(t)
         rows.append("%s,%.17g,%.17g,%s,%s" % (name, t, max_w, ",".join(
-            "%.17g" % b for b in bounds + coloured.PointData[field]
-            .GetRange()), unit))
-    with open(os.path.join(pictures, "view.csv"), "w") as f:
-        f.write("\n".join(rows) + "\n")
-    with open(os.path.join(pictures, "loads.csv"), "w") as f:
-        f.write("\n".join(load_rows) + "\n")
+            "%.17g" % b for b in bounds + run.coloured.PointData[run.field]
+            .GetRange()), run.unit))
+    return rows, load_rows, pngs
+
+
+def main():
+    args = arguments()
+    view = make_view(args)
+    run = build_pipeline(args)
+    pictures = args.pictures or os.path.join(args.directory, "pictures")
+    os.makedirs(pictures, exist_ok=True)
+    rows, load_rows, pngs = draw_pictures(args, run, view, pictures)
+    for name, lines in (("view.csv", rows), ("loads.csv", load_rows)):
+        with open(os.path.join(pictures, name), "w") as f:
+            f.write("\n".join(lines) + "\n")
     if args.animation:
         draw.write_gif(pngs, os.path.join(pictures, "view.gif"))
     print("liftoff-view: %d picture(s) in %s, warped by %s%s"
-          % (len(times), pictures, vector,
+          % (len(run.times), pictures, run.vector,
              ", view.gif" if args.animation else ""))
 
 
