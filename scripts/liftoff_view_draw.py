@@ -15,7 +15,7 @@ from vtkmodules.vtkFiltersSources import vtkConeSource
 
 # Colours of the marks (0-255), none of them on the cool-to-warm map.
 COLOURS = {"arrow": (255, 0, 255), "outline": (0, 0, 0), "line": (0, 0, 0),
-           "path": (40, 40, 40), "sensor": (0, 160, 0),
+           "path": (40, 40, 40), "heading": (40, 40, 40), "sensor": (0, 160, 0),
            "probe": (255, 160, 0), "contact": (0, 0, 0)}
 
 # An SI field's unit as engineers read it: (unit of the files, factor,

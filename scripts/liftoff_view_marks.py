@@ -11,7 +11,8 @@ in the files' units (the scene's: metres in an SI scene).
 
 A mark is (kind, points): "arrow" (a point load: one point, where it acts),
 "outline" (a patch or tyre: a closed polygon), "line" (a line load, a
-joint), "path" (where a moving load went: a polyline, drawn dashed),
+joint), "path" (where a moving load went: a polyline, drawn dashed), "heading"
+(a chevron at the path's end on the plate, the way it went),
 "sensor", "probe" (one point each).
 """
 
@@ -121,13 +122,31 @@ def load_marks(used, history, tau, plate):
             entry = "Position" if kind == "Point load" else "Path"
             point, track = where(used, history, base, name, tau, entry)
             if track:
-                marks.append(("path", [(x, y) for _, x, y in track
-                                       if inside(plate, x, y)]))
+                on_plate = [(x, y) for _, x, y in track
+                            if inside(plate, x, y)]
+                marks.append(("path", on_plate))
+                marks.extend(heading(on_plate, plate))
             if kind == "Line load":
                 marks.extend(line_marks(used, base, point, track, plate))
             elif point is not None:
                 marks.extend(shape_marks(used, kind, base, point))
     return marks
+
+
+def heading(path, plate):
+    """A chevron at the end of a path on the plate, pointing the way the
+    load went; none for a path that does not move there."""
+    if len(path) < 2:
+        return []
+    (x0, y0), (x1, y1) = path[-2], path[-1]
+    norm = math.hypot(x1 - x0, y1 - y0)
+    if norm == 0:
+        return []
+    size = 0.04 * (plate[1] - plate[0])
+    ux, uy = (x1 - x0) / norm, (y1 - y0) / norm
+    back = [(x1 - size * (ux - s * uy), y1 - size * (uy + s * ux))
+            for s in (0.6, -0.6)]
+    return [("heading", [back[0], (x1, y1), back[1]])]
 
 
 def shape_marks(used, kind, base, point):
