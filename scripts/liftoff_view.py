@@ -316,7 +316,7 @@ def draw_pictures(args, run, view, pictures):
                  run.unit)
     if args.top and run.has_uplift:
         contact_outline(view, run.warped, 0.005 * run.length, run.times)
-    layer = None if args.no_loads else draw.MarkLayer(view, run.length)
+    layer = None if args.no_loads else draw.MarkLayer(view, run.extent)
     label = time_label(view, run, args.directory)
     rows = ["picture,tau,max_w,x_min,x_max,y_min,y_max,z_min,z_max,"
             "field_min,field_max,field_unit"]

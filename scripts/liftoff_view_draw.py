@@ -42,13 +42,17 @@ def rounded_range(low, high):
     return (low, high) if high > low else (low, low + step)
 
 
-def heights(plate, points, vector, scale):
+def heights(plate, points, vector, scale, extent):
     """z of the warped plate at the flat `points` (x, y): the plate's
-    `vector` resampled there, times -scale."""
+    `vector` resampled there, times -scale. A point beyond the plate's box
+    (a tyre over the edge) takes the height at the box's nearest point."""
     cloud = vtkPolyData()
     cloud_points = vtkPoints()
+    inset = 1e-9 * (extent[1] - extent[0])
     for x, y in points:
-        cloud_points.InsertNextPoint(x, y, 0.0)
+        cloud_points.InsertNextPoint(
+            min(max(x, extent[0] + inset), extent[1] - inset),
+            min(max(y, extent[2] + inset), extent[3] - inset), 0.0)
     cloud.SetPoints(cloud_points)
     holder = pv.PVTrivialProducer()
     holder.GetClientSideObject().SetOutput(cloud)
@@ -88,8 +92,9 @@ class MarkLayer:
     """The marks of one picture as three ParaView sources: lines, points
     and arrow heads, each coloured by its own RGB (no colour map)."""
 
-    def __init__(self, view, size):
-        self.size = size
+    def __init__(self, view, extent):
+        self.extent = extent
+        self.size = extent[1] - extent[0]
         self.sources, self.displays = [], []
         for style in ("lines", "points", "surfaces"):
             source = pv.PVTrivialProducer()
@@ -113,7 +118,8 @@ class MarkLayer:
         paths = [d for kind, points in marks if kind == "path"
                  for d in dashes(points)]
         flat += [p for d in paths for p in d]
-        z = iter(heights(plate, flat, vector, scale)) if flat else iter([])
+        z = iter(heights(plate, flat, vector, scale, self.extent)
+                 if flat else [])
         lift = 0.01 * self.size
         lines, points, tips = _Polys(), _Polys(), []
         for kind, shape in [m for m in marks if m[0] != "path"] + [
