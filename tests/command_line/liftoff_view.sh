@@ -61,20 +61,26 @@ status=$?
 check $? "liftoff-view --field M_zz: exit $status and $(head -c 120 bad-field.txt)"
 # A scene in SI units (a 5 m slab): the files are in metres, so the whole
 # plate spans -2.5 to 2.5 m and the default scale draws the largest w as
-# 0.15 of its length, 0.75 m; the colour bar's unit is the files'.
+# 0.15 of its length, 0.75 m; the colour bar's unit is an engineer's (kN m/m).
 printf '%s\n' 'subsection Units' '  set System = SI' '  set Length = 5' '  set Thickness = 0.25' \
   "  set Young's modulus = 30e9" '  set Density = 2400' '  set Subgrade modulus = 50e6' 'end' \
   'subsection Discretization' '  set Symmetry = quarter' '  set Cells along x = 4' '  set Cells along y = 4' 'end' \
   'subsection Loads' '  subsection Point load 1' '    set Magnitude = 50e3' '  end' 'end' \
   'subsection Time integration' '  set Time step = 2e-4' '  set End time = 2e-3' 'end' \
-  'subsection Output' '  set Directory = si' '  set VTU interval = 5' 'end' > si.prm
+  'subsection Output' '  set Directory = si' '  set VTU interval = 5' '  set Probe points = 1, 1' 'end' > si.prm
 "$liftoff" -q si.prm >/dev/null 2>si-stderr.txt \
   && "$scripts/liftoff-view" si --size 400,300 --field M_xx >/dev/null 2>>si-stderr.txt
 status=$?
 si_view=$(awk -F, 'NR > 1 { if ($8 < low) low = $8; b = $4 " " $5 " " $6 " " $7; u = $12 }
   END { print b "|" low "|" u }' low=0 si/pictures/view.csv 2>/dev/null)
-[ "$status" -eq 0 ] && [ "$si_view" = "-2.5 2.5 -2.5 2.5|-0.75|N m/m" ]
-check $? "liftoff-view of an SI scene: exit $status; bounds, lowest point and unit of M_xx '$si_view' (want '-2.5 2.5 -2.5 2.5|-0.75|N m/m')"
+[ "$status" -eq 0 ] && [ "$si_view" = "-2.5 2.5 -2.5 2.5|-0.75|kN m/m" ]
+check $? "liftoff-view of an SI scene: exit $status; bounds, lowest point and unit of M_xx '$si_view' (want '-2.5 2.5 -2.5 2.5|-0.75|kN m/m')"
+# The point load's arrow drawn where the scene puts it: its tip's pixel,
+# projected by the picture's camera from the load's point on the warped
+# plate, has the arrow's colour (and the plate below it has not).
+/usr/bin/python3 "$tests/arrow_pixels.py" si/pictures >arrows.txt
+check $? "the point load's arrow tips at their projected pixels: $(grep -c ok arrows.txt) ok, $(grep -c ASTRAY arrows.txt) astray"
+[ "$(grep -c ok arrows.txt)" -gt 0 ] || cat arrows.txt
 series=$(pvpython "$tests/series_time.py" out 2>/dev/null | tail -1)
 same=$(awk -v a="$series" -v b="$pvd_times" 'BEGIN { n = split(a, x, " "); m = split(b, y, " "); ok = (n == m && n == 4); for (i = 1; i <= n; ++i) if ((x[i] - y[i]) ^ 2 > 1e-24) ok = 0; print ok }')
 [ "$same" = 1 ]; check $? "the .pvtu series opened without the .pvd has the times $series"
