@@ -1,5 +1,5 @@
 #include <liftoff/base/archives.h>
-#include <liftoff/fem/joint_dowels.h>
+#include <liftoff/contact/joint_dowels.h>
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/output/time_history.h>

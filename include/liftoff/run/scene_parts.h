@@ -5,10 +5,10 @@
 #include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 #include <liftoff/contact/active_set_iteration.h>
+#include <liftoff/contact/joint_dowels.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/initial_conditions.h>
-#include <liftoff/fem/joint_dowels.h>
 #include <liftoff/fem/joint_springs.h>
 #include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/fem/mindlin_plate.h>

@@ -4,8 +4,8 @@
 #include <liftoff/base/archives.h>
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
+#include <liftoff/contact/joint_dowels.h>
 #include <liftoff/fem/discretization.h>
-#include <liftoff/fem/joint_dowels.h>
 
 #include <algorithm>
 #include <cmath>
