@@ -1,0 +1,249 @@
+#!/usr/bin/env python3
+"""scripts/liftoff-study --target against closed forms.
+
+    study_target.py LIFTOFF LIFTOFF_STUDY
+
+Two scenes whose converged value is known exactly:
+
+- The rigid bounce: a free plate (quarter, Q1) on a bilateral bed,
+  Gamma = 100, under a uniform pressure q = 1 applied at tau = 0. The plate
+  translates rigidly (the bed and the inertia are both consistent with the
+  uniform load, so every mesh holds the motion exactly), w_tt + Gamma w = q:
+  w = (q / Gamma) (1 - cos(10 tau)), up to tau = 0.7. Ladder: time steps
+  0.02 ... 2.5e-3 x 2 and 4 cells per side; only the time step errs.
+- A clamped disc (radius 1/2, Delta = 0.05, nu = 0.3) under q = 1, static,
+  Q2, 0 to 3 global refinements: w(0) = q a^4 / 64 + q a^2 / (4 S) (as
+  circular_plate.py). Only the mesh errs.
+
+For each, the climb to its target (1e-3 and 1e-4, relative) must choose a
+run whose true error (the largest difference from the closed form over
+the run's own history rows, relative to the closed form's largest
+magnitude) is below the target, with an estimate within a factor 2 of it,
+and whose unknowns x steps are at most 4 times those of the cheapest run
+of the full ladder that meets the target by its true error (4: one mesh
+rung in 2D; measured 2.8 for the bounce, where the climb must try the
+second mesh to learn that it changes nothing, and 1 for the disc). The
+full ladder is then run by the study tool into the same folder with
+--reuse (the climb's runs are kept).
+
+Hostile input: a target <= 0, NaN, infinite or not a number, a bad assumed
+order, --target with --sweep zip, --absolute without --target, an unknown
+quantity, a ladder that runs out before the target (the best estimate
+named), a run that fails: each one line on stderr, a non-zero exit, and no
+target.md or target.csv written.
+"""
+
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "common"))
+from checks import check, finish  # noqa: E402
+
+BOUNCE = """
+subsection Plate
+  set Thickness ratio = 0.1
+end
+subsection Foundation
+  set Model     = bilateral
+  set Stiffness = 100
+end
+subsection Discretization
+  set Symmetry = quarter
+end
+subsection Loads
+  subsection Pressure 1
+    set Region    = whole plate
+    set Magnitude = 1
+  end
+end
+subsection Time integration
+  set End time = 0.7
+end
+subsection Output
+  set Probe points   = 0.25, 0
+  set Write energies = false
+end
+"""
+BOUNCE_LADDER = ["--time-steps", "0.02,0.01,5e-3,2.5e-3",
+                 "--refine", "Discretization/Cells along x=2,4",
+                 "--refine", "Discretization/Cells along y=2,4",
+                 "--qoi", "w(0.25;0)"]
+
+A, NU, CHI, DELTA = 0.5, 0.3, 5.0 / 6.0, 0.05
+S = 6 * CHI * (1 - NU) / DELTA**2
+DISC = """
+subsection Analysis
+  set Type = static
+end
+subsection Plate
+  set Thickness ratio = %g
+  set Poisson ratio   = %g
+end
+subsection Foundation
+  set Model = none
+end
+subsection Loads
+  subsection Pressure 1
+    set Region    = whole plate
+    set Magnitude = 1
+  end
+end
+subsection Discretization
+  set Shape             = disc
+  set Radius            = %g
+  set Polynomial degree = 2
+end
+subsection Boundary conditions
+  set Outer = clamped
+end
+subsection Output
+  set Probe points   = 0, 0
+  set Write energies = false
+end
+""" % (DELTA, NU, A)
+DISC_LADDER = ["--refine", "Discretization/Global refinements=0,1,2,3",
+               "--qoi", "w(0;0)"]
+
+
+def bounce_exact(tau):
+    return 0.01 * (1 - math.cos(10 * tau))
+
+
+def disc_exact(tau):
+    return A**4 / 64 + A**2 / (4 * S)
+
+
+def read_rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def true_error(folder, label, column, exact, magnitude):
+    rows = read_rows(os.path.join(folder, "runs", label, "history.csv"))
+    return max(abs(float(r[column]) - exact(float(r["tau"])))
+               for r in rows) / magnitude
+
+
+def study(tool, liftoff, scene, output, *extra):
+    return subprocess.run([tool, scene, "--executable", liftoff,
+                           "--no-plot", "--output", output] + list(extra),
+                          capture_output=True, text=True)
+
+
+def climb_and_ladder(tool, liftoff, work, case):
+    """The climb to the target, then the full ladder; the checks."""
+    name, scene, ladder, target, column, exact, magnitude = case
+    output = os.path.join(work, name)
+    run = study(tool, liftoff, scene, output, "--target", str(target),
+                *ladder)
+    print(run.stdout)
+    check(run.returncode == 0, "%s: the climb to %g runs (exit %d: %s)"
+          % (name, target, run.returncode, run.stderr.strip()))
+    if run.returncode:
+        return
+    made = read_rows(os.path.join(output, "target.csv"))
+    chosen = next(r for r in made if r["chosen"] == "1")
+    check(all(any(line.startswith("[%d] %s " % (k, r["run"]))
+                  for line in run.stdout.splitlines())
+              for k, r in enumerate(made, 1)),
+          "%s: a progress line for each of the %d runs made"
+          % (name, len(made)))
+    error = true_error(output, chosen["run"], column, exact, magnitude)
+    estimate = float(chosen["estimate:" + column])
+    check(error <= target, "%s: the chosen run %s has true error %.3g <= "
+          "target %g" % (name, chosen["run"], error, target))
+    check(0.5 <= estimate / error <= 2, "%s: its estimate %.3g within a "
+          "factor 2 of the true error %.3g" % (name, estimate, error))
+
+    full = study(tool, liftoff, scene, output, "--reuse", "--jobs", "2",
+                 *ladder)
+    check(full.returncode == 0, "%s: the full ladder runs (exit %d: %s)"
+          % (name, full.returncode, full.stderr.strip()))
+    if full.returncode:
+        return
+    rows = read_rows(os.path.join(output, "study.csv"))
+    work_of = {r["run"]: int(r["dofs"]) * max(1, int(r["steps"]))
+               for r in rows}
+    meeting = [r["run"] for r in rows
+               if true_error(output, r["run"], column, exact,
+                             magnitude) <= target]
+    cheapest = min(meeting, key=work_of.get)
+    factor = work_of[chosen["run"]] / work_of[cheapest]
+    print("%s: chosen %s (dofs x steps %d, %d runs made), the full ladder's "
+          "cheapest meeting %g by its true error %s (%d): factor %.2f"
+          % (name, chosen["run"], work_of[chosen["run"]], len(made), target,
+             cheapest, work_of[cheapest], factor))
+    check(factor <= 4, "%s: the chosen run's unknowns x steps %.2f times "
+          "the cheapest meeting the target in the full ladder (<= 4)"
+          % (name, factor))
+
+
+def refused(tool, liftoff, scene, output, what, expect, *extra):
+    """A study that must stop with one line, non-zero, no target files."""
+    run = study(tool, liftoff, scene, output, *extra)
+    message = run.stderr.strip()
+    left = [n for n in ("target.md", "target.csv", "target.tmp.md",
+                        "target.tmp.csv")
+            if os.path.exists(os.path.join(output, n))]
+    check(run.returncode != 0 and expect in message and "\n" not in message
+          and not left,
+          "%s: exit %d, one line: %s%s" % (what, run.returncode, message,
+                                           "; left %s" % left if left
+                                           else ""))
+
+
+def hostile(tool, liftoff, work, scene):
+    fresh = os.path.join(work, "never")
+    for value in ("0", "-1e-3", "nan", "inf", "abc"):
+        refused(tool, liftoff, scene, fresh, "--target %s" % value,
+                "--target wants a number > 0, got '%s'" % value,
+                "--target=" + value, *BOUNCE_LADDER)
+    refused(tool, liftoff, scene, fresh, "--assumed-order 0",
+            "--assumed-order wants a number > 0", "--target", "1e-3",
+            "--assumed-order", "0", *BOUNCE_LADDER)
+    refused(tool, liftoff, scene, fresh, "--sweep zip", "--target climbs a "
+            "product ladder", "--target", "1e-3", "--sweep", "zip",
+            "--time-steps", "0.02,0.01")
+    refused(tool, liftoff, scene, fresh, "--absolute alone",
+            "--absolute applies to --target", "--absolute",
+            *BOUNCE_LADDER)
+    check(not os.path.exists(fresh), "no folder made for a refused option")
+    # On the bounce's folder, whose runs --reuse takes.
+    bounce = os.path.join(work, "bounce")
+    refused(tool, liftoff, scene, bounce, "an unknown quantity",
+            "'w(9;9)' is not a column of history.csv", "--reuse",
+            "--target", "1e-3", "--time-steps", "0.02,0.01",
+            "--qoi", "w(9;9)")
+    refused(tool, liftoff, scene, bounce, "a ladder too short",
+            "the ladder ran out before the target 1e-07: the best estimate "
+            "is ", "--reuse", "--target", "1e-7", *BOUNCE_LADDER)
+    refused(tool, liftoff, scene, os.path.join(work, "failing"),
+            "a run that fails", "run c2-dt0.02 failed (exit",
+            "--target", "1e-3", "--set", "Plate/Thickness ratio=-1",
+            *BOUNCE_LADDER)
+
+
+def main():
+    liftoff, tool = sys.argv[1], sys.argv[2]
+    with tempfile.TemporaryDirectory() as work:
+        scenes = {}
+        for name, text in (("bounce", BOUNCE), ("disc", DISC)):
+            scenes[name] = os.path.join(work, name + ".prm")
+            with open(scenes[name], "w") as f:
+                f.write(text)
+        for case in (("bounce", scenes["bounce"], BOUNCE_LADDER, 1e-3,
+                      "w(0.25;0)", bounce_exact, 0.02),
+                     ("disc", scenes["disc"], DISC_LADDER, 1e-4, "w(0;0)",
+                      disc_exact, disc_exact(0))):
+            climb_and_ladder(tool, liftoff, work, case)
+        hostile(tool, liftoff, work, scenes["bounce"])
+    finish()
+
+
+if __name__ == "__main__":
+    main()
