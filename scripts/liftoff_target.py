@@ -197,6 +197,7 @@ class Climb:
         climb) is called after every run."""
         position = {a: 0 for a in AXES}
         run = self.visit(position)
+        self.record(run)
         report(run, self)
         for axis in self.ladder:
             run = self.advance(position, axis, run)
@@ -207,13 +208,25 @@ class Climb:
                 return run
             axis = self.next_axis(position, run)
             if axis is None:
+                best = min((r for r in self.made if r["worst"] is not None),
+                           key=lambda r: r["worst"])
                 raise LadderOut(
                     "the ladder ran out before the target %g: the best "
-                    "estimate is %s for %s at run %s (%s)"
-                    % (self.target, "%.3g" % total, q, run["label"],
-                       self.parts_text(q)))
+                    "estimate was %.3g, for %s at run %s (%s)"
+                    % (self.target, best["worst"], best["worst_qoi"],
+                       best["label"], best["parts"][best["worst_qoi"]]))
             run = self.advance(position, axis, run)
             report(run, self)
+
+    def record(self, run):
+        """Keep with the run the estimate known when it was made (None
+        until each axis of the ladder has two rungs)."""
+        ready = all(a in self.parts for a in self.ladder)
+        run["estimate"] = {q: self.total(q) if ready else None
+                           for q in self.qois}
+        run["parts"] = {q: self.parts_text(q) for q in self.qois}
+        run["worst_qoi"], run["worst"] = (self.worst() if ready
+                                          else (self.qois[0], None))
 
     def advance(self, position, axis, run):
         """One rung along axis from run (at position, which moves)."""
@@ -221,6 +234,7 @@ class Climb:
         fine = self.visit(position)
         self.step(axis, run, fine)
         self.estimate(axis)
+        self.record(fine)
         return fine
 
     def parts_text(self, qoi):
@@ -251,20 +265,9 @@ def part_text(part):
     return "%.3g (%s)" % (part["error"], how)
 
 
-def record(run, climb):
-    """Keep with the run the estimate known when it was made (None until
-    each axis of the ladder has two rungs)."""
-    ready = all(a in climb.parts for a in climb.ladder)
-    run["estimate"] = {q: climb.total(q) if ready else None
-                       for q in climb.qois}
-    run["parts"] = {q: climb.parts_text(q) for q in climb.qois}
-
-
 def progress_line(run, climb):
     """One line per run made: the run, its cost, the estimate so far."""
-    record(run, climb)
-    q = max(climb.qois, key=lambda q: run["estimate"][q] or 0)
-    e = run["estimate"][q]
+    q, e = run["worst_qoi"], run["worst"]
     return ("[%d] %-20s dofs %7d  steps %5d  process %7.3f s  |  %s" % (
         len(climb.made), run["label"], run["dofs"], run["steps"],
         run["process_wall"],
