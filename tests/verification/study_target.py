@@ -27,10 +27,10 @@ full ladder is then run by the study tool into the same folder with
 --reuse (the climb's runs are kept).
 
 Hostile input: a target <= 0, NaN, infinite or not a number, a bad assumed
-order, --target with --sweep zip, --absolute without --target, an unknown
-quantity, a ladder that runs out before the target (the best estimate
-named), a run that fails: each one line on stderr, a non-zero exit, and no
-target.md or target.csv written.
+order, --target with --sweep zip, a ladder of one run, --absolute without
+--target, an unknown quantity, a ladder that runs out before the target
+(the best estimate named), a run that fails: each one line on stderr, a
+non-zero exit, and no target.md or target.csv written.
 """
 
 import csv
@@ -166,6 +166,9 @@ def hostile(tool, liftoff, work, scene):
     refused(tool, liftoff, scene, fresh, "--sweep zip", "--target climbs a "
             "product ladder", "--target", "1e-3", "--sweep", "zip",
             "--time-steps", "0.02,0.01")
+    refused(tool, liftoff, scene, fresh, "a ladder of one run",
+            "--target needs a ladder", "--target", "1e-3", "--time-steps",
+            "0.02")
     refused(tool, liftoff, scene, fresh, "--absolute alone",
             "--absolute applies to --target", "--absolute",
             *BOUNCE_LADDER)
