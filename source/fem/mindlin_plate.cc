@@ -53,6 +53,13 @@ namespace liftoff
                         + quantity("number"));
     prm.leave_subsection();
 
+    declare_slab_parameters(prm);
+  }
+
+
+  void
+  MindlinPlate::declare_slab_parameters(ParameterHandler &prm)
+  {
     prm.enter_subsection("Slabs");
     prm.declare_entry(
       "Thicknesses",

@@ -85,6 +85,9 @@ namespace liftoff
     section(const unsigned int slab) const;
 
   private:
+    /// The slabs' sections, in the subsection Slabs.
+    static void
+    declare_slab_parameters(ParameterHandler &prm);
     void
     parse_slab_sections(ParameterHandler &prm);
   };
