@@ -41,6 +41,7 @@ namespace liftoff
     OutputDirectory::declare_parameters(prm);
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
+    JointProfiles::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
     Envelopes::declare_parameters(prm);
     prm.leave_subsection();
@@ -60,6 +61,8 @@ namespace liftoff
       output_directory = scene.get("Directory");
       time_history.parse_parameters(scene, parts.plate);
       profile_output.parse_parameters(scene);
+      joint_profiles.parse_parameters(scene,
+                                      parts.discretization.geometry().slabs());
       field_output.parse_parameters(scene, parts.plate);
       envelopes.parse_parameters(scene);
       scene.leave_subsection();

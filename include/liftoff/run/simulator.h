@@ -12,6 +12,7 @@
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/field_output.h>
+#include <liftoff/output/joint_profiles.h>
 #include <liftoff/output/output.h>
 #include <liftoff/output/profile_output.h>
 #include <liftoff/output/progress_line.h>
@@ -131,6 +132,7 @@ namespace liftoff
     SceneParts           parts;
     TimeHistory          time_history;
     ProfileOutput        profile_output;
+    JointProfiles        joint_profiles;
     FieldOutput          field_output;
     Envelopes            envelopes;
     SmallDeflectionCheck small_deflection;
@@ -140,6 +142,7 @@ namespace liftoff
     /// What is written after each step, in this order.
     std::vector<Output *> outputs{&time_history,
                                   &profile_output,
+                                  &joint_profiles,
                                   &field_output,
                                   &envelopes,
                                   &deflectometer_sensors,
