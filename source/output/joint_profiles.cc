@@ -31,14 +31,14 @@ namespace liftoff
 
 
   void
-  JointProfiles::parse_parameters(ParameterHandler &prm,
-                                  const SlabLayout &slabs)
+  JointProfiles::parse_parameters(ParameterHandler    &prm,
+                                  const PlateGeometry &geometry)
   {
     is_on = prm.get_bool("Joint profiles");
     times.parse(prm.get("Profile times"));
     if (!is_on)
       return;
-    const auto &joints = slabs.joints();
+    const auto &joints = geometry.slabs().joints();
     AssertThrow(std::any_of(joints.begin(),
                             joints.end(),
                             [](const Joint &j) { return !j.tied; }),
@@ -123,6 +123,8 @@ namespace liftoff
     const double  w      = units.scale(Quantity::deflection);
     std::ostream &out    = file.stream();
     out << std::setprecision(12);
+    // The shear + 0.0: a free joint's -0 (0 times a negative jump) is
+    // written as 0.
     for (const auto &r : rows)
       {
         const double larger  = std::abs(r[4]) > std::abs(r[5]) ? r[4] : r[5];
@@ -132,7 +134,7 @@ namespace liftoff
             << length * r[1] << ',' << length * r[2] << ',' << length * r[3]
             << ',' << w * r[4] << ',' << w * r[5] << ','
             << (larger == 0 ? 1.0 : smaller / larger) << ','
-            << units.scale(Quantity::shear_force) * r[6] << '\n';
+            << (units.scale(Quantity::shear_force) * r[6] + 0.0) << '\n';
       }
     file.flush();
   }

@@ -13,7 +13,7 @@ namespace liftoff
 {
   using namespace dealii;
 
-  class SlabLayout;
+  class PlateGeometry;
 
   /**
    * Profiles along the joints at the Profile times (`Output/Joint
@@ -34,7 +34,7 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     /// Refuses profiles of a plate without joints that are not tied.
     void
-    parse_parameters(ParameterHandler &prm, const SlabLayout &slabs);
+    parse_parameters(ParameterHandler &prm, const PlateGeometry &geometry);
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
     void

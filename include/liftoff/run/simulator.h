@@ -12,6 +12,7 @@
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/field_output.h>
+#include <liftoff/output/joint_probes.h>
 #include <liftoff/output/joint_profiles.h>
 #include <liftoff/output/output.h>
 #include <liftoff/output/profile_output.h>
@@ -133,6 +134,7 @@ namespace liftoff
     TimeHistory          time_history;
     ProfileOutput        profile_output;
     JointProfiles        joint_profiles;
+    JointProbes          joint_probes;
     FieldOutput          field_output;
     Envelopes            envelopes;
     SmallDeflectionCheck small_deflection;
@@ -147,6 +149,7 @@ namespace liftoff
                                   &envelopes,
                                   &deflectometer_sensors,
                                   &dowel_forces,
+                                  &joint_probes,
                                   &small_deflection};
     Checkpoint            checkpoint;
 
