@@ -174,6 +174,7 @@ namespace liftoff
         segment.w_jump.push_back(w);
         segment.rotation_jump.push_back(psi);
       }
+    segment.points = here.get_quadrature_points();
     return segment;
   }
 
@@ -248,6 +249,49 @@ namespace liftoff
   }
 
 
+  std::array<double, 3>
+  JointSprings::sides(const Segment             &segment,
+                      const std::vector<double> &jump,
+                      const LA::MPI::Vector     &ghosted_u)
+  {
+    // Each side's w times sqrt(JxW), and sqrt(JxW) itself as the sum of its
+    // w shape values (a partition of unity).
+    const std::size_t n    = segment.dofs.size() / 2;
+    double            here = 0, there = 0, root = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        here += jump[i] * ghosted_u(segment.dofs[i]);
+        there -= jump[n + i] * ghosted_u(segment.dofs[n + i]);
+        root += jump[i];
+      }
+    return {{here, there, root}};
+  }
+
+
+  std::vector<JointSprings::JointPoint>
+  JointSprings::points_along(const LA::MPI::Vector &ghosted_u) const
+  {
+    std::vector<JointPoint> points;
+    for (const Segment &segment : segments)
+      {
+        const double agg = stiffness_of(shear_stiffness, segment.joint);
+        for (unsigned int q = 0; q < segment.points.size(); ++q)
+          {
+            const auto [here, there, root] =
+              sides(segment, segment.w_jump[q], ghosted_u);
+            const double lower = (segment.sign > 0 ? here : there) / root;
+            const double upper = (segment.sign > 0 ? there : here) / root;
+            points.push_back({segment.joint,
+                              segment.points[q],
+                              lower,
+                              upper,
+                              agg * (lower - upper)});
+          }
+      }
+    return points;
+  }
+
+
   std::vector<JointSprings::Transfer>
   JointSprings::transfer(const LA::MPI::Vector &ghosted_u) const
   {
@@ -259,19 +303,10 @@ namespace liftoff
     std::vector<std::pair<double, double>> loaded(n_joints, {0.0, 1.0});
     for (const Segment &segment : segments)
       {
-        const double      agg = stiffness_of(shear_stiffness, segment.joint);
-        const std::size_t n   = segment.dofs.size() / 2;
+        const double agg = stiffness_of(shear_stiffness, segment.joint);
         for (const std::vector<double> &jump : segment.w_jump)
           {
-            // Each side's w times sqrt(JxW), and sqrt(JxW) itself as the
-            // sum of its w shape values (a partition of unity).
-            double here = 0, there = 0, root = 0;
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                here += jump[i] * ghosted_u(segment.dofs[i]);
-                there -= jump[n + i] * ghosted_u(segment.dofs[n + i]);
-                root += jump[i];
-              }
+            const auto [here, there, root] = sides(segment, jump, ghosted_u);
             force[segment.joint] += segment.sign * agg * (here - there) * root;
             const double larger = std::max(std::abs(here), std::abs(there));
             if (larger / root > loaded[segment.joint].first)

@@ -1,5 +1,10 @@
+#include <deal.II/base/utilities.h>
+
 #include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
 #include <liftoff/fem/mindlin_plate.h>
+
+#include <cmath>
 
 namespace liftoff
 {
@@ -47,6 +52,35 @@ namespace liftoff
                       "would stiffen the plate like a thinner one."
                         + quantity("number"));
     prm.leave_subsection();
+
+    declare_slab_parameters(prm);
+  }
+
+
+  void
+  MindlinPlate::declare_slab_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Slabs");
+    prm.declare_entry(
+      "Thicknesses",
+      "",
+      Patterns::List(Patterns::Double(), 0, 1024),
+      "H of each slab (a widened lane, a thinner shoulder): one value for "
+      "every slab or one per slab in the order of their numbers (along x "
+      "first, from the bottom left: slab 1 is the left bottom one); empty: "
+      "the plate's. In m in an SI scene, in units of L (as Plate/Thickness "
+      "ratio) in a dimensionless one; within [1e-5, 1] L. The slabs share "
+      "the plate's density and Poisson ratio; not with a temperature load."
+        + quantity("length"));
+    prm.declare_entry(
+      "Modulus ratios",
+      "",
+      Patterns::List(Patterns::Double(), 0, 1024),
+      "E_s / E, Young's modulus of each slab over the plate's, as "
+      "Thicknesses: one value or one per slab; empty: 1. Within [1e-6, "
+      "1e6]."
+        + quantity("number"));
+    prm.leave_subsection();
   }
 
 
@@ -70,11 +104,88 @@ namespace liftoff
     shear_correction = prm.get_double("Shear correction factor");
     prm.leave_subsection();
 
+    parse_slab_sections(prm);
+
     // Patterns::Double admits the closed interval; the model needs it open.
     AssertThrow(poisson_ratio > -1.0 && poisson_ratio < 0.5,
                 ExcMessage("Plate/Poisson ratio must lie in (-1, 0.5)."));
     AssertThrow(shear_correction > 0,
                 ExcMessage("Plate/Shear correction factor must be > 0."));
+  }
+
+
+  void
+  MindlinPlate::parse_slab_sections(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Slabs");
+    const unsigned int n_slabs =
+      prm.get_integer("Slabs along x") * prm.get_integer("Slabs along y");
+    // One value per slab, from an empty entry (1), one value or n.
+    const auto per_slab = [&](const std::string &entry,
+                              const double       scale,
+                              const double       low,
+                              const double       high) {
+      const std::string         text = prm.get(entry);
+      const std::vector<double> values =
+        Utilities::string_to_double(Utilities::split_string_list(text));
+      const std::string name = "Slabs/" + entry + " = " + text;
+      AssertThrow(values.empty() || n_slabs > 1,
+                  ExcMessage(name
+                             + ": the plate is one slab (Slabs along x "
+                               "and y are 1); give its section in "
+                               "Plate (or Units)."));
+      AssertThrow(values.size() <= 1 || values.size() == n_slabs,
+                  ExcMessage(name
+                             + ": give one value for every slab or one "
+                               "per slab ("
+                             + std::to_string(n_slabs) + ")."));
+      for (const double v : values)
+        AssertThrow(std::isfinite(v) && v >= low && v <= high,
+                    ExcMessage(name + ": each value must lie in ["
+                               + format_number(low) + ", " + format_number(high)
+                               + "]."));
+      std::vector<double> ratios(n_slabs, 1.0);
+      for (unsigned int s = 0; s < n_slabs && !values.empty(); ++s)
+        ratios[s] = values[values.size() == 1 ? 0 : s] / scale;
+      return ratios;
+    };
+    const std::vector<double> thickness =
+      per_slab("Thicknesses", thickness_ratio, 1e-5, 1.0);
+    const std::vector<double> modulus =
+      per_slab("Modulus ratios", 1.0, 1e-6, 1e6);
+    prm.leave_subsection();
+
+    slab_sections.clear();
+    for (unsigned int s = 0; s < n_slabs; ++s)
+      slab_sections.push_back({thickness[s], modulus[s]});
+    if (!has_slab_sections())
+      slab_sections.clear();
+  }
+
+
+  bool
+  MindlinPlate::has_slab_sections() const
+  {
+    for (const SlabSection &s : slab_sections)
+      if (s.thickness != 1.0 || s.modulus != 1.0)
+        return true;
+    return false;
+  }
+
+
+  SectionCoefficients
+  MindlinPlate::section(const unsigned int slab) const
+  {
+    if (slab_sections.empty())
+      return {1.0, shear_stiffness(), 1.0, rotary_inertia(), thickness_ratio};
+    AssertIndexRange(slab, slab_sections.size());
+    const double t = slab_sections[slab].thickness;
+    const double e = slab_sections[slab].modulus;
+    return {e * t * t * t,
+            e * t * shear_stiffness(),
+            t,
+            t * t * t * rotary_inertia(),
+            t * thickness_ratio};
   }
 
 

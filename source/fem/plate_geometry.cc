@@ -254,6 +254,9 @@ namespace liftoff
                              "conditions/Bottom and Top to be equal (the plate "
                              "must be symmetric about y = 0)."));
     slab_layout.parse_parameters(prm, *this);
+    slab_layout.require_symmetric(plate.slab_sections,
+                                  symmetry_axes(),
+                                  symmetry_name);
   }
 
 

@@ -16,19 +16,21 @@ namespace liftoff
     // Bending (psi only) and inertia of one cell at the full Gauss rule of
     // fe_values, added to the cell matrices.
     void
-    add_bending_and_inertia(const FEValues<2>  &fe_values,
-                            const MindlinPlate &plate,
-                            FullMatrix<double> &cell_stiffness,
-                            FullMatrix<double> &cell_mass)
+    add_bending_and_inertia(const FEValues<2>         &fe_values,
+                            const MindlinPlate        &plate,
+                            const SectionCoefficients &section,
+                            FullMatrix<double>        &cell_stiffness,
+                            FullMatrix<double>        &cell_mass)
     {
       const FEValuesExtractors::Scalar w(0), psi_x(1), psi_y(2);
       const double                     nu       = plate.poisson_ratio;
       const double                     twisting = plate.twisting_stiffness();
-      const double                     rotary   = plate.rotary_inertia();
+      const double                     rotary   = section.rotary;
       const unsigned int               n_dofs   = cell_stiffness.m();
       for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
         {
-          const double dx = fe_values.JxW(q);
+          const double dx      = fe_values.JxW(q);
+          const double bend_dx = section.bending * dx;
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const Tensor<1, 2> gx_i    = fe_values[psi_x].gradient(i, q);
@@ -43,9 +45,10 @@ namespace liftoff
                     (gx_i[0] * gx_j[0] + gy_i[1] * gy_j[1]
                      + nu * (gx_i[0] * gy_j[1] + gy_i[1] * gx_j[0])
                      + twisting * twist_i * twist_j)
-                    * dx;
+                    * bend_dx;
                   cell_mass(i, j) +=
-                    (fe_values[w].value(i, q) * fe_values[w].value(j, q)
+                    (section.mass * fe_values[w].value(i, q)
+                       * fe_values[w].value(j, q)
                      + rotary
                          * (fe_values[psi_x].value(i, q)
                               * fe_values[psi_x].value(j, q)
@@ -107,8 +110,6 @@ namespace liftoff
                                        fe,
                                        disc.element().shear_integration());
 
-    const double shear = plate.shear_stiffness();
-
     FullMatrix<double>                   cell_stiffness(n_dofs, n_dofs);
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
@@ -120,8 +121,10 @@ namespace liftoff
         fe_values.reinit(cell);
         shear_strain.reinit(cell);
 
-        add_bending_and_inertia(fe_values, plate, cell_stiffness, cell_mass);
-        add_shear(shear_strain, shear, cell_stiffness);
+        const SectionCoefficients section = plate.section(cell->material_id());
+        add_bending_and_inertia(
+          fe_values, plate, section, cell_stiffness, cell_mass);
+        add_shear(shear_strain, section.shear, cell_stiffness);
 
         cell->get_dof_indices(dof_indices);
         disc.constraints.distribute_local_to_global(cell_stiffness,

@@ -170,6 +170,35 @@ namespace liftoff
 
 
   void
+  SlabLayout::require_symmetric(const std::vector<SlabSection>  &sections,
+                                const std::vector<unsigned int> &symmetry_axes,
+                                const std::string &symmetry_name) const
+  {
+    if (sections.empty())
+      return;
+    for (unsigned int s = 0; s < sections.size(); ++s)
+      for (const unsigned int axis : symmetry_axes)
+        {
+          std::array<unsigned int, 2> index = {
+            {s % n_slabs[0], s / n_slabs[0]}};
+          index[axis]          = n_slabs[axis] - 1 - index[axis];
+          const unsigned int m = index[0] + n_slabs[0] * index[1];
+          const bool same      = sections[m].thickness == sections[s].thickness
+                            && sections[m].modulus == sections[s].modulus;
+          AssertThrow(same,
+                      ExcMessage("Slabs/Thicknesses and Modulus ratios: slab "
+                                 + std::to_string(s + 1) + " and slab "
+                                 + std::to_string(m + 1)
+                                 + ", its mirror image, differ, so "
+                                   "Discretization/Symmetry = "
+                                 + symmetry_name
+                                 + " would model another plate: model the "
+                                   "full plate."));
+        }
+  }
+
+
+  void
   SlabLayout::cut(const Triangulation<2>                  &whole,
                   parallel::distributed::Triangulation<2> &cut) const
   {

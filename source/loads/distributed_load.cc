@@ -60,13 +60,23 @@ namespace liftoff
   {
     const auto density = [&](const Point<2> &x) {
       return std::array<double, 3>{
-        {magnitude * intensity.at(x, tau), 0.0, 0.0}};
+        {magnitude * intensity.at(x, tau) * density_factor(discretization, x),
+         0.0,
+         0.0}};
     };
     integrate(PatchIntegrator(discretization),
               density,
               discretization.geometry().plate_box(),
               tau,
               vector);
+  }
+
+
+  double
+  DistributedLoad::density_factor(const Discretization &,
+                                  const Point<2> &) const
+  {
+    return 1.0;
   }
 
 

@@ -1,5 +1,6 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/scene_input.h>
+#include <liftoff/fem/plate_geometry.h>
 #include <liftoff/loads/mirror_image.h>
 #include <liftoff/loads/pressure.h>
 
@@ -56,8 +57,29 @@ namespace liftoff
     const std::string         name = "Loads/Self weight";
     std::unique_ptr<Pressure> load(new Pressure(
       name, q, LoadHistory("1", name), Intensity("1", name), "whole plate"));
-    load->permanent = true;
+    load->permanent      = true;
+    load->is_self_weight = true;
     return load;
+  }
+
+
+  void
+  Pressure::use_plate(const MindlinPlate &plate)
+  {
+    slab_weights.clear();
+    if (is_self_weight)
+      for (unsigned int s = 0; s < plate.slab_sections.size(); ++s)
+        slab_weights.push_back(plate.section(s).mass);
+  }
+
+
+  double
+  Pressure::density_factor(const Discretization &discretization,
+                           const Point<2>       &x) const
+  {
+    if (slab_weights.empty())
+      return 1.0;
+    return slab_weights[discretization.geometry().slabs().slab_of(x)];
   }
 
 

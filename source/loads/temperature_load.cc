@@ -118,6 +118,11 @@ namespace liftoff
   void
   TemperatureLoad::use_plate(const MindlinPlate &plate)
   {
+    AssertThrow(!plate.has_slab_sections(),
+                ExcMessage(load_name
+                           + " on slabs of different Slabs/Thicknesses or "
+                             "Modulus ratios: a temperature is modelled on "
+                             "slabs of one section only."));
     one_plus_nu     = 1 + plate.poisson_ratio;
     thickness_ratio = plate.thickness_ratio;
   }

@@ -68,13 +68,7 @@ namespace liftoff
     end      = Point<2>(b[0], b[1]);
     n_points = prm.get_integer("Profile points");
     rider    = prm.get("Profile follows");
-    times    = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Profile times")));
-    for (unsigned int k = 0; k < times.size(); ++k)
-      AssertThrow(std::count(times.begin(), times.begin() + k, times[k]) == 0,
-                  ExcMessage("Output/Profile times lists "
-                             + Utilities::to_string(times[k])
-                             + " twice; each time gives one profile."));
+    times.parse(prm.get("Profile times"));
     AssertThrow(n_points != 1,
                 ExcMessage("Output/Profile points must be 0 (no profile) or "
                            "at least 2."));
@@ -160,12 +154,8 @@ namespace liftoff
   std::vector<double>
   ProfileOutput::times_not_reached(const double end_time, const double dt) const
   {
-    std::vector<double> late;
-    if (n_points > 0)
-      for (const double tau : times)
-        if (tau > end_time + 0.5 * dt * (1 + 1e-12))
-          late.push_back(tau);
-    return late;
+    return n_points > 0 ? times.not_reached(end_time, dt)
+                        : std::vector<double>();
   }
 
 
@@ -192,7 +182,7 @@ namespace liftoff
   void
   ProfileOutput::setup(const Discretization &disc, const std::string &directory)
   {
-    is_written.assign(times.size(), false);
+    times.reset();
     mesh_changed(disc);
     if (n_points == 0)
       return;
@@ -247,11 +237,7 @@ namespace liftoff
     const LA::MPI::Vector &u   = step.state.ghosted_u;
     if (n_points == 0)
       return;
-    bool is_due = (dt == 0.0);
-    for (unsigned int k = 0; k < times.size(); ++k)
-      if (!is_written[k] && std::abs(tau - times[k]) <= 0.5 * dt * (1 + 1e-12))
-        is_written[k] = is_due = true;
-    if (!is_due)
+    if (!times.is_due(tau, dt))
       return;
 
     if (!rider.empty())
@@ -280,7 +266,8 @@ namespace liftoff
   void
   ProfileOutput::save(OutputArchive &archive) const
   {
-    archive << is_written << file.text();
+    times.save(archive);
+    archive << file.text();
   }
 
 
@@ -288,7 +275,8 @@ namespace liftoff
   ProfileOutput::load(InputArchive &archive)
   {
     std::string text;
-    archive >> is_written >> text;
+    times.load(archive);
+    archive >> text;
     file.replace(text);
     file.hold();
   }

@@ -184,18 +184,23 @@ namespace liftoff
         for (unsigned int d = 0; d < 2; ++d)
           gamma[q][d] = gradient[q][0][d] - value[q][1 + d];
 
-    const double nu = plate.poisson_ratio;
-    // 6 / Delta^2: the face stress 6 M / H^2 in units of F0 / L^2.
+    const double              nu      = plate.poisson_ratio;
+    const SectionCoefficients section = plate.section(cell->material_id());
+    // 6 / Delta_s^2: the face stress 6 M / H_s^2 in units of F0 / L^2.
     const double to_stress =
-      6.0 / (plate.thickness_ratio * plate.thickness_ratio);
-    const double shear = plate.shear_stiffness();
+      6.0 / (section.thickness_ratio * section.thickness_ratio);
+    const double shear = section.shear;
+    // D_s / D; the minus sign: z along w.
+    const double bending = -section.bending;
     for (unsigned int q = 0; q < unit_points.size(); ++q)
       {
-        // Components: 0 w, 1 psi_x, 2 psi_y. z along w gives the minus sign.
-        const double m_xx = -(gradient[q][1][0] + nu * gradient[q][2][1]);
-        const double m_yy = -(gradient[q][2][1] + nu * gradient[q][1][0]);
+        // Components: 0 w, 1 psi_x, 2 psi_y.
+        const double m_xx =
+          bending * (gradient[q][1][0] + nu * gradient[q][2][1]);
+        const double m_yy =
+          bending * (gradient[q][2][1] + nu * gradient[q][1][0]);
         const double m_xy =
-          -0.5 * (1 - nu) * (gradient[q][1][1] + gradient[q][2][0]);
+          bending * 0.5 * (1 - nu) * (gradient[q][1][1] + gradient[q][2][0]);
         const double    centre = 0.5 * (m_xx + m_yy);
         const double    radius = std::hypot(0.5 * (m_xx - m_yy), m_xy);
         const double    m_1 = centre + radius, m_2 = centre - radius;

@@ -41,6 +41,8 @@ namespace liftoff
     OutputDirectory::declare_parameters(prm);
     TimeHistory::declare_parameters(prm);
     ProfileOutput::declare_parameters(prm);
+    JointProfiles::declare_parameters(prm);
+    JointProbes::declare_parameters(prm);
     FieldOutput::declare_parameters(prm);
     Envelopes::declare_parameters(prm);
     prm.leave_subsection();
@@ -60,11 +62,14 @@ namespace liftoff
       output_directory = scene.get("Directory");
       time_history.parse_parameters(scene, parts.plate);
       profile_output.parse_parameters(scene);
+      const PlateGeometry &geometry = parts.discretization.geometry();
+      joint_probes.parse_parameters(scene, geometry, parts.plate);
+      joint_profiles.parse_parameters(scene, geometry);
       field_output.parse_parameters(scene, parts.plate);
       envelopes.parse_parameters(scene);
       scene.leave_subsection();
       deflectometer_sensors.parse_parameters(scene);
-      if (time_history.drop_default_probe_off(parts.discretization.geometry()))
+      if (time_history.drop_default_probe_off(geometry))
         pcout << "liftoff: no probe: 0, 0 lies in the annulus's hole.\n";
       time_history.show_dissipated_energy(parts.foundation.law().has_damping());
       const auto load_positions = [this](const double tau) {
@@ -74,8 +79,8 @@ namespace liftoff
       profile_output.follow(parts.loads.moving_load_names(), load_positions);
       for (Output *output : outputs)
         output->write_in_units_of(units);
-      deflectometer_sensors.add_columns_to(time_history);
-      dowel_forces.add_columns_to(time_history);
+      for (const Output *output : outputs)
+        output->add_columns_to(time_history);
       checkpoint.parse_parameters(scene);
       check_scene();
     });

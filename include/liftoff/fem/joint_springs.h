@@ -5,6 +5,7 @@
 
 #include <liftoff/fem/system_term.h>
 
+#include <array>
 #include <vector>
 
 namespace liftoff
@@ -62,6 +63,22 @@ namespace liftoff
     std::vector<Transfer>
     transfer(const LA::MPI::Vector &ghosted_u) const;
 
+    /// w on both sides of a joint at a Gauss point of its faces, and the
+    /// aggregate interlock's shear force per length there, from the lower
+    /// slab to the upper one.
+    struct JointPoint
+    {
+      unsigned int joint;
+      Point<2>     x;
+      double       w_lower;
+      double       w_upper;
+      double       shear;
+    };
+    /// The points of the joints' pieces this rank integrates (not
+    /// collective).
+    std::vector<JointPoint>
+    points_along(const LA::MPI::Vector &ghosted_u) const;
+
   private:
     std::vector<double> shear_stiffness;
     std::vector<double> rotational_stiffness;
@@ -76,6 +93,7 @@ namespace liftoff
       std::vector<types::global_dof_index> dofs;
       std::vector<std::vector<double>>     w_jump;
       std::vector<std::vector<double>>     rotation_jump;
+      std::vector<Point<2>>                points;
     };
     std::vector<Segment>  segments;
     const Discretization *discretization = nullptr;
@@ -92,5 +110,11 @@ namespace liftoff
                  const unsigned int                         joint) const;
     void
     assemble();
+    /// At a Gauss point of `segment` (its row of w_jump): this side's w,
+    /// the opposite side's w, each times sqrt(JxW), and sqrt(JxW).
+    static std::array<double, 3>
+    sides(const Segment             &segment,
+          const std::vector<double> &jump,
+          const LA::MPI::Vector     &ghosted_u);
   };
 } // namespace liftoff

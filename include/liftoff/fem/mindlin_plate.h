@@ -4,9 +4,37 @@
 
 #include <liftoff/base/physical_units.h>
 
+#include <vector>
+
 namespace liftoff
 {
   using namespace dealii;
+
+  /// One slab's cross-section against the plate's (Plate, Units): H_s / H
+  /// and E_s / E. The density and Poisson ratio are the plate's.
+  struct SlabSection
+  {
+    double thickness = 1.0;
+    double modulus   = 1.0;
+  };
+
+
+  /// The coefficients of a cell's energies in the plate's units (D, rho H
+  /// and F0 of the plate), for its slab's section.
+  struct SectionCoefficients
+  {
+    /// D_s / D = (E_s / E) (H_s / H)^3.
+    double bending;
+    /// chi G_s H_s L^2 / D.
+    double shear;
+    /// rho H_s / (rho H), also the self-weight's factor.
+    double mass;
+    /// rho H_s^3 / 12 over rho H L^2.
+    double rotary;
+    /// H_s / L.
+    double thickness_ratio;
+  };
+
 
   /**
    * Material and geometry of the Mindlin plate in the dimensionless form of
@@ -43,5 +71,24 @@ namespace liftoff
     /// Twisting stiffness G H^3 / 12 over D, i.e. (1 - nu) / 2.
     double
     twisting_stiffness() const;
+
+    /// The sections of the slabs (Slabs/Thicknesses, Modulus ratios) by
+    /// slab number, the cells' material id; empty where every slab is the
+    /// plate.
+    std::vector<SlabSection> slab_sections;
+    /// Whether some slab's section is not the plate's.
+    bool
+    has_slab_sections() const;
+    /// The coefficients of the cells of slab `slab`; the plate's own where
+    /// the slabs are alike, so a uniform plate computes the same numbers.
+    SectionCoefficients
+    section(const unsigned int slab) const;
+
+  private:
+    /// The slabs' sections, in the subsection Slabs.
+    static void
+    declare_slab_parameters(ParameterHandler &prm);
+    void
+    parse_slab_sections(ParameterHandler &prm);
   };
 } // namespace liftoff

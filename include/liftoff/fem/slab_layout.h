@@ -6,6 +6,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <liftoff/fem/mindlin_plate.h>
+
 #include <array>
 #include <functional>
 #include <string>
@@ -86,6 +88,16 @@ namespace liftoff
       const std::function<void(const DoFHandler<2>::active_cell_iterator &,
                                const unsigned int,
                                const unsigned int)> &f) const;
+    /// The number of the slab a point of the full plate is on (x first).
+    unsigned int
+    slab_of(const Point<2> &p) const;
+    /// Refuse sections that differ between a slab and its mirror image in a
+    /// plane of `symmetry_axes` (normals): the model would not be
+    /// symmetric.
+    void
+    require_symmetric(const std::vector<SlabSection>  &sections,
+                      const std::vector<unsigned int> &symmetry_axes,
+                      const std::string               &symmetry_name) const;
     /// The tied joints' dofs identified across them.
     void
     tie(const DoFHandler<2> &dof_handler, AffineConstraints<double> &c) const;
@@ -97,9 +109,6 @@ namespace liftoff
     std::array<double, 2> slab_size = {{1, 1}};
     std::vector<Joint>    joint_list;
 
-    /// The number of the slab a point of the full plate is on (x first).
-    unsigned int
-    slab_of(const Point<2> &p) const;
     /// The joints inside the modelled part, each on a line of the coarse
     /// cells.
     void

@@ -87,6 +87,12 @@ namespace liftoff
       const BoundingBox<2>      &plate,
       const Discretization      &discretization) const override;
 
+    /// What multiplies the density at x besides Magnitude and the
+    /// intensity (a self-weight: the slab's thickness over the plate's); 1.
+    virtual double
+    density_factor(const Discretization &discretization,
+                   const Point<2>       &x) const;
+
     /// f(x, y, tau) (without Magnitude), for a kind that integrates it
     /// itself.
     const Intensity &

@@ -25,6 +25,9 @@ namespace liftoff
     touches(const PlateGeometry &geometry, const double tau) const override;
     void
     require_on_plate(const PlateGeometry &geometry) const override;
+    /// The self-weight keeps the slabs' thicknesses.
+    void
+    use_plate(const MindlinPlate &plate) override;
 
   protected:
     void
@@ -38,6 +41,9 @@ namespace liftoff
       const PatchIntegrator                           &integrator,
       const std::function<Point<2>(const Point<2> &)> &image,
       const BoundingBox<2>                            &plate) const override;
+    double
+    density_factor(const Discretization &discretization,
+                   const Point<2>       &x) const override;
     bool
     mirrors_geometry(const Load                &other,
                      const unsigned int         axis,
@@ -58,5 +64,8 @@ namespace liftoff
 
     /// "whole plate" or "x_min, x_max, y_min, y_max".
     std::string region;
+    /// The self-weight's H_s / H by slab number, where the slabs differ.
+    bool                is_self_weight = false;
+    std::vector<double> slab_weights;
   };
 } // namespace liftoff

@@ -41,7 +41,7 @@ namespace liftoff
     check_against(const Discretization &discretization) const;
     /// Adds the sensors' columns to `history`.
     void
-    add_columns_to(TimeHistory &history) const;
+    add_columns_to(TimeHistory &history) const override;
 
     void
     setup(const Discretization &discretization,

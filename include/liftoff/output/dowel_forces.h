@@ -27,7 +27,7 @@ namespace liftoff
     write_in_units_of(const PhysicalUnits &scene_units) override;
     /// Adds the dowels' columns to `history`.
     void
-    add_columns_to(TimeHistory &history) const;
+    add_columns_to(TimeHistory &history) const override;
     void
     setup(const Discretization &discretization,
           const std::string    &directory) override;

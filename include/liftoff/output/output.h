@@ -14,6 +14,7 @@ namespace liftoff
   class JointDowels;
   class PhysicalUnits;
   class ResultantSweep;
+  class TimeHistory;
   class RunSummary;
   class TensionlessWinklerFoundation;
   struct PlateState;
@@ -51,6 +52,10 @@ namespace liftoff
   public:
     virtual ~Output() = default;
 
+    /// Its columns of history.csv, if it has any (TimeHistory::add_columns).
+    virtual void
+    add_columns_to(TimeHistory &) const
+    {}
     /// Its lines in the run's summary, if it has any.
     virtual void
     add_to(RunSummary &) const

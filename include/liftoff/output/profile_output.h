@@ -8,6 +8,7 @@
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/point_functional.h>
 #include <liftoff/output/output.h>
+#include <liftoff/output/profile_times.h>
 
 #include <fstream>
 #include <functional>
@@ -94,9 +95,8 @@ namespace liftoff
     std::string                                      rider;
     unsigned int                                     rider_index = 0;
     std::function<std::vector<double>(const double)> load_positions;
-    std::vector<double>                              times;
+    ProfileTimes                                     times;
     PhysicalUnits                                    units;
-    std::vector<bool>                                is_written;
     std::vector<PointFunctional>                     points;
     const Discretization                            *discretization = nullptr;
     GrowingTextFile                                  file;

@@ -109,14 +109,13 @@ namespace liftoff
     void
     add_to(RunSummary &summary) const override;
 
-  private:
-    /// The history's column names of the probes, "w(x;y)", with enough
-    /// digits to tell every two points apart.
-    /// Names "quantity(x;y)" with as many digits as tell the points apart.
+    /// Names "quantity(x;y)" of points of the full plate in the scene's
+    /// units, with as many digits as tell the points apart.
     std::vector<std::string>
     probe_column_names(const std::vector<std::string> &quantities,
                        const std::vector<Point<2>>    &points) const;
 
+  private:
     /// A probe of a stress resultant: its field, its point and, on the
     /// rank that holds the point, the cells around it with the point's
     /// unit coordinates (PointFunctional::holder_cells()).

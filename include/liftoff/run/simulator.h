@@ -12,6 +12,8 @@
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/field_output.h>
+#include <liftoff/output/joint_probes.h>
+#include <liftoff/output/joint_profiles.h>
 #include <liftoff/output/output.h>
 #include <liftoff/output/profile_output.h>
 #include <liftoff/output/progress_line.h>
@@ -131,6 +133,8 @@ namespace liftoff
     SceneParts           parts;
     TimeHistory          time_history;
     ProfileOutput        profile_output;
+    JointProfiles        joint_profiles;
+    JointProbes          joint_probes;
     FieldOutput          field_output;
     Envelopes            envelopes;
     SmallDeflectionCheck small_deflection;
@@ -140,10 +144,12 @@ namespace liftoff
     /// What is written after each step, in this order.
     std::vector<Output *> outputs{&time_history,
                                   &profile_output,
+                                  &joint_profiles,
                                   &field_output,
                                   &envelopes,
                                   &deflectometer_sensors,
                                   &dowel_forces,
+                                  &joint_probes,
                                   &small_deflection};
     Checkpoint            checkpoint;
 
