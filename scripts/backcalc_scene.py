@@ -67,8 +67,25 @@ class SceneRuns:
         folder = os.path.join(self.args.output, "runs", "run%03d" % number)
         text = scene_with_overrides(self.args.scene,
                                     self.fixed + list(overrides), folder)
-        try:
-            run_scene(self.args.executable, text, folder)
-        except (RuntimeError, OSError) as e:
-            raise BackcalcError(str(e))
-        return folder
+        # A second try: on a loaded machine a run has once failed where the
+        # same run succeeded again; a scene liftoff refuses fails twice.
+        for attempt in (1, 2):
+            try:
+                run_scene(self.args.executable, text, folder)
+                return folder
+            except (RuntimeError, OSError) as e:
+                failure = "%s: %s" % (e, last_line(folder))
+            if attempt == 1:
+                print("liftoff run %d failed (%s); running it again"
+                      % (number, failure), flush=True)
+        raise BackcalcError(failure)
+
+
+def last_line(folder):
+    """The last line of a failed run's log: liftoff's one-line error."""
+    try:
+        with open(os.path.join(folder, "log.txt")) as f:
+            lines = [line.strip() for line in f if line.strip()]
+    except OSError:
+        lines = []
+    return lines[-1] if lines else "no log"
