@@ -8,13 +8,15 @@ a 4 m square slab 0.25 m thick on a bilateral bed, quarter model, 4 x 4
 cells Q2, steps of 2 ms to 40 ms, sensors at 0, 305, 610 and 914 mm (84
 samples).
 
-- without noise, to the fit's tolerance (a step of 1e-9 in ln E, ln k and
-  c / critical): E, k and c within 1e-6, every sensor's RMS residual
-  below 1e-4 um;
 - with noise (normal, seed 7, standard deviation 1 % of each sensor's
-  peak, 1 to 1.4 um; step tolerance 1e-4): E within 3 %, k within 2 %, c
+  peak, 1 to 1.4 um; step tolerance 1e-3): E within 3 %, k within 2 %, c
   within 10 %, and each within 3 standard deviations of the Jacobian's
-  uncertainty;
+  uncertainty (measured +0.39 %, -0.09 %, -1.3 %: 0.4, 0.1 and 1.0
+  sigma; 20 runs);
+- without noise, from the noisy fit, to the fit's tolerance (a step of
+  1e-9 in ln E, ln k and c / critical): E, k and c within 1e-6 (within
+  5e-11, the report's ten digits), every sensor's RMS residual below 1e-4
+  um (0.000); 16 runs;
 - the script writes fit.txt, histories_fit.csv and histories_fit.png;
 - bad input is refused in one line naming the cause (exit 1, no output
   folder): no time column, a sensor column missing in a row, NaN, time
@@ -126,7 +128,7 @@ def round_trip():
     """The noisy histories from the AREA method's start, then the exact
     ones from the noisy fit (fewer runs than from the AREA start)."""
     noisy_histories(7)
-    _, noisy = backcalc("noisy.csv", "noisy", "--tolerance", "1e-4",
+    _, noisy = backcalc("noisy.csv", "noisy", "--tolerance", "1e-3",
                         "--no-plot")
     if noisy is None:
         check(False, "1 % noise: the fit runs")
