@@ -35,6 +35,9 @@ def sensor_columns(header, path):
     columns = []
     for i, name in enumerate(header):
         match = SENSOR.match(name.strip())
+        if name.strip().startswith("d(") and not match:
+            raise HistoryError("%s: the column \"%s\" is no sensor column "
+                               "d(OFFSET in m) [m or um]" % (path, name))
         if match:
             try:
                 offset = float(match.group(1))

@@ -121,7 +121,7 @@ def round_trip():
 
 def refusals():
     with open("no_joint.prm", "w") as f:
-        f.write(SCENE.replace("set Slabs along y = 2", "set Slabs along y = 1"))
+        f.write(SCENE.replace("Slabs along y = 2", "Slabs along y = 1"))
     with open("above.csv", "w") as f:
         f.write("offset [m],peak_w [m]\n0,1e-4\n0.305,1.2e-4\n0.61,9e-5\n")
     for what, basin, options, scene, cause in [
