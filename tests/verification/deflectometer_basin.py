@@ -17,7 +17,7 @@ the Hankel transform (tests/common/winkler_basin.py):
   disc's waves of length ~ a carry the shear deflection D xi^2 / (kappa G
   h) of the bending one, and h / a = 1.7: +4.7 % under the load, +0.4 % at
   914 mm, -0.4 % at 1524 mm (the test checks 3 to 6 % and the decrease);
-- the AREA method (scripts/liftoff-backcalc's area_method()) on the
+- the AREA method (scripts/backcalc_basin.py's area_method()) on the
   Kirchhoff basin recovers E and k within 1.5 % (-0.5 %, +0.6 %);
 - a half-sine pulse of 1 s, 45 times the bed's period 2 pi sqrt(rho h / k)
   = 22 ms, peaks within 1 % of the static basin at every sensor (history
@@ -31,7 +31,6 @@ the Hankel transform (tests/common/winkler_basin.py):
 """
 
 import csv
-import importlib.machinery
 import os
 import subprocess
 import sys
@@ -39,11 +38,9 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
 import winkler_basin  # noqa: E402
-
-backcalc = importlib.machinery.SourceFileLoader(
-    "backcalc", os.path.join(HERE, "..", "..", "scripts", "liftoff-backcalc")
-).load_module()
+from backcalc_basin import area_method  # noqa: E402
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 P, A, H, E, NU, K = 40e3, 0.15, 0.25, 30e9, 0.15, 50e6
@@ -115,7 +112,7 @@ check(max(abs(1e6 * w - g) for w, g in zip(kirchhoff, GIVEN)) < 0.006,
       "the Hankel transform gives the Kirchhoff basin "
       + ", ".join("%.2f" % (1e6 * w) for w in kirchhoff) + " um")
 
-E_area, k_area, ell = backcalc.area_method(OFFSETS, kirchhoff, P, H, NU)
+E_area, k_area, ell = area_method(OFFSETS, kirchhoff, P, H, NU)
 print(f"AREA method: l = {ell:.4f} m, E = {E_area:.5g} Pa "
       f"({E_area / E - 1:+.2%}), k = {k_area:.5g} N/m^3 ({k_area / K - 1:+.2%})")
 check(abs(E_area / E - 1) < 0.015 and abs(k_area / K - 1) < 0.015,

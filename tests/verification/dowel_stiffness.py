@@ -31,14 +31,16 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..",
+                                "scripts"))
 from checks import check, finish  # noqa: E402
+from lte_fits import radius_of_relative_stiffness  # noqa: E402
 from scenes import read_history, run_scene_or_fail, scene_text  # noqa: E402
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 
 E, H, NU, K, A, P = 30e9, 0.25, 0.15, 50e6, 0.15, 40e3
-D = E * H**3 / (12 * (1 - NU**2))
-ELL = (D / K) ** 0.25
+ELL = radius_of_relative_stiffness(E, H, NU, K)
 STEEL, STEEL_NU = 200e9, 0.3
 
 

@@ -10,7 +10,8 @@ w read at the joint's two faces under the load's centre. The fits:
 
 - Crovetti (1994): LTE = 100 / (1 + 1.2 f^-0.849);
 - Ioannides and Hammons (1996):
-  LTE = 100 / (1 + 10^((0.214 - 0.183 a/l - log10 f) / 1.18)).
+  LTE = 100 / (1 + 10^((0.214 - 0.183 a/l - log10 f) / 1.18))
+(scripts/lte_fits.py, which scripts/liftoff-backcalc uses too).
 
 Neither is exact (both fit finite element results over a range of a/l,
 and they differ by up to 4 points); the check is liftoff within 5 points
@@ -29,22 +30,17 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..",
+                                "scripts"))
 from checks import check, finish  # noqa: E402
+from lte_fits import (crovetti, ioannides_hammons,  # noqa: E402
+                      radius_of_relative_stiffness)
 from scenes import read_history, run_scene_or_fail, scene_text  # noqa: E402
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 
 E, H, NU, K, A, P = 30e9, 0.25, 0.15, 50e6, 0.15, 40e3
-D = E * H**3 / (12 * (1 - NU**2))
-ELL = (D / K) ** 0.25
-
-
-def crovetti(f):
-    return 100 / (1 + 1.2 * f**-0.849)
-
-
-def ioannides_hammons(f):
-    return 100 / (1 + 10 ** ((0.214 - 0.183 * A / ELL - math.log10(f)) / 1.18))
+ELL = radius_of_relative_stiffness(E, H, NU, K)
 
 
 def liftoff_lte(work, f):
@@ -75,7 +71,7 @@ with tempfile.TemporaryDirectory() as work:
     print(f"l = {ELL:.4f} m, a / l = {A / ELL:.4f}")
     for f in [0.1, 1, 10, 100]:
         lte = liftoff_lte(work, f)
-        fits = (crovetti(f), ioannides_hammons(f))
+        fits = (crovetti(f), ioannides_hammons(f, A / ELL))
         print(f"f = {f:5g}: liftoff {lte:6.2f}, Crovetti {fits[0]:6.2f}, "
               f"Ioannides-Hammons {fits[1]:6.2f}")
         check(min(abs(lte - fit) for fit in fits) <= 5,
