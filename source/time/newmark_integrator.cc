@@ -156,6 +156,15 @@ namespace liftoff
   }
 
 
+  NewmarkIntegrator
+  NewmarkIntegrator::with_time_step(const double dt) const
+  {
+    NewmarkIntegrator scheme = *this;
+    scheme.time_step         = dt;
+    return scheme;
+  }
+
+
   bool
   NewmarkIntegrator::conserves_energy() const
   {

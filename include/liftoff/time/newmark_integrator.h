@@ -47,6 +47,11 @@ namespace liftoff
     Clock
     clock() const;
 
+    /// The same scheme with steps of `dt` instead of Time step (the steps
+    /// of Time step control = error).
+    NewmarkIntegrator
+    with_time_step(const double dt) const;
+
     /// Whether the scheme damps high frequencies (gamma > 1/2: Newmark with
     /// such a Gamma, generalized-alpha with Spectral radius < 1), so that
     /// the energy of a linear system decreases instead of being conserved.
