@@ -36,7 +36,6 @@ namespace liftoff
     TensionlessWinklerFoundation::declare_parameters(prm);
     LoadSet::declare_parameters(prm);
     NewmarkIntegrator::declare_parameters(prm);
-    StepSizeController::declare_parameters(prm);
     EnergyCheck::declare_parameters(prm);
     ActiveSetIteration::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
@@ -74,7 +73,6 @@ namespace liftoff
     loads.parse_parameters(prm);
     loads.use_plate(plate);
     newmark.parse_parameters(prm);
-    step_control.parse_parameters(prm);
     energy_check.parse_parameters(prm);
     active_set.parse_parameters(prm);
     active_set.linear_solver().parse_parameters(prm);
@@ -93,7 +91,7 @@ namespace liftoff
 
     if (dynamic)
       newmark.check_end_time();
-    step_control.check_against(newmark, dynamic);
+    newmark.step_control.check_against(newmark, dynamic);
     mesh_refinement.check_against(discretization);
     joint_springs.check_against(discretization.geometry().slabs());
   }
@@ -176,7 +174,6 @@ namespace liftoff
             newmark,
             energy_check,
             mesh_refinement,
-            active_set,
-            step_control};
+            active_set};
   }
 } // namespace liftoff

@@ -76,14 +76,9 @@ namespace liftoff
         output->write_in_units_of(units);
       deflectometer_sensors.add_columns_to(time_history);
       dowel_forces.add_columns_to(time_history);
-      if (parts.step_control.is_enabled())
-        time_history.add_columns({{"dt_min", PhysicalUnits::Quantity::time},
-                                  {"substeps",
-                                   PhysicalUnits::Quantity::number}},
-                                 [this](const StepData &) {
-                                   return parts.step_control.interval_columns(
-                                     parts.clock().time_step());
-                                 });
+      if (parts.newmark.step_control.is_enabled())
+        time_history.add_step_sizes(
+          [this]() { return stepper->step_control().interval_columns(); });
       checkpoint.parse_parameters(scene);
       check_scene();
     });
@@ -569,15 +564,6 @@ namespace liftoff
                     largest_energy_jump);
       }
     summary.add("steps", double(rows.empty() ? 0 : rows.size() - 1));
-    if (parts.step_control.is_enabled())
-      {
-        const StepSizeController &control = parts.step_control;
-        summary.add("time steps taken", double(control.n_accepted));
-        summary.add("time steps repeated", double(control.n_rejected));
-        summary.add("changes of time step", double(control.n_level_changes));
-        summary.add("time steps above Error tolerance at the finest level",
-                    double(control.n_at_finest_above_tolerance));
-      }
     summary.add_checks(*stepper,
                        parts.energy_check,
                        parts.is_dynamic(),

@@ -76,6 +76,7 @@ namespace liftoff
                       "step."
                         + quantity("time"));
     prm.leave_subsection();
+    StepSizeController::declare_parameters(prm);
   }
 
 
@@ -98,6 +99,7 @@ namespace liftoff
     time_step = prm.get_double("Time step");
     end_time  = prm.get_double("End time");
     prm.leave_subsection();
+    step_control.parse_parameters(prm, time_step);
     AssertThrow(beta > 0,
                 ExcMessage("Time integration/Beta must lie in (0, 0.5]."));
     AssertThrow(time_step > 0,

@@ -57,8 +57,10 @@ namespace liftoff
 
 
   void
-  StepSizeController::parse_parameters(ParameterHandler &prm)
+  StepSizeController::parse_parameters(ParameterHandler &prm,
+                                       const double      time_step)
   {
+    base_step = time_step;
     prm.enter_subsection("Time integration");
     enabled   = controls.parse(prm.get("Time step control"),
                              "Time integration/Time step control");
@@ -203,11 +205,11 @@ namespace liftoff
 
 
   std::vector<double>
-  StepSizeController::interval_columns(const double time_step) const
+  StepSizeController::interval_columns() const
   {
     if (interval_substeps == 0)
       return {0.0, 0.0};
-    return {std::ldexp(time_step, -static_cast<int>(interval_finest)),
+    return {std::ldexp(base_step, -static_cast<int>(interval_finest)),
             static_cast<double>(interval_substeps)};
   }
 

@@ -64,7 +64,7 @@ namespace liftoff
       , energy_check(parts.energy_check)
       , mesh_refinement(parts.mesh_refinement)
       , active_set(parts.active_set)
-      , step_control(parts.step_control)
+      , controller(parts.newmark.step_control)
       , options(options)
       , timer(timer)
   {
@@ -126,7 +126,7 @@ namespace liftoff
     discretization.reinit_ghosted_vector(ghosted_scratch);
     state_.ghosted_u   = state_.u;
     largest_eigenvalue = 0;
-    if (step_control.is_enabled())
+    if (controller.is_enabled())
       w_entries = DoFTools::extract_dofs(discretization.dof_handler,
                                          ComponentMask({true, false, false}));
   }
@@ -634,7 +634,7 @@ namespace liftoff
   ActiveSetIteration::Result
   TimeStepper::do_step(const unsigned int step)
   {
-    if (step_control.is_enabled())
+    if (controller.is_enabled())
       return do_controlled_steps(step);
     const double tau = state_.clock.tau_at(step);
     assemble_right_hand_side(step, tau);
@@ -650,15 +650,15 @@ namespace liftoff
     // Positions count steps of the finest level from tau_at(step - 1); a
     // time is that tau plus a power of 2 times Time step, and the last one
     // is tau_at(step) itself, as in a fixed-step run.
-    const unsigned int         finest = step_control.finest_level();
+    const unsigned int         finest = controller.finest_level();
     const unsigned int         units  = 1u << finest;
     const double               start  = state_.clock.tau();
     ActiveSetIteration::Result total;
     total.converged = true;
-    step_control.start_interval();
+    controller.start_interval();
     for (unsigned int position = 0; position < units;)
       {
-        use_level(step_control.level());
+        use_level(controller.level());
         const unsigned int end = position + (1u << (finest - level_in_use));
         const double       tau = end == units
                                    ? state_.clock.tau_at(step)
@@ -672,7 +672,7 @@ namespace liftoff
         total.cycle_length =
           std::max(total.cycle_length, iteration.cycle_length);
         total.lost_contact = total.lost_contact || iteration.lost_contact;
-        if (!step_control.judge(relative_step_error(), position))
+        if (!controller.judge(relative_step_error(), position))
           continue;
         // The clock reaches `step` with the last substep only.
         advance(end == units ? step : step - 1);
@@ -716,7 +716,7 @@ namespace liftoff
         w     = std::max(w, std::abs(u_next[i]));
       }
     const double factor = std::abs(newmark.beta - 1.0 / 6.0) / newmark.beta;
-    return step_control.relative_error(
+    return controller.relative_error(
       factor * Utilities::MPI::max(error, discretization.mpi_communicator),
       Utilities::MPI::max(w, discretization.mpi_communicator));
   }
@@ -921,6 +921,13 @@ namespace liftoff
   }
 
 
+  const StepSizeController &
+  TimeStepper::step_control() const
+  {
+    return controller;
+  }
+
+
   template <class Archive>
   void
   TimeStepper::serialize_state(Archive &archive)
@@ -928,10 +935,10 @@ namespace liftoff
     archive &state_;
     archive &energy_check;
     // The level of the saved matrix, which serialize_contact() then reads.
-    if (!step_control.is_enabled())
+    if (!controller.is_enabled())
       return;
     unsigned int level = level_in_use;
-    archive     &step_control;
+    archive     &controller;
     archive     &level;
     if constexpr (Archive::is_loading::value)
       {

@@ -17,7 +17,6 @@
 #include <liftoff/loads/load_set.h>
 #include <liftoff/time/energy_check.h>
 #include <liftoff/time/newmark_integrator.h>
-#include <liftoff/time/step_size_controller.h>
 #include <liftoff/time/time_stepper.h>
 
 namespace liftoff
@@ -87,7 +86,6 @@ namespace liftoff
     JointDowels                  joint_dowels;
     LoadSet                      loads;
     NewmarkIntegrator            newmark;
-    StepSizeController           step_control;
     EnergyCheck                  energy_check;
     MeshRefinement               mesh_refinement;
     ActiveSetIteration           active_set;

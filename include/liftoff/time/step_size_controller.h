@@ -35,8 +35,9 @@ namespace liftoff
   public:
     static void
     declare_parameters(ParameterHandler &prm);
+    /// `time_step`: Time step, the largest step.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const double time_step);
     /// Refuse the control where it cannot work: a static analysis, or a
     /// scheme whose estimate vanishes (Beta = 1/6) or that is only
     /// conditionally stable.
@@ -74,10 +75,10 @@ namespace liftoff
     substeps_in_interval() const;
     unsigned int
     finest_level_in_interval() const;
-    /// The history's columns of the last Time step `time_step`: its
-    /// smallest step (0 before the first) and the number of its steps.
+    /// The history's columns dt_min and substeps of the last Time step:
+    /// its smallest step (0 before the first) and the number of its steps.
     std::vector<double>
-    interval_columns(const double time_step) const;
+    interval_columns() const;
     /// Over the run: accepted, rejected steps, and changes of level.
     unsigned long n_accepted = 0, n_rejected = 0, n_level_changes = 0;
     /// Steps accepted above the tolerance at the finest level.
@@ -90,6 +91,7 @@ namespace liftoff
 
   private:
     bool         enabled   = false;
+    double       base_step = 0;
     double       tolerance = 1e-4;
     unsigned int finest    = 6;
     double       safety    = 0.8;

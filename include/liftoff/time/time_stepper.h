@@ -26,7 +26,6 @@ namespace liftoff
   class MeshRefinement;
   class MindlinPlate;
   class PlateMatrices;
-  class StepSizeController;
 
   /**
    * The numerics of a run, apart from the main loop that decides when they
@@ -58,9 +57,6 @@ namespace liftoff
       EnergyCheck                  &energy_check;
       const MeshRefinement         &mesh_refinement;
       ActiveSetIteration           &active_set;
-      /// Fixed steps, or steps chosen by their error within each Time
-      /// step.
-      StepSizeController &step_control;
     };
 
     /// What the scene asks of the numerics beyond its parts.
@@ -153,6 +149,9 @@ namespace liftoff
     /// New meshes of the time loop or the static cycles.
     unsigned int
     n_adaptations() const;
+    /// The scene's step control, with the record of the steps taken.
+    const StepSizeController &
+    step_control() const;
 
     /// The checkpoint's part of the stepper, in its two places of the
     /// format: the state with the energy check's record, and the contact
@@ -178,9 +177,10 @@ namespace liftoff
     EnergyCheck             &energy_check;
     const MeshRefinement    &mesh_refinement;
     ActiveSetIteration      &active_set;
-    StepSizeController      &step_control;
-    const Options            options;
-    SectionTimer            &timer;
+    /// A copy of the scene's: it keeps the level and counts of the run.
+    StepSizeController controller;
+    const Options      options;
+    SectionTimer      &timer;
 
     PlateState state_;
     /// The next step's load, right-hand side and solution, and scratch.
