@@ -45,6 +45,14 @@ namespace liftoff
                       "With Time step control = error: the smallest step is "
                       "Time step / 2^(this level)."
                         + quantity("number"));
+    prm.declare_entry("Event share",
+                      "1",
+                      Patterns::Double(0.0, 1.0),
+                      "With Time step control = error: a step over which "
+                      "the contact area changes by more than this share of "
+                      "the plate's area is taken again at the finest level "
+                      "(a lift-off or a landing); 1: no such rule."
+                        + quantity("number"));
     prm.declare_entry("Safety factor",
                       "0.8",
                       Patterns::Double(0.0, 1.0),
@@ -67,6 +75,7 @@ namespace liftoff
     tolerance = prm.get_double("Error tolerance");
     finest    = prm.get_integer("Finest step level");
     safety    = prm.get_double("Safety factor");
+    event     = prm.get_double("Event share");
     prm.leave_subsection();
     // A NaN fails the comparison and is refused too.
     AssertThrow(tolerance > 0 && std::isfinite(tolerance),
@@ -146,13 +155,18 @@ namespace liftoff
 
 
   bool
-  StepSizeController::judge(const double error, const unsigned int position)
+  StepSizeController::judge(const double       error,
+                            const double       contact_change,
+                            const unsigned int position)
   {
-    const unsigned int before = current;
-    if (!(error <= tolerance) && current < finest)
+    const unsigned int before   = current;
+    const bool         is_event = contact_change > event;
+    if ((!(error <= tolerance) || is_event) && current < finest)
       {
         ++n_rejected;
-        current = std::max(current + 1, proposed_level(error, current));
+        current = is_event
+                    ? finest
+                    : std::max(current + 1, proposed_level(error, current));
         ++n_level_changes;
         return false;
       }

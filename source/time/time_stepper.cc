@@ -656,6 +656,9 @@ namespace liftoff
     ActiveSetIteration::Result total;
     total.converged = true;
     controller.start_interval();
+    // The contact area of the state, for the event rule: a repeated step
+    // leaves the foundation with the set of its own solution.
+    double contact = foundation.diagnostics().contact_area_fraction();
     for (unsigned int position = 0; position < units;)
       {
         use_level(controller.level());
@@ -672,8 +675,13 @@ namespace liftoff
         total.cycle_length =
           std::max(total.cycle_length, iteration.cycle_length);
         total.lost_contact = total.lost_contact || iteration.lost_contact;
-        if (!controller.judge(relative_step_error(), position))
+        const double contact_after =
+          foundation.diagnostics().contact_area_fraction();
+        if (!controller.judge(relative_step_error(),
+                              std::abs(contact_after - contact),
+                              position))
           continue;
+        contact = contact_after;
         // The clock reaches `step` with the last substep only.
         advance(end == units ? step : step - 1);
         position = end;

@@ -27,7 +27,10 @@ namespace liftoff
    * again smaller; the next step is dt Safety factor (tolerance /
    * error)^(1/3), rounded down to a level, at most twice the last one, and
    * only where the larger step starts on its own grid (a multiple of its
-   * size from the last multiple of Time step). The class decides; the
+   * size from the last multiple of Time step). The event rule: a step over
+   * which the contact area changes by more than Event share of the plate
+   * is taken again at the finest level, where the estimate, blind to the
+   * switch's velocity error, would pass it. The class decides; the
    * TimeStepper takes the steps.
    */
   class StepSizeController
@@ -56,12 +59,16 @@ namespace liftoff
     double
     relative_error(const double largest_error, const double largest_w);
 
-    /// Judge a step of level `level()` with relative error `error` that
-    /// starts `position` finest units after the last multiple of Time
-    /// step; returns whether it is accepted, and sets the level of the
-    /// next try or step. At the finest level every step is accepted.
+    /// Judge a step of level `level()` with relative error `error`, over
+    /// which the contact area changed by `contact_change` (a share of the
+    /// plate's), that starts `position` finest units after the last
+    /// multiple of Time step; returns whether it is accepted, and sets the
+    /// level of the next try or step. At the finest level every step is
+    /// accepted.
     bool
-    judge(const double error, const unsigned int position);
+    judge(const double       error,
+          const double       contact_change,
+          const unsigned int position);
 
     /// The level of the next step.
     unsigned int
@@ -95,6 +102,7 @@ namespace liftoff
     double       tolerance = 1e-4;
     unsigned int finest    = 6;
     double       safety    = 0.8;
+    double       event     = 1;
 
     unsigned int current = 0;
     /// The largest |w| of the run so far.
