@@ -62,9 +62,9 @@ namespace liftoff
     prm.declare_entry("Time step",
                       "5e-4",
                       Patterns::Double(0.0),
-                      "dtau > 0, in units of t0 = L^2 sqrt(rho H / D). It is "
-                      "kept constant: in a dynamic analysis End time must "
-                      "be a whole number (at least 1) of time steps, to "
+                      "dtau > 0, in units of t0 = L^2 sqrt(rho H / D), the "
+                      "step (the largest with Time step control = error): End "
+                      "time must be a whole number (at least 1) of it, to "
                       "1e-9; any other End time is refused, no step is "
                       "shortened. At least 1/sqrt(Beta 1e250) (about "
                       "2e-125), below which M / (Beta dtau^2) overflows."
