@@ -171,6 +171,20 @@ namespace liftoff
         add("energy balance error, its step",
             double(energy_check.step_of_largest_error()));
       }
+    add_step_control(stepper.step_control());
+  }
+
+
+  void
+  RunSummary::add_step_control(const StepSizeController &control)
+  {
+    if (!control.is_enabled())
+      return;
+    add("time steps taken", double(control.n_accepted));
+    add("time steps repeated", double(control.n_rejected));
+    add("changes of time step", double(control.n_level_changes));
+    add("time steps above Error tolerance at the finest level",
+        double(control.n_at_finest_above_tolerance));
   }
 
 

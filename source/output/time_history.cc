@@ -415,6 +415,16 @@ namespace liftoff
 
 
   void
+  TimeHistory::add_step_sizes(
+    const std::function<std::vector<double>()> &values)
+  {
+    add_columns({{"dt_min", PhysicalUnits::Quantity::time},
+                 {"substeps", PhysicalUnits::Quantity::number}},
+                [values](const StepData &) { return values(); });
+  }
+
+
+  void
   TimeHistory::show_dissipated_energy(const bool show)
   {
     write_dissipated = show;

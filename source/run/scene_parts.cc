@@ -91,6 +91,7 @@ namespace liftoff
 
     if (dynamic)
       newmark.check_end_time();
+    newmark.step_control.check_against(newmark, dynamic);
     mesh_refinement.check_against(discretization);
     joint_springs.check_against(discretization.geometry().slabs());
   }

@@ -3,10 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <liftoff/base/archives.h>
-#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
-#include <liftoff/base/output_files.h>
-#include <liftoff/base/scene_input.h>
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/run/simulator.h>
@@ -81,6 +78,9 @@ namespace liftoff
         output->write_in_units_of(units);
       for (const Output *output : outputs)
         output->add_columns_to(time_history);
+      if (parts.newmark.step_control.is_enabled())
+        time_history.add_step_sizes(
+          [this]() { return stepper->step_control().interval_columns(); });
       checkpoint.parse_parameters(scene);
       check_scene();
     });

@@ -62,9 +62,9 @@ namespace liftoff
     prm.declare_entry("Time step",
                       "5e-4",
                       Patterns::Double(0.0),
-                      "dtau > 0, in units of t0 = L^2 sqrt(rho H / D). It is "
-                      "kept constant: in a dynamic analysis End time must "
-                      "be a whole number (at least 1) of time steps, to "
+                      "dtau > 0, in units of t0 = L^2 sqrt(rho H / D), the "
+                      "step (the largest with Time step control = error): End "
+                      "time must be a whole number (at least 1) of it, to "
                       "1e-9; any other End time is refused, no step is "
                       "shortened. At least 1/sqrt(Beta 1e250) (about "
                       "2e-125), below which M / (Beta dtau^2) overflows."
@@ -76,6 +76,7 @@ namespace liftoff
                       "step."
                         + quantity("time"));
     prm.leave_subsection();
+    StepSizeController::declare_parameters(prm);
   }
 
 
@@ -98,6 +99,7 @@ namespace liftoff
     time_step = prm.get_double("Time step");
     end_time  = prm.get_double("End time");
     prm.leave_subsection();
+    step_control.parse_parameters(prm, time_step);
     AssertThrow(beta > 0,
                 ExcMessage("Time integration/Beta must lie in (0, 0.5]."));
     AssertThrow(time_step > 0,
@@ -153,6 +155,15 @@ namespace liftoff
   NewmarkIntegrator::clock() const
   {
     return Clock(time_step, end_time);
+  }
+
+
+  NewmarkIntegrator
+  NewmarkIntegrator::with_time_step(const double dt) const
+  {
+    NewmarkIntegrator scheme = *this;
+    scheme.time_step         = dt;
+    return scheme;
   }
 
 

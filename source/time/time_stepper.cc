@@ -14,7 +14,10 @@
 #include <liftoff/time/energy_check.h>
 #include <liftoff/time/newmark_integrator.h>
 #include <liftoff/time/static_equilibrium.h>
+#include <liftoff/time/step_size_controller.h>
 #include <liftoff/time/time_stepper.h>
+
+#include <deal.II/dofs/dof_tools.h>
 
 #include <algorithm>
 #include <cmath>
@@ -56,10 +59,12 @@ namespace liftoff
       , terms(parts.terms)
       , foundation(parts.foundation)
       , loads(parts.loads)
+      , scene_newmark(parts.newmark)
       , newmark(parts.newmark)
       , energy_check(parts.energy_check)
       , mesh_refinement(parts.mesh_refinement)
       , active_set(parts.active_set)
+      , controller(parts.newmark.step_control)
       , options(options)
       , timer(timer)
   {
@@ -121,6 +126,9 @@ namespace liftoff
     discretization.reinit_ghosted_vector(ghosted_scratch);
     state_.ghosted_u   = state_.u;
     largest_eigenvalue = 0;
+    if (controller.is_enabled())
+      w_entries = DoFTools::extract_dofs(discretization.dof_handler,
+                                         ComponentMask({true, false, false}));
   }
 
 
@@ -486,7 +494,7 @@ namespace liftoff
             // step too.
             loads.regions_in_windows(state_.clock.tau(),
                                      mesh_refinement.steps_between_adaptations()
-                                       * newmark.clock().time_step(),
+                                       * scene_newmark.clock().time_step(),
                                      mesh_refinement.n_windows()),
             state_.ghosted_u))
         return false;
@@ -626,17 +634,107 @@ namespace liftoff
   ActiveSetIteration::Result
   TimeStepper::do_step(const unsigned int step)
   {
-    assemble_right_hand_side(step);
-    const auto iteration = solve_contact_problem(step);
+    if (controller.is_enabled())
+      return do_controlled_steps(step);
+    const double tau = state_.clock.tau_at(step);
+    assemble_right_hand_side(step, tau);
+    const auto iteration = solve_contact_problem(step, tau, step > 1);
     advance(step);
     return iteration;
   }
 
 
-  void
-  TimeStepper::assemble_right_hand_side(const unsigned int step)
+  ActiveSetIteration::Result
+  TimeStepper::do_controlled_steps(const unsigned int step)
   {
-    assemble_loads(step, state_.clock.tau_at(step), next_load);
+    // Positions count steps of the finest level from tau_at(step - 1); a
+    // time is that tau plus a power of 2 times Time step, and the last one
+    // is tau_at(step) itself, as in a fixed-step run.
+    const unsigned int         finest = controller.finest_level();
+    const unsigned int         units  = 1u << finest;
+    const double               start  = state_.clock.tau();
+    ActiveSetIteration::Result total;
+    total.converged = true;
+    controller.start_interval();
+    // The contact area of the state, for the event rule: a repeated step
+    // leaves the foundation with the set of its own solution.
+    double contact = foundation.diagnostics().contact_area_fraction();
+    for (unsigned int position = 0; position < units;)
+      {
+        use_level(controller.level());
+        const unsigned int end = position + (1u << (finest - level_in_use));
+        const double       tau = end == units
+                                   ? state_.clock.tau_at(step)
+                                   : start
+                                 + std::ldexp(state_.clock.time_step() * end,
+                                              -static_cast<int>(finest));
+        assemble_right_hand_side(step, tau);
+        const auto iteration =
+          solve_contact_problem(step, tau, step > 1 || position > 0);
+        total.iterations += iteration.iterations;
+        total.cycle_length =
+          std::max(total.cycle_length, iteration.cycle_length);
+        total.lost_contact = total.lost_contact || iteration.lost_contact;
+        const double contact_after =
+          foundation.diagnostics().contact_area_fraction();
+        if (!controller.judge(relative_step_error(),
+                              std::abs(contact_after - contact),
+                              position))
+          continue;
+        contact = contact_after;
+        // The clock reaches `step` with the last substep only.
+        advance(end == units ? step : step - 1);
+        position = end;
+      }
+    return total;
+  }
+
+
+  void
+  TimeStepper::use_level(const unsigned int level)
+  {
+    if (level == level_in_use)
+      return;
+    newmark      = scheme_of_level(level);
+    level_in_use = level;
+    active_set.set_base_matrix(effective_base_matrix(),
+                               newmark.velocity_factor());
+  }
+
+
+  NewmarkIntegrator
+  TimeStepper::scheme_of_level(const unsigned int level) const
+  {
+    return scene_newmark.with_time_step(
+      std::ldexp(scene_newmark.clock().time_step(), -static_cast<int>(level)));
+  }
+
+
+  double
+  TimeStepper::relative_step_error()
+  {
+    // e = (beta - 1/6) dt^2 (a_{n+1} - a_n), and a_{n+1} - a_n is
+    // (u_{n+1} - u_predicted) / (beta dt^2) by advance().
+    newmark.predict(state_.u, state_.v, state_.a, scratch_2);
+    scratch_2.sadd(-1.0, 1.0, u_next);
+    double error = 0, w = 0;
+    for (const auto i : w_entries)
+      {
+        error = std::max(error, std::abs(scratch_2[i]));
+        w     = std::max(w, std::abs(u_next[i]));
+      }
+    const double factor = std::abs(newmark.beta - 1.0 / 6.0) / newmark.beta;
+    return controller.relative_error(
+      factor * Utilities::MPI::max(error, discretization.mpi_communicator),
+      Utilities::MPI::max(w, discretization.mpi_communicator));
+  }
+
+
+  void
+  TimeStepper::assemble_right_hand_side(const unsigned int step,
+                                        const double       tau)
+  {
+    assemble_loads(step, tau, next_load);
     SectionTimer::Scope t(timer, "right hand side");
     newmark.right_hand_side(matrices.mass,
                             state_.u,
@@ -673,7 +771,9 @@ namespace liftoff
 
 
   ActiveSetIteration::Result
-  TimeStepper::solve_contact_problem(const unsigned int step)
+  TimeStepper::solve_contact_problem(const unsigned int step,
+                                     const double       tau,
+                                     const bool         from_prediction)
   {
     SpringPressure pressure = foundation.law().pressure();
     if (foundation.law().has_damping())
@@ -688,10 +788,11 @@ namespace liftoff
     newmark.predict(state_.u, state_.v, state_.a, u_next);
     // The first step starts from the bilateral set: the predictor has no
     // motion yet to extrapolate.
-    const auto result =
-      active_set.solve({rhs, pressure}, u_next, state_.ghosted_u, step > 1);
+    const auto result = active_set.solve({rhs, pressure},
+                                         u_next,
+                                         state_.ghosted_u,
+                                         from_prediction);
     // Before the convergence test: a nan makes the contact set wander.
-    const double tau = state_.clock.tau_at(step);
     require_finite(step, tau, "the solution", {&u_next}, {}, [&]() {
       return cause_of_non_finite_state(next_load);
     });
@@ -828,12 +929,30 @@ namespace liftoff
   }
 
 
+  const StepSizeController &
+  TimeStepper::step_control() const
+  {
+    return controller;
+  }
+
+
   template <class Archive>
   void
   TimeStepper::serialize_state(Archive &archive)
   {
     archive &state_;
     archive &energy_check;
+    // The level of the saved matrix, which serialize_contact() then reads.
+    if (!controller.is_enabled())
+      return;
+    unsigned int level = level_in_use;
+    archive     &controller;
+    archive     &level;
+    if constexpr (Archive::is_loading::value)
+      {
+        level_in_use = level;
+        newmark      = scheme_of_level(level);
+      }
   }
 
 

@@ -146,6 +146,14 @@ LIFTOFF_TEST_MAIN(argc, argv)
       // the run after step 29 (as after 32 and 34), not after any other
       // step from 10 to 35 (there the runs agree bit for bit even with the
       // wrong factor).
+      // Steps chosen by their error (4 to 8 per Time step here, one
+      // repeated): the checkpoint carries the controller's level and
+      // counts, and the factor of that level's matrix.
+      {"error-controlled steps",
+       exact_solver + set("Time integration/Time step control", "error")
+         + set("Time integration/Error tolerance", 1e-3)
+         + set("Time integration/Finest step level", 4),
+       20},
       {"generalized-alpha, refactorising",
        exact_solver + set("Time integration/Scheme", "generalized-alpha")
          + set("Time integration/Spectral radius", 0.8)

@@ -11,6 +11,7 @@ namespace liftoff
 {
   class Discretization;
   class EnergyCheck;
+  class StepSizeController;
   class TimeStepper;
   class PhysicalUnits;
   class LinearSolver;
@@ -46,6 +47,10 @@ namespace liftoff
                const EnergyCheck &energy_check,
                const bool         is_dynamic,
                const double       beta);
+    /// ... with Time step control = error, the steps taken, repeated and
+    /// changed (from add_checks()), ...
+    void
+    add_step_control(const StepSizeController &control);
     /// ... the linear solver's factorisations, substitutions and CG work,
     /// ...
     void

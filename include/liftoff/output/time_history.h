@@ -75,6 +75,12 @@ namespace liftoff
     add_columns(const std::vector<HistoryColumns::Column> &group,
                 HistoryColumns::Values                     values);
 
+    /// With Time step control = error: the columns dt_min and substeps,
+    /// the smallest step and the number of steps since the last row, which
+    /// `values` gives.
+    void
+    add_step_sizes(const std::function<std::vector<double>()> &values);
+
     /// Write the dashpots' dissipated energy (a column `dissipated_energy`
     /// after `work`, with the energies): only a scene with dashpots has it.
     void

@@ -4,6 +4,7 @@
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/time/clock.h>
+#include <liftoff/time/step_size_controller.h>
 
 namespace liftoff
 {
@@ -46,6 +47,11 @@ namespace liftoff
     /// check_end_time()).
     Clock
     clock() const;
+
+    /// The same scheme with steps of `dt` instead of Time step (the steps
+    /// of Time step control = error).
+    NewmarkIntegrator
+    with_time_step(const double dt) const;
 
     /// Whether the scheme damps high frequencies (gamma > 1/2: Newmark with
     /// such a Gamma, generalized-alpha with Spectral radius < 1), so that
@@ -140,6 +146,9 @@ namespace liftoff
     /// Generalized-alpha weights (0 for Newmark).
     double alpha_m = 0;
     double alpha_f = 0;
+    /// How the steps between the multiples of Time step are chosen (its
+    /// entries are in this section too).
+    StepSizeController step_control;
 
   private:
     double time_step = 5e-4;

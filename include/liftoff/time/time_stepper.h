@@ -6,6 +6,7 @@
 #include <liftoff/contact/active_set_iteration.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/time/energy_balance.h>
+#include <liftoff/time/newmark_integrator.h>
 #include <liftoff/time/plate_state.h>
 #include <liftoff/time/static_equilibrium.h>
 
@@ -24,7 +25,6 @@ namespace liftoff
   class LoadSet;
   class MeshRefinement;
   class MindlinPlate;
-  class NewmarkIntegrator;
   class PlateMatrices;
 
   /**
@@ -118,7 +118,10 @@ namespace liftoff
     void
     start_time_integration(const StopCheck &stop_if_requested);
     /// Step `step` of the time loop: right-hand side, contact problem and
-    /// the update of (u, v, a), with the checks of the new state.
+    /// the update of (u, v, a), with the checks of the new state. With
+    /// Time step control = error, the steps of the controller from
+    /// tau_at(step - 1) to tau_at(step); their active-set iterations are
+    /// summed.
     ActiveSetIteration::Result
     do_step(const unsigned int step);
 
@@ -146,6 +149,9 @@ namespace liftoff
     /// New meshes of the time loop or the static cycles.
     unsigned int
     n_adaptations() const;
+    /// The scene's step control, with the record of the steps taken.
+    const StepSizeController &
+    step_control() const;
 
     /// The checkpoint's part of the stepper, in its two places of the
     /// format: the state with the energy check's record, and the contact
@@ -164,12 +170,17 @@ namespace liftoff
     const std::vector<SystemTerm *> terms;
     TensionlessWinklerFoundation   &foundation;
     LoadSet                        &loads;
-    const NewmarkIntegrator        &newmark;
-    EnergyCheck                    &energy_check;
-    const MeshRefinement           &mesh_refinement;
-    ActiveSetIteration             &active_set;
-    const Options                   options;
-    SectionTimer                   &timer;
+    /// The scene's scheme, and the one of the step being taken (its time
+    /// step the controller's).
+    const NewmarkIntegrator &scene_newmark;
+    NewmarkIntegrator        newmark;
+    EnergyCheck             &energy_check;
+    const MeshRefinement    &mesh_refinement;
+    ActiveSetIteration      &active_set;
+    /// A copy of the scene's: it keeps the level and counts of the run.
+    StepSizeController controller;
+    const Options      options;
+    SectionTimer      &timer;
 
     PlateState state_;
     /// The next step's load, right-hand side and solution, and scratch.
@@ -182,7 +193,12 @@ namespace liftoff
     /// mesh changed).
     double       largest_eigenvalue = 0;
     unsigned int n_new_meshes       = 0;
-    std::string  warning;
+    /// The controller's level whose time step `newmark` and the system
+    /// matrix have.
+    unsigned int level_in_use = 0;
+    /// The locally owned entries of w, where the error is measured.
+    IndexSet    w_entries;
+    std::string warning;
     /// The mesh's area check, apart: a later warning must not hide it.
     std::string               mesh_warning;
     StaticEquilibrium::Result equilibrium;
@@ -287,11 +303,29 @@ namespace liftoff
     double
     stored_energy();
 
-    /// The parts of do_step(), in their order.
-    void
-    assemble_right_hand_side(const unsigned int step);
+    /// do_step() with Time step control = error.
     ActiveSetIteration::Result
-    solve_contact_problem(const unsigned int step);
+    do_controlled_steps(const unsigned int step);
+    /// Give `newmark` and the system matrix the time step of `level`.
+    void
+    use_level(const unsigned int level);
+    /// The scene's scheme with the time step of `level`.
+    NewmarkIntegrator
+    scheme_of_level(const unsigned int level) const;
+    /// The relative local error of the solved step in u_next
+    /// (StepSizeController::relative_error(), collective).
+    double
+    relative_step_error();
+
+    /// The parts of do_step(), in their order; `tau` the time of the new
+    /// state. `from_prediction`: the iteration may start from the
+    /// predictor's set (not the first step).
+    void
+    assemble_right_hand_side(const unsigned int step, const double tau);
+    ActiveSetIteration::Result
+    solve_contact_problem(const unsigned int step,
+                          const double       tau,
+                          const bool         from_prediction);
     void
     advance(const unsigned int step);
     /// The dashpots' work over the step just taken (advance()).
