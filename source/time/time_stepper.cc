@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace liftoff
 {
@@ -624,16 +625,20 @@ namespace liftoff
                          {},
                          state_.energies.values(),
                          state_.load);
-    // The first iterate is the bilateral problem.
-    foundation.activate_all();
-    active_set.set_base_matrix(effective_base_matrix(),
-                               newmark.velocity_factor());
+    first_step_pending = true;
   }
 
 
   ActiveSetIteration::Result
   TimeStepper::do_step(const unsigned int step)
   {
+    if (std::exchange(first_step_pending, false))
+      {
+        // The first iterate is the bilateral problem.
+        foundation.activate_all();
+        active_set.set_base_matrix(effective_base_matrix(),
+                                   newmark.velocity_factor());
+      }
     if (controller.is_enabled())
       return do_controlled_steps(step);
     const double tau = state_.clock.tau_at(step);

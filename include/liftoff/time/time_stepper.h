@@ -193,6 +193,11 @@ namespace liftoff
     /// mesh changed).
     double       largest_eigenvalue = 0;
     unsigned int n_new_meshes       = 0;
+    /// Whether the next step starts the time integration: its first
+    /// iterate is the bilateral problem, set up by the step itself so that
+    /// the record of the initial state (tau = 0) reads that state's own
+    /// contact set.
+    bool first_step_pending = false;
     /// The controller's level whose time step `newmark` and the system
     /// matrix have.
     unsigned int level_in_use = 0;
