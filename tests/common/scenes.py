@@ -2,19 +2,25 @@
 of code for the tests that need it."""
 
 import os
+import shutil
 import subprocess
 
 import numpy as np
 
 
-def run_scene(liftoff, work, name, text, options=()):
+def run_scene(liftoff, work, name, text, options=(), ranks=1):
     """Write `text` to WORK/NAME.prm with its output in WORK/NAME and run
-    it; returns the output folder and the finished process (exit code,
-    standard output and error as text)."""
+    it (with mpirun on `ranks` ranks if more than one); returns the output
+    folder and the finished process (exit code, standard output and error
+    as text)."""
     folder = os.path.join(work, name)
     with open(folder + ".prm", "w") as f:
         f.write(text + f"\nsubsection Output\n  set Directory = {folder}\nend\n")
-    result = subprocess.run([liftoff, *options, folder + ".prm"],
+    mpirun = []
+    if ranks > 1:
+        mpirun = [shutil.which("mpirun") or shutil.which("mpiexec"),
+                  "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)]
+    result = subprocess.run([*mpirun, liftoff, *options, folder + ".prm"],
                             capture_output=True, text=True)
     return folder, result
 

@@ -29,8 +29,6 @@ every column agrees with one rank's to 1e-9 of its largest value.
 
 import filecmp
 import os
-import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -153,14 +151,8 @@ def resumed_is_uninterrupted(work):
     check(filecmp.cmp(os.path.join(whole, "history.csv"),
                       os.path.join(folder, "history.csv"), shallow=False),
           "resumed at tau = 0.05: history.csv byte for byte the whole run's")
-    two = os.path.join(work, "two_ranks")
-    with open(two + ".prm", "w") as f:
-        f.write(dynamic(0.1) + f"\nsubsection Output\n  set Directory = {two}"
-                "\nend\n")
-    mpirun = shutil.which("mpirun") or shutil.which("mpiexec")
-    result = subprocess.run([mpirun, "--allow-run-as-root", "--oversubscribe",
-                             "-np", "2", LIFTOFF, two + ".prm"],
-                            capture_output=True, text=True)
+    two, result = run_scene(LIFTOFF, work, "two_ranks", dynamic(0.1),
+                            ranks=2)
     check(result.returncode == 0, f"two ranks run ({result.stderr.strip()})")
     other = read_history(two)
     worst = max(np.max(np.abs(h[c] - other[c])) / max(np.max(np.abs(h[c])),

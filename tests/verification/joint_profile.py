@@ -28,8 +28,6 @@ probe (Probe quantities, sigma_yy) 1e-7 inside that slab.
 import csv
 import filecmp
 import os
-import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -174,14 +172,8 @@ def resumed_and_two_ranks(work):
     check(filecmp.cmp(os.path.join(whole, "history.csv"),
                       os.path.join(folder, "history.csv"), shallow=False),
           "resumed: history.csv (with the named points) byte for byte")
-    two = os.path.join(work, "two_ranks")
-    with open(two + ".prm", "w") as f:
-        f.write(dynamic(0.1) + f"\nsubsection Output\n  set Directory = {two}"
-                "\nend\n")
-    mpirun = shutil.which("mpirun") or shutil.which("mpiexec")
-    result = subprocess.run([mpirun, "--allow-run-as-root", "--oversubscribe",
-                             "-np", "2", LIFTOFF, two + ".prm"],
-                            capture_output=True, text=True)
+    two, result = run_scene(LIFTOFF, work, "two_ranks", dynamic(0.1),
+                            ranks=2)
     check(result.returncode == 0, f"two ranks run ({result.stderr.strip()})")
     other = read_profile(two)
     same = len(other) == len(rows) and all(
