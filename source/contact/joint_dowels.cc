@@ -118,9 +118,10 @@ namespace liftoff
       "Positions",
       "",
       Patterns::List(Patterns::Double(0.0), 0, 1000),
-      "The dowels' distances along each doweled joint from the plate's "
-      "edge where the joint begins (its end at the lower y for x1, ..., at "
-      "the lower x for y1, ...); empty: from Spacing."
+      "The dowels' distances along each doweled joint from where it "
+      "begins (its end at the lower y for x1, ... and for a mesh file's "
+      "joints along y, at the lower x for y1, ... and joints along x: on "
+      "the rectangle the plate's edge); empty: from Spacing."
         + quantity("length"));
     prm.declare_entry("Spacing",
                       "0",
@@ -132,8 +133,8 @@ namespace liftoff
     prm.declare_entry("Edge distance",
                       "0",
                       Patterns::Double(0.0),
-                      "The distance of the first dowel from the plate's edge "
-                      "(with Spacing); 0: half the spacing."
+                      "The distance of the first dowel from the joint's "
+                      "lower end (with Spacing); 0: half the spacing."
                         + quantity("length"));
     prm.declare_entry(
       "Stiffness",
@@ -247,7 +248,6 @@ namespace liftoff
     std::string               known;
     for (const Joint &joint : joints)
       known += (known.empty() ? "" : ", ") + joint.name;
-    const auto [low, high] = geometry.plate_box().get_boundary_points();
     for (const std::string &name : joint_names)
       {
         const auto joint =
@@ -268,7 +268,7 @@ namespace liftoff
           std::count(joint_names.begin(), joint_names.end(), name) == 1,
           ExcMessage("Slabs/Dowels/Joints names " + name + " twice."));
         const unsigned int        along  = 1 - joint->normal_axis;
-        const double              length = high[along] - low[along];
+        const double              length = joint->end - joint->start;
         const std::vector<double> at     = positions_along(length);
         AssertThrow(!at.empty(),
                     ExcMessage("Slabs/Dowels: Spacing and Edge distance put "
@@ -284,7 +284,7 @@ namespace liftoff
                           + ", which is " + format_number(length) + " long."));
             Point<2> p;
             p[joint->normal_axis] = joint->position;
-            p[along]              = low[along] + at[k];
+            p[along]              = joint->start + at[k];
             joint_of.push_back(joint - joints.begin());
             locations.push_back(p);
             dowel_names.push_back("dowel_" + name + "_"

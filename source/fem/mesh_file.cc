@@ -146,7 +146,6 @@ namespace liftoff
                                "or Recombine Surface)."));
     for (const auto &cell : coarse->active_cell_iterators())
       check_cell_shape(cell);
-    check_conformity();
   }
 
 
@@ -187,7 +186,7 @@ namespace liftoff
 
 
   void
-  MeshFile::check_conformity() const
+  MeshFile::require_conforming(const std::set<types::boundary_id> &joints) const
   {
     // GridIn joins cells by shared node numbers only. A node lying on
     // another cell's edge without being one of its nodes (a hanging node,
@@ -201,15 +200,61 @@ namespace liftoff
     std::sort(by_x.begin(), by_x.end(), [&](const auto a, const auto b) {
       return vertices[a][0] < vertices[b][0];
     });
+    std::vector<Triangulation<2>::active_face_iterator> joint_faces;
+    for (const auto &face : coarse->active_face_iterators())
+      if (face->at_boundary() && joints.count(face->boundary_id()) > 0)
+        joint_faces.push_back(face);
+    std::set<unsigned int> joint_ends;
+    for (const auto &face : joint_faces)
+      {
+        require_facing_edge(face, joint_faces);
+        joint_ends.insert({face->vertex_index(0), face->vertex_index(1)});
+      }
     for (const auto &face : coarse->active_face_iterators())
       if (face->at_boundary())
-        check_edge(face, by_x);
+        check_edge(face, by_x, joint_ends);
+  }
+
+
+  void
+  MeshFile::require_facing_edge(
+    const Triangulation<2>::active_face_iterator              &face,
+    const std::vector<Triangulation<2>::active_face_iterator> &joint_faces)
+    const
+  {
+    const double tolerance = 1e-10 * face->diameter();
+    const auto   same      = [&](const Point<2> &a, const Point<2> &b) {
+      return a.distance(b) <= tolerance;
+    };
+    const Point<2> a = face->vertex(0), b = face->vertex(1);
+    for (const auto &other : joint_faces)
+      if (other != face && other->boundary_id() == face->boundary_id()
+          && ((same(other->vertex(0), a) && same(other->vertex(1), b))
+              || (same(other->vertex(0), b) && same(other->vertex(1), a))))
+        return;
+    const auto named = std::find_if(physical_names.begin(),
+                                    physical_names.end(),
+                                    [&](const auto &n) {
+                                      return n.second == face->boundary_id();
+                                    });
+    AssertThrow(false,
+                ExcMessage("Discretization/Mesh file = " + name + ": the joint "
+                           + (named != physical_names.end()
+                                ? named->first
+                                : std::to_string(face->boundary_id()))
+                           + " has the edge from " + text_of(a) + " to "
+                           + text_of(b)
+                           + ", which faces no edge of the joint with the "
+                             "same ends: a joint is a curve given on both "
+                             "slabs, with the nodes of both at the same "
+                             "places."));
   }
 
 
   void
   MeshFile::check_edge(const Triangulation<2>::active_face_iterator &face,
-                       const std::vector<unsigned int>              &by_x) const
+                       const std::vector<unsigned int>              &by_x,
+                       const std::set<unsigned int> &joint_ends) const
   {
     const auto        &vertices = coarse->get_vertices();
     const Point<2>     a = face->vertex(0), b = face->vertex(1);
@@ -233,13 +278,23 @@ namespace liftoff
           std::clamp((p - a) * along / along.norm_square(), 0.0, 1.0);
         if (p.distance(a + s * along) > tolerance)
           continue;
+        // Slabs cut at a joint have a node each at the joint's nodes.
+        const unsigned int end =
+          p.distance(a) <= tolerance   ? face->vertex_index(0)
+          : p.distance(b) <= tolerance ? face->vertex_index(1)
+                                       : numbers::invalid_unsigned_int;
+        if (end != numbers::invalid_unsigned_int && joint_ends.count(*v) > 0
+            && joint_ends.count(end) > 0)
+          continue;
         const std::string parameter = "Discretization/Mesh file = " + name;
-        AssertThrow(p.distance(a) > tolerance && p.distance(b) > tolerance,
+        AssertThrow(end == numbers::invalid_unsigned_int,
                     ExcMessage(parameter + ": two nodes lie at " + text_of(p)
                                + ", and the cells of each are not joined "
                                  "there: the plate would be cut. Let the "
                                  "cells share one node (gmsh: one surface, "
-                                 "or Coherence)."));
+                                 "or Coherence), or name the curve a joint "
+                                 "(Boundary conditions/Mesh tags = ...: "
+                                 "joint)."));
         AssertThrow(false,
                     ExcMessage(parameter + ": the node at " + text_of(p)
                                + " lies inside the edge from " + text_of(a)
@@ -327,6 +382,13 @@ namespace liftoff
   bool
   MeshFile::contains(const Point<2> &p) const
   {
+    return material_id_at(p) != numbers::invalid_material_id;
+  }
+
+
+  types::material_id
+  MeshFile::material_id_at(const Point<2> &p) const
+  {
     // Exact for the coarse mesh's straight-sided cells; a point on an edge
     // is inside to round-off of the cell's size.
     const auto &mapping =
@@ -337,13 +399,13 @@ namespace liftoff
           {
             const Point<2> unit = mapping.transform_real_to_unit_cell(cell, p);
             if (GeometryInfo<2>::is_inside_unit_cell(unit, 1e-12))
-              return true;
+              return cell->material_id();
           }
         catch (const Mapping<2>::ExcTransformationFailed &)
           {
             // Not in this cell.
           }
-    return false;
+    return numbers::invalid_material_id;
   }
 
 

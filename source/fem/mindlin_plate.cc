@@ -3,6 +3,7 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/plate_geometry.h>
 
 #include <cmath>
 
@@ -67,7 +68,8 @@ namespace liftoff
       Patterns::List(Patterns::Double(), 0, 1024),
       "H of each slab (a widened lane, a thinner shoulder): one value for "
       "every slab or one per slab in the order of their numbers (along x "
-      "first, from the bottom left: slab 1 is the left bottom one); empty: "
+      "first, from the bottom left: slab 1 is the left bottom one; in a mesh "
+      "file its physical surfaces by their numbers); empty: "
       "the plate's. In m in an SI scene, in units of L (as Plate/Thickness "
       "ratio) in a dimensionless one; within [1e-5, 1] L. The slabs share "
       "the plate's density and Poisson ratio; not with a temperature load."
@@ -104,8 +106,6 @@ namespace liftoff
     shear_correction = prm.get_double("Shear correction factor");
     prm.leave_subsection();
 
-    parse_slab_sections(prm);
-
     // Patterns::Double admits the closed interval; the model needs it open.
     AssertThrow(poisson_ratio > -1.0 && poisson_ratio < 0.5,
                 ExcMessage("Plate/Poisson ratio must lie in (-1, 0.5)."));
@@ -115,11 +115,11 @@ namespace liftoff
 
 
   void
-  MindlinPlate::parse_slab_sections(ParameterHandler &prm)
+  MindlinPlate::parse_slab_sections(ParameterHandler    &prm,
+                                    const PlateGeometry &geometry)
   {
     prm.enter_subsection("Slabs");
-    const unsigned int n_slabs =
-      prm.get_integer("Slabs along x") * prm.get_integer("Slabs along y");
+    const unsigned int n_slabs = geometry.slabs().n_slabs();
     // One value per slab, from an empty entry (1), one value or n.
     const auto per_slab = [&](const std::string &entry,
                               const double       scale,
@@ -132,8 +132,9 @@ namespace liftoff
       AssertThrow(values.empty() || n_slabs > 1,
                   ExcMessage(name
                              + ": the plate is one slab (Slabs along x "
-                               "and y are 1); give its section in "
-                               "Plate (or Units)."));
+                               "and y are 1, one physical surface in a "
+                               "mesh file); give its section in Plate (or "
+                               "Units)."));
       AssertThrow(values.size() <= 1 || values.size() == n_slabs,
                   ExcMessage(name
                              + ": give one value for every slab or one "
@@ -160,6 +161,10 @@ namespace liftoff
       slab_sections.push_back({thickness[s], modulus[s]});
     if (!has_slab_sections())
       slab_sections.clear();
+    const std::vector<unsigned int> axes = geometry.symmetry_axes();
+    geometry.slabs().require_symmetric(slab_sections,
+                                       axes,
+                                       axes.size() == 1 ? "half" : "quarter");
   }
 
 

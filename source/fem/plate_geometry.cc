@@ -29,13 +29,14 @@ namespace liftoff
       {"soft simply supported", EdgeCondition::soft_simply_supported},
       {"clamped", EdgeCondition::clamped}};
 
-    // A tag of a mesh file may also be a symmetry plane.
+    // A tag of a mesh file may also be a symmetry plane or a joint.
     const Selection<EdgeCondition> tag_conditions = {
       {"free", EdgeCondition::free},
       {"hard simply supported", EdgeCondition::hard_simply_supported},
       {"soft simply supported", EdgeCondition::soft_simply_supported},
       {"clamped", EdgeCondition::clamped},
-      {"symmetry plane", EdgeCondition::symmetry_plane}};
+      {"symmetry plane", EdgeCondition::symmetry_plane},
+      {"joint", EdgeCondition::joint}};
 
     const Selection<PlateShape> shapes = {{"rectangle", PlateShape::rectangle},
                                           {"disc", PlateShape::disc},
@@ -239,6 +240,17 @@ namespace liftoff
       edge_conditions.parse(prm.get("Inner"), "Boundary conditions/Inner");
     parse_mesh_tags(prm.get("Mesh tags"));
     prm.leave_subsection();
+    std::vector<std::pair<types::boundary_id, std::string>> joint_tags;
+    for (const HeldTag &tag : mesh_tags)
+      if (tag.condition == EdgeCondition::joint)
+        joint_tags.emplace_back(tag.id, tag.name);
+    if (mesh != nullptr)
+      {
+        std::set<types::boundary_id> joint_ids;
+        for (const auto &tag : joint_tags)
+          joint_ids.insert(tag.first);
+        mesh->require_conforming(joint_ids);
+      }
     check_shape_choices(symmetry_name);
 
     // A symmetric model is only right for a symmetric plate.
@@ -253,10 +265,7 @@ namespace liftoff
                   ExcMessage("Discretization/Symmetry = quarter needs Boundary "
                              "conditions/Bottom and Top to be equal (the plate "
                              "must be symmetric about y = 0)."));
-    slab_layout.parse_parameters(prm, *this);
-    slab_layout.require_symmetric(plate.slab_sections,
-                                  symmetry_axes(),
-                                  symmetry_name);
+    slab_layout.parse_parameters(prm, *this, mesh, joint_tags);
   }
 
 
@@ -580,7 +589,7 @@ namespace liftoff
     const auto                hold = [&](const types::boundary_id id,
                           const EdgeCondition      condition,
                           const unsigned int       direction) {
-      if (condition != EdgeCondition::free)
+      if (condition != EdgeCondition::free && condition != EdgeCondition::joint)
         held.push_back({id, condition, direction});
     };
     const unsigned int curved = numbers::invalid_unsigned_int;

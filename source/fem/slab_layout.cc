@@ -49,30 +49,39 @@ namespace liftoff
 
 
   void
-  SlabLayout::parse_parameters(ParameterHandler    &prm,
-                               const PlateGeometry &geometry)
+  SlabLayout::parse_parameters(
+    ParameterHandler                                              &prm,
+    const PlateGeometry                                           &geometry,
+    const std::shared_ptr<const MeshFile>                         &mesh_file,
+    const std::vector<std::pair<types::boundary_id, std::string>> &joint_tags)
   {
     prm.enter_subsection("Slabs");
-    n_slabs = {{static_cast<unsigned int>(prm.get_integer("Slabs along x")),
-                static_cast<unsigned int>(prm.get_integer("Slabs along y"))}};
+    slab_grid = {{static_cast<unsigned int>(prm.get_integer("Slabs along x")),
+                  static_cast<unsigned int>(prm.get_integer("Slabs along y"))}};
     const std::vector<std::string> tied =
       Utilities::split_string_list(prm.get("Tied joints"));
     prm.leave_subsection();
 
     joint_list.clear();
-    if (!is_jointed())
+    mesh = mesh_file;
+    slab_numbers.clear();
+    joint_tag_ids.clear();
+    if (slab_grid[0] * slab_grid[1] > 1)
       {
-        AssertThrow(tied.empty(),
-                    ExcMessage("Slabs/Tied joints = " + tied[0]
-                               + ": the plate is one slab (Slabs along x "
-                                 "and y are 1), it has no joints."));
-        return;
+        AssertThrow(geometry.shape() == PlateShape::rectangle,
+                    ExcMessage("Slabs/Slabs along x and y: slabs are made on "
+                               "the rectangle, or come from a mesh file's "
+                               "physical surfaces; not on "
+                               + geometry.shape_setting() + "."));
+        place_joints(geometry);
       }
-    AssertThrow(geometry.shape() == PlateShape::rectangle,
-                ExcMessage("Slabs/Slabs along x and y: slabs are made on the "
-                           "rectangle only, not on "
-                           + geometry.shape_setting() + "."));
-    place_joints(geometry);
+    else if (mesh != nullptr)
+      place_mesh_joints(joint_tags);
+    AssertThrow(tied.empty() || !joint_list.empty(),
+                ExcMessage("Slabs/Tied joints = " + tied[0]
+                           + ": the plate has no joints (Slabs along x and y "
+                             "are 1, and no curve of a mesh file is a "
+                             "joint)."));
     for (const std::string &name : tied)
       {
         const auto joint =
@@ -88,6 +97,59 @@ namespace liftoff
 
 
   void
+  SlabLayout::place_mesh_joints(
+    const std::vector<std::pair<types::boundary_id, std::string>> &joint_tags)
+  {
+    Triangulation<2> coarse;
+    mesh->copy_to(coarse);
+    for (const auto &cell : coarse.active_cell_iterators())
+      slab_numbers.emplace(cell->material_id(), 0);
+    unsigned int number = 0;
+    for (auto &slab : slab_numbers)
+      slab.second = number++;
+    // The sides' ids above every id of the file.
+    const std::vector<types::boundary_id> ids = coarse.get_boundary_ids();
+    types::boundary_id                    id  = std::max<types::boundary_id>(
+      first_joint_id, 1 + *std::max_element(ids.begin(), ids.end()));
+    const double size = mesh->bounding_box().side_length(0);
+    for (const auto &[tag, name] : joint_tags)
+      {
+        const std::string what = "Boundary conditions/Mesh tags: the joint "
+                                 + name + " of the mesh file";
+        const unsigned int along = mesh->direction_of(tag);
+        AssertThrow(along < 2,
+                    ExcMessage(what
+                               + " does not run along x or y; liftoff's "
+                                 "joints are straight lines along x or y."));
+        Joint joint{name, 1 - along, 0.0, id, id + 1u, false, 1e300, -1e300};
+        bool  first = true;
+        for (const auto &face : coarse.active_face_iterators())
+          if (face->at_boundary() && face->boundary_id() == tag)
+            {
+              const double at = face->center()[joint.normal_axis];
+              AssertThrow(first
+                            || std::abs(at - joint.position) <= 1e-10 * size,
+                          ExcMessage(what + " lies on the lines "
+                                     + format_number(joint.position) + " and "
+                                     + format_number(at)
+                                     + ": give each straight joint a "
+                                       "physical curve of its own."));
+              joint.position = at;
+              first          = false;
+              for (const unsigned int v : {0u, 1u})
+                {
+                  joint.start = std::min(joint.start, face->vertex(v)[along]);
+                  joint.end   = std::max(joint.end, face->vertex(v)[along]);
+                }
+            }
+        joint_list.push_back(joint);
+        joint_tag_ids.insert(tag);
+        id += 2;
+      }
+  }
+
+
+  void
   SlabLayout::place_joints(const PlateGeometry &geometry)
   {
     const auto [low, high] = geometry.plate_box().get_boundary_points();
@@ -97,16 +159,16 @@ namespace liftoff
     for (unsigned int axis = 0; axis < 2; ++axis)
       {
         origin[axis]      = low[axis];
-        slab_size[axis]   = (high[axis] - low[axis]) / n_slabs[axis];
+        slab_size[axis]   = (high[axis] - low[axis]) / slab_grid[axis];
         const double cell = (modelled_high[axis] - modelled_low[axis])
                             / geometry.coarse_cells_along(axis);
-        for (unsigned int j = 1; j < n_slabs[axis]; ++j)
+        for (unsigned int j = 1; j < slab_grid[axis]; ++j)
           {
             const double      position = low[axis] + j * slab_size[axis];
             const std::string name     = axis_names[axis] + std::to_string(j);
             const std::string what =
               "Slabs/Slabs along " + std::string(axis_names[axis]) + " = "
-              + std::to_string(n_slabs[axis]) + " puts the joint " + name
+              + std::to_string(slab_grid[axis]) + " puts the joint " + name
               + " at " + axis_names[axis] + " = " + format_number(position);
             const double tolerance = 1e-10 * (high[axis] - low[axis]);
             AssertThrow(std::abs(position) > tolerance
@@ -127,16 +189,32 @@ namespace liftoff
                                      "meshed part."));
             const types::boundary_id id =
               first_joint_id + 2 * joint_list.size();
-            joint_list.push_back({name, axis, position, id, id + 1u, false});
+            joint_list.push_back({name,
+                                  axis,
+                                  position,
+                                  id,
+                                  id + 1u,
+                                  false,
+                                  low[1 - axis],
+                                  high[1 - axis]});
           }
       }
+  }
+
+
+  unsigned int
+  SlabLayout::n_slabs() const
+  {
+    return mesh != nullptr && slab_grid[0] * slab_grid[1] == 1
+             ? std::max<unsigned int>(1, slab_numbers.size())
+             : slab_grid[0] * slab_grid[1];
   }
 
 
   bool
   SlabLayout::is_jointed() const
   {
-    return n_slabs[0] * n_slabs[1] > 1;
+    return n_slabs() > 1 || !joint_list.empty();
   }
 
 
@@ -160,12 +238,17 @@ namespace liftoff
   unsigned int
   SlabLayout::slab_of(const Point<2> &p) const
   {
+    if (!slab_numbers.empty())
+      {
+        const auto slab = slab_numbers.find(mesh->material_id_at(p));
+        return slab != slab_numbers.end() ? slab->second : 0;
+      }
     std::array<unsigned int, 2> index;
     for (unsigned int axis = 0; axis < 2; ++axis)
       index[axis] = std::min<unsigned int>(
-        n_slabs[axis] - 1,
+        slab_grid[axis] - 1,
         std::max(0.0, std::floor((p[axis] - origin[axis]) / slab_size[axis])));
-    return index[0] + n_slabs[0] * index[1];
+    return index[0] + slab_grid[0] * index[1];
   }
 
 
@@ -180,9 +263,9 @@ namespace liftoff
       for (const unsigned int axis : symmetry_axes)
         {
           std::array<unsigned int, 2> index = {
-            {s % n_slabs[0], s / n_slabs[0]}};
-          index[axis]          = n_slabs[axis] - 1 - index[axis];
-          const unsigned int m = index[0] + n_slabs[0] * index[1];
+            {s % slab_grid[0], s / slab_grid[0]}};
+          index[axis]          = slab_grid[axis] - 1 - index[axis];
+          const unsigned int m = index[0] + slab_grid[0] * index[1];
           const bool same      = sections[m].thickness == sections[s].thickness
                             && sections[m].modulus == sections[s].modulus;
           AssertThrow(same,
@@ -208,13 +291,17 @@ namespace liftoff
     std::vector<CellData<2>>                                      cells;
     for (const auto &cell : whole.active_cell_iterators())
       {
-        const unsigned int slab = slab_of(cell->center());
+        const unsigned int slab = slab_numbers.empty()
+                                    ? slab_of(cell->center())
+                                    : slab_numbers.at(cell->material_id());
         CellData<2>        data;
         data.material_id = slab;
+        // A mesh file's slabs are cut where its nodes are.
+        const unsigned int piece = slab_numbers.empty() ? slab : 0;
         for (const unsigned int v : cell->vertex_indices())
           {
             const auto [it, is_new] =
-              copy_of.try_emplace({cell->vertex_index(v), slab},
+              copy_of.try_emplace({cell->vertex_index(v), piece},
                                   vertices.size());
             if (is_new)
               vertices.push_back(cell->vertex(v));
@@ -242,19 +329,20 @@ namespace liftoff
                          Triangulation<2>       &cut) const
   {
     // The edges' and planes' ids at the same places; the other faces on
-    // the boundary now are the joints'.
+    // the boundary now, and a mesh file's joints, are the joints'.
     std::vector<std::pair<Point<2>, types::boundary_id>> edge_ids;
     for (const auto &face : whole.active_face_iterators())
-      if (face->at_boundary())
+      if (face->at_boundary() && joint_tag_ids.count(face->boundary_id()) == 0)
         edge_ids.emplace_back(face->center(), face->boundary_id());
     const double tolerance = 1e-10 * GridTools::minimal_cell_diameter(whole);
     for (const auto &cell : cut.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
           {
-            const auto edge =
+            const Point<2> c = face->center();
+            const auto     edge =
               std::find_if(edge_ids.begin(), edge_ids.end(), [&](auto &e) {
-                return e.first.distance(face->center()) < tolerance;
+                return e.first.distance(c) < tolerance;
               });
             if (edge != edge_ids.end())
               {
@@ -262,12 +350,15 @@ namespace liftoff
                 continue;
               }
             for (const Joint &joint : joint_list)
-              if (std::abs(face->center()[joint.normal_axis] - joint.position)
-                  < tolerance)
-                face->set_boundary_id(cell->center()[joint.normal_axis]
-                                          < joint.position
-                                        ? joint.lower_side
-                                        : joint.upper_side);
+              {
+                const unsigned int along = 1 - joint.normal_axis;
+                if (std::abs(c[joint.normal_axis] - joint.position) < tolerance
+                    && c[along] > joint.start && c[along] < joint.end)
+                  face->set_boundary_id(cell->center()[joint.normal_axis]
+                                            < joint.position
+                                          ? joint.lower_side
+                                          : joint.upper_side);
+              }
           }
   }
 

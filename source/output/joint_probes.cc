@@ -70,12 +70,16 @@ namespace liftoff
         const Point<2> modelled =
           geometry.is_on_plate(p) ? geometry.to_modelled_part(p) : p;
         const double size = geometry.plate_box().side_length(0);
-        unsigned int j    = 0;
-        while (
-          j < joints.size()
-          && (joints[j].tied
-              || std::abs(modelled[joints[j].normal_axis] - joints[j].position)
-                   > 1e-10 * size))
+        const auto   on   = [&](const Joint &joint) {
+          const double along = modelled[1 - joint.normal_axis];
+          return !joint.tied
+                 && std::abs(modelled[joint.normal_axis] - joint.position)
+                      <= 1e-10 * size
+                 && along >= joint.start - 1e-10 * size
+                 && along <= joint.end + 1e-10 * size;
+        };
+        unsigned int j = 0;
+        while (j < joints.size() && !on(joints[j]))
           ++j;
         AssertThrow(geometry.is_on_plate(p) && j < joints.size(),
                     ExcMessage("Output/Joint probe points: the point "

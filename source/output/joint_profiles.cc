@@ -22,8 +22,9 @@ namespace liftoff
       Patterns::Bool(),
       "Write joints.csv at the Profile times (once in a static analysis): "
       "along each joint that is not tied, at the Gauss points its springs "
-      "are integrated at, the distance s from the plate's edge at the "
-      "joint's lower end, w of the lower (left, bottom) and the upper "
+      "are integrated at, the distance s along it from its lower end (on "
+      "the rectangle the plate's edge), w of the lower (left, bottom) and the "
+      "upper "
       "slab, their load transfer (the smaller w over the larger) and the "
       "shear force per length the aggregate interlock passes from the "
       "lower slab to the upper one.");
@@ -99,9 +100,7 @@ namespace liftoff
     // Empty on the other ranks, whose stream discards what they write.
     const auto all = Utilities::MPI::gather(comm, mine, 0);
 
-    const PlateGeometry &geometry = discretization->geometry();
-    const Point<2>       low = geometry.plate_box().get_boundary_points().first;
-    const auto          &joints = geometry.slabs().joints();
+    const auto &joints = discretization->geometry().slabs().joints();
     std::vector<std::array<double, 7>> rows;
     for (const auto &rank : all)
       for (std::size_t k = 0; k + 5 < rank.size(); k += 6)
@@ -109,7 +108,7 @@ namespace liftoff
           const unsigned int j    = rank[k];
           const unsigned int axis = 1 - joints[j].normal_axis;
           rows.push_back({{rank[k],
-                           rank[k + 1 + axis] - low[axis],
+                           rank[k + 1 + axis] - joints[j].start,
                            rank[k + 1],
                            rank[k + 2],
                            rank[k + 3],

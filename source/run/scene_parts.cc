@@ -63,6 +63,7 @@ namespace liftoff
     initial_conditions.parse_parameters(prm);
     plate.parse_parameters(prm);
     discretization.parse_parameters(prm, plate, units);
+    plate.parse_slab_sections(prm, discretization.geometry());
     mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
     joint_springs.parse_parameters(prm);

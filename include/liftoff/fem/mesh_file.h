@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,9 @@ namespace liftoff
    * physical curves name parts of the boundary. A physical curve's number
    * is the boundary id of its faces (GridIn's rule); its name, read here
    * from the file's $PhysicalNames, stands for that number. Faces of no
-   * physical curve have the boundary id 0. Also answers which points the
-   * mesh covers, its edges included.
+   * physical curve have the boundary id 0. A cell's material id is the
+   * number of its physical surface. Also answers which points the mesh
+   * covers, its edges included.
    */
   class MeshFile
   {
@@ -31,10 +33,19 @@ namespace liftoff
     /// a file GridIn cannot read as a planar mesh (a 3D mesh among them),
     /// cells that are not quadrilaterals, cells with two nodes at one place
     /// or not convex, cells that touch without sharing their nodes (a
-    /// non-conforming mesh, which GridIn would take as a cut plate), one
-    /// physical name given to two curves.
+    /// physical name given to two curves. Whether cells touch without
+    /// sharing their nodes is checked by require_conforming(), once the
+    /// joints are known.
     explicit MeshFile(const std::string &file_name,
                       const double       length_scale = 1.0);
+
+    /// Refuses cells that touch without sharing nodes (a node on another
+    /// cell's edge, two nodes at one place: GridIn would take the plate as
+    /// cut there, silently) except along the curves `joints`, where the
+    /// plate is cut on purpose: there each edge must face one edge of the
+    /// same curve with the same two ends.
+    void
+    require_conforming(const std::set<types::boundary_id> &joints) const;
 
     /// The coarse mesh, with the boundary ids of the file, into an empty
     /// triangulation (a distributed one too).
@@ -56,6 +67,10 @@ namespace liftoff
     /// True for a point of a cell of the mesh, its edges included.
     bool
     contains(const Point<2> &p) const;
+    /// The material id (physical surface) of a cell holding `p`, or
+    /// numbers::invalid_material_id off the mesh.
+    types::material_id
+    material_id_at(const Point<2> &p) const;
     BoundingBox<2>
     bounding_box() const;
     /// The area its cells cover.
@@ -74,15 +89,20 @@ namespace liftoff
     /// convex: its bilinear map would not be one to one.
     void
     check_cell_shape(const Triangulation<2>::active_cell_iterator &cell) const;
-    /// Refuses cells that touch without sharing nodes: a node on another
-    /// cell's edge (a hanging node) or two nodes at one place.
-    void
-    check_conformity() const;
     /// The nodes (`by_x`: the used vertices sorted by x) on the boundary
-    /// edge `face` other than its own ends.
+    /// edge `face` other than its own ends: refused, except the nodes of
+    /// the joints' edges (`joint_ends`) at the ends of another's.
     void
     check_edge(const Triangulation<2>::active_face_iterator &face,
-               const std::vector<unsigned int>              &by_x) const;
+               const std::vector<unsigned int>              &by_x,
+               const std::set<unsigned int>                 &joint_ends) const;
+    /// Refuses a joint's edge that faces no edge of the same joint (in
+    /// `joint_faces`) with the same two ends.
+    void
+    require_facing_edge(
+      const Triangulation<2>::active_face_iterator              &face,
+      const std::vector<Triangulation<2>::active_face_iterator> &joint_faces)
+      const;
     /// The named tags of the file and the unnamed boundary ids, for messages.
     std::string
     known_tags() const;

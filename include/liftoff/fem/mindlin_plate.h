@@ -10,6 +10,8 @@ namespace liftoff
 {
   using namespace dealii;
 
+  class PlateGeometry;
+
   /// One slab's cross-section against the plate's (Plate, Units): H_s / H
   /// and E_s / E. The density and Poisson ratio are the plate's.
   struct SlabSection
@@ -83,12 +85,15 @@ namespace liftoff
     /// the slabs are alike, so a uniform plate computes the same numbers.
     SectionCoefficients
     section(const unsigned int slab) const;
+    /// The slabs' sections (Slabs/Thicknesses, Modulus ratios) for the
+    /// slabs of `geometry`, parsed after it; refused where the count is
+    /// wrong, or where mirror slabs of a symmetric model differ.
+    void
+    parse_slab_sections(ParameterHandler &prm, const PlateGeometry &geometry);
 
   private:
     /// The slabs' sections, in the subsection Slabs.
     static void
     declare_slab_parameters(ParameterHandler &prm);
-    void
-    parse_slab_sections(ParameterHandler &prm);
   };
 } // namespace liftoff

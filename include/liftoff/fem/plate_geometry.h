@@ -28,7 +28,8 @@ namespace liftoff
     hard_simply_supported, // w = 0 and the tangential rotation is zero
     soft_simply_supported, // w = 0 only
     clamped,               // w = psi_x = psi_y = 0
-    symmetry_plane         // the rotation normal to the edge is zero
+    symmetry_plane,        // the rotation normal to the edge is zero
+    joint                  // a mesh file's curve between slabs (SlabLayout)
   };
 
   /// The plate's outline: the rectangle [-1/2, 1/2] x [-mu/2, mu/2], the

@@ -6,10 +6,14 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <liftoff/fem/mesh_file.h>
 #include <liftoff/fem/mindlin_plate.h>
 
 #include <array>
 #include <functional>
+#include <map>
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -19,9 +23,10 @@ namespace liftoff
 
   class PlateGeometry;
 
-  /// A straight joint between two neighbouring slabs of the rectangle: x1,
-  /// x2, ... the transverse joints x = const (normal along x), y1, ... the
-  /// longitudinal ones y = const. Its faces carry two boundary ids, one per
+  /// A straight joint between neighbouring slabs, x = const (normal along
+  /// x) or y = const, from `start` to `end` along it: on the rectangle x1,
+  /// x2, ... the transverse joints, y1, ... the longitudinal ones; in a
+  /// mesh file a physical curve. Its faces carry two boundary ids, one per
   /// side: `lower_side` that of the slab with the smaller coordinate.
   struct Joint
   {
@@ -31,11 +36,18 @@ namespace liftoff
     types::boundary_id lower_side;
     types::boundary_id upper_side;
     bool               tied;
+    double             start;
+    double             end;
   };
 
   /**
-   * The rectangle as a grid of slabs, `Slabs along x` by `Slabs along y` of
-   * equal size, with a joint between neighbours. The slabs share no vertex:
+   * The plate as slabs: the rectangle as a grid of `Slabs along x` by
+   * `Slabs along y` of equal size, with a joint between neighbours; or a
+   * mesh file's physical surfaces (slab numbers in the order of theirs),
+   * cut along its curves of the condition `joint`, each a straight line
+   * along x or y given on both slabs with the nodes of both at the same
+   * places. Surfaces that share nodes are joined monolithically. The slabs
+   * of the rectangle share no vertex:
    * the coarse mesh is cut along the joints, so that w and psi may jump
    * there, and each joint's two faces are paired as periodic faces of the
    * triangulation (with no offset), which puts the cells across a joint
@@ -50,12 +62,21 @@ namespace liftoff
     static void
     declare_parameters(ParameterHandler &prm);
     /// The joints of `geometry`'s plate, refused (naming the entries) on
-    /// another shape than the rectangle, where a joint's line is no line
-    /// of the coarse cells, or on a symmetry plane.
+    /// a disc or annulus, where a joint's line is no line of the coarse
+    /// cells, or on a symmetry plane; the slabs and joints (`joint_tags`,
+    /// boundary id and name) of `mesh` if there is one.
     void
-    parse_parameters(ParameterHandler &prm, const PlateGeometry &geometry);
+    parse_parameters(
+      ParameterHandler                      &prm,
+      const PlateGeometry                   &geometry,
+      const std::shared_ptr<const MeshFile> &mesh,
+      const std::vector<std::pair<types::boundary_id, std::string>>
+        &joint_tags);
 
-    /// Whether the plate is more than one slab.
+    /// The number of slabs.
+    unsigned int
+    n_slabs() const;
+    /// Whether the plate is more than one slab or has joints.
     bool
     is_jointed() const;
     /// The joints inside the modelled part of the plate.
@@ -88,7 +109,8 @@ namespace liftoff
       const std::function<void(const DoFHandler<2>::active_cell_iterator &,
                                const unsigned int,
                                const unsigned int)> &f) const;
-    /// The number of the slab a point of the full plate is on (x first).
+    /// The number of the slab a point of the full plate is on (x first on
+    /// the rectangle).
     unsigned int
     slab_of(const Point<2> &p) const;
     /// Refuse sections that differ between a slab and its mirror image in a
@@ -103,7 +125,11 @@ namespace liftoff
     tie(const DoFHandler<2> &dof_handler, AffineConstraints<double> &c) const;
 
   private:
-    std::array<unsigned int, 2> n_slabs = {{1, 1}};
+    std::array<unsigned int, 2> slab_grid = {{1, 1}};
+    /// A mesh file's slabs: the slab number of each physical surface.
+    std::shared_ptr<const MeshFile>            mesh;
+    std::map<types::material_id, unsigned int> slab_numbers;
+    std::set<types::boundary_id>               joint_tag_ids;
     /// The lowest corner and the size of a slab of the full plate.
     std::array<double, 2> origin    = {{0, 0}};
     std::array<double, 2> slab_size = {{1, 1}};
@@ -113,6 +139,11 @@ namespace liftoff
     /// cells.
     void
     place_joints(const PlateGeometry &geometry);
+    /// The joints along the mesh file's curves `joint_tags`, and its slabs.
+    void
+    place_mesh_joints(
+      const std::vector<std::pair<types::boundary_id, std::string>>
+        &joint_tags);
     /// The boundary ids of `whole`'s faces on the same faces of `cut`, and
     /// the joints' on the faces that are new.
     void

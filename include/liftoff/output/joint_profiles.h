@@ -19,7 +19,7 @@ namespace liftoff
    * Profiles along the joints at the Profile times (`Output/Joint
    * profiles`): joints.csv, in long format, one row per Gauss point of
    * each joint that is not tied, ordered by joint and by s, the distance
-   * along it from the plate's edge at its lower end: w on the lower
+   * along it from its lower end: w on the lower
    * (left, bottom) and the upper slab, the load transfer there (the
    * smaller side's w over the larger's) and the shear force per length
    * the aggregate interlock passes from the lower slab to the upper one
