@@ -271,6 +271,19 @@ namespace liftoff
       {
         if (unit == "text" || item.empty())
           return item;
+        // A number labelled by a name (Slabs/Dowels/Positions: x1: 0.5);
+        // not muParser's a ? b : c.
+        static const std::regex label(R"(^\s*[A-Za-z_][A-Za-z0-9_]*\s*:)");
+        const std::size_t       colon = item.find(':');
+        if (std::regex_search(item, label)
+            && Patterns::Double().match(
+              Utilities::trim(item.substr(colon + 1))))
+          return item.substr(0, colon + 1) + " "
+                 + converted_item(path,
+                                  Utilities::trim(item.substr(colon + 1)),
+                                  unit,
+                                  point,
+                                  point_text);
         const double scale = units.at(unit);
         if (Patterns::Double().match(item))
           {

@@ -117,11 +117,14 @@ namespace liftoff
     prm.declare_entry(
       "Positions",
       "",
-      Patterns::List(Patterns::Double(0.0), 0, 1000),
-      "The dowels' distances along each doweled joint from where it "
-      "begins (its end at the lower y for x1, ... and for a mesh file's "
-      "joints along y, at the lower x for y1, ... and joints along x: on "
-      "the rectangle the plate's edge); empty: from Spacing."
+      Patterns::Anything(),
+      "The dowels' distances along a doweled joint from where it begins "
+      "(its end at the lower y for x1, ... and for a mesh file's joints "
+      "along y, at the lower x for y1, ... and joints along x: on the "
+      "rectangle the plate's edge): one list for every joint of "
+      "Slabs/Dowels/Joints (0.5, 1.5, 2.5), or a list per joint, its name "
+      "before a colon (x1: 0.5, 1.5; y1: 1, 3); empty: from Spacing (also "
+      "for a joint the lists per joint leave out)."
         + quantity("length"));
     prm.declare_entry("Spacing",
                       "0",
@@ -168,10 +171,7 @@ namespace liftoff
     joint_names                   = Utilities::split_string_list(joints_text);
     joint_names.erase(std::remove(joint_names.begin(), joint_names.end(), ""),
                       joint_names.end());
-    positions.clear();
-    for (const std::string &item :
-         Utilities::split_string_list(prm.get("Positions")))
-      positions.push_back(Utilities::string_to_double(item));
+    parse_positions(prm.get("Positions"));
     spacing         = prm.get_double("Spacing");
     edge_distance   = prm.get_double("Edge distance");
     given_stiffness = prm.get_double("Stiffness");
@@ -181,10 +181,21 @@ namespace liftoff
     prm.leave_subsection();
     if (joint_names.empty())
       return;
-    AssertThrow(!positions.empty() || spacing > 0,
-                ExcMessage("Slabs/Dowels/Joints = " + joints_text
-                           + " has no dowels: give Slabs/Dowels/Positions or "
-                             "a Spacing > 0."));
+    for (const auto &[name, at] : positions)
+      AssertThrow(name.empty()
+                    || std::count(joint_names.begin(), joint_names.end(), name)
+                         > 0,
+                  ExcMessage("Slabs/Dowels/Positions gives positions on " + name
+                             + ", which is not among Slabs/Dowels/"
+                               "Joints = "
+                             + joints_text + "."));
+    for (const std::string &name : joint_names)
+      AssertThrow(positions.count("") + positions.count(name) > 0
+                    || spacing > 0,
+                  ExcMessage("Slabs/Dowels/Joints = " + joints_text
+                             + ": the joint " + name
+                             + " has no dowels: give Slabs/Dowels/Positions "
+                               "for it or a Spacing > 0."));
     AssertThrow(given_stiffness > 0
                   || (dowel_bar.diameter > 0 && dowel_bar.modulus > 0
                       && dowel_bar.support_modulus > 0),
@@ -220,11 +231,49 @@ namespace liftoff
   }
 
 
-  std::vector<double>
-  JointDowels::positions_along(const double length) const
+  void
+  JointDowels::parse_positions(const std::string &text)
   {
-    if (!positions.empty())
-      return positions;
+    // Groups "x1: 0.5, 1.5" separated by ';', or one list for all joints
+    // (the name "").
+    const std::string entry = "Slabs/Dowels/Positions = " + text;
+    positions.clear();
+    const std::vector<std::string> groups =
+      Utilities::split_string_list(text, ';');
+    for (const std::string &group : groups)
+      {
+        if (group.empty() && groups.size() == 1)
+          break;
+        const std::size_t colon = group.find(':');
+        const std::string name  = colon == std::string::npos
+                                    ? ""
+                                    : Utilities::trim(group.substr(0, colon));
+        AssertThrow((colon != std::string::npos || groups.size() == 1)
+                      && positions.count(name) == 0,
+                    ExcMessage(entry
+                               + ": give one list of distances for every "
+                                 "joint (0.5, 1.5), or one per joint, each "
+                                 "once (x1: 0.5, 1.5; y1: 1, 3)."));
+        std::vector<double> &at = positions[name];
+        for (const std::string &item : Utilities::split_string_list(
+               colon == std::string::npos ? group : group.substr(colon + 1)))
+          {
+            AssertThrow(Patterns::Double(0.0).match(item),
+                        ExcMessage(entry + ": '" + item
+                                   + "' is not a distance (a number >= 0)."));
+            at.push_back(Utilities::string_to_double(item));
+          }
+      }
+  }
+
+
+  std::vector<double>
+  JointDowels::positions_along(const std::string &joint,
+                               const double       length) const
+  {
+    for (const std::string &name : {std::string(), joint})
+      if (positions.count(name) > 0)
+        return positions.at(name);
     const double        edge = edge_distance > 0 ? edge_distance : spacing / 2;
     std::vector<double> along;
     for (double d = edge; d <= length - edge + 1e-10 * length; d += spacing)
@@ -269,7 +318,7 @@ namespace liftoff
           ExcMessage("Slabs/Dowels/Joints names " + name + " twice."));
         const unsigned int        along  = 1 - joint->normal_axis;
         const double              length = joint->end - joint->start;
-        const std::vector<double> at     = positions_along(length);
+        const std::vector<double> at     = positions_along(name, length);
         AssertThrow(!at.empty(),
                     ExcMessage("Slabs/Dowels: Spacing and Edge distance put "
                                "no dowel on the joint "

@@ -24,6 +24,11 @@ goes) stopped at a checkpoint and resumed writes the same history.csv,
 byte for byte, as the run without the stop; on two ranks (one slab each)
 every column agrees with one rank's to 1e-9 of its largest value.
 
+Positions per joint (Slabs/Dowels/Positions = x1: 0.25; x2: 0.75) on
+three slabs under two loads mirrored through the centre: the two dowels,
+images of each other under the half-turn, pass equal and opposite forces
+(one list for both joints fails this: 0.227 against -0.117).
+
     dowel_looseness.py LIFTOFF
 """
 
@@ -36,8 +41,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
-from scenes import (read_history, run_scene, run_scene_or_fail,  # noqa: E402
-                    scene_text)
+from scenes import (point_load, read_history, run_scene,  # noqa: E402
+                    run_scene_or_fail, scene_text)
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 
@@ -162,6 +167,30 @@ def resumed_is_uninterrupted(work):
           "rank's")
 
 
+def positions_per_joint(work):
+    """Three slabs (joints x1 at x = -1/6, x2 at 1/6), one dowel on each
+    at its own position (x1: 0.25, x2: 0.75 from the bottom edge), under
+    two loads mirrored through the centre: the half-turn about the centre
+    takes one dowel onto the other and the lower slab of x1 onto the upper
+    of x2, so their forces are equal and opposite; the same list for both
+    joints (each at 0.25) would put the second dowel where the loads
+    differ."""
+    text = scene_text(
+        {"Analysis": {"Type": "static"},
+         "Foundation": {"Model": "bilateral", "Stiffness": 100},
+         "Discretization": {"Cells along x": 12, "Cells along y": 8},
+         "Slabs": {"Slabs along x": 3,
+                   "Dowels": {"Joints": "x1, x2",
+                              "Positions": "x1: 0.25; x2: 0.75",
+                              "Stiffness": 50}}},
+        point_load(1, -0.3, -0.2, 1), point_load(2, 0.3, 0.2, 1))
+    h = read_history(run_scene_or_fail(LIFTOFF, work, "per_joint", text))
+    a, b = h["dowel_x1_1"][-1], h["dowel_x2_1"][-1]
+    check(abs(a) > 1e-3 and abs(a + b) < 1e-9 * abs(a),
+          f"positions per joint: the dowels at x1: 0.25 and x2: 0.75 pass "
+          f"{a:.10f} and {b:.10f}, equal and opposite")
+
+
 def main():
     with tempfile.TemporaryDirectory() as work:
         compare(work, "linear", 0.0, 0)
@@ -173,6 +202,7 @@ def main():
         other = compare(work, "other side", 0.4 * FREE_JUMP, 1)
         check(np.allclose(other, -engaged, rtol=1e-6, atol=0),
               "the load on the other slab: the same forces, negative")
+        positions_per_joint(work)
         resumed_is_uninterrupted(work)
     finish()
 

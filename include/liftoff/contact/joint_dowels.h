@@ -6,6 +6,7 @@
 
 #include <liftoff/contact/status_term.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -163,12 +164,13 @@ namespace liftoff
     };
 
     std::vector<std::string> joint_names;
-    std::vector<double>      positions;
-    double                   spacing         = 0;
-    double                   edge_distance   = 0;
-    double                   given_stiffness = 0;
-    DowelBar                 dowel_bar;
-    double                   looseness = 0;
+    /// Slabs/Dowels/Positions by joint name ("": every joint).
+    std::map<std::string, std::vector<double>> positions;
+    double                                     spacing         = 0;
+    double                                     edge_distance   = 0;
+    double                                     given_stiffness = 0;
+    DowelBar                                   dowel_bar;
+    double                                     looseness = 0;
 
     /// Per dowel of the plate: its joint, and its point.
     std::vector<unsigned int> joint_of;
@@ -210,8 +212,11 @@ namespace liftoff
     add_vector(const unsigned int i,
                const double       factor,
                LA::MPI::Vector   &vector) const;
-    /// The dowel positions along a joint of length `length`.
+    /// Slabs/Dowels/Positions into `positions`.
+    void
+    parse_positions(const std::string &text);
+    /// The dowel positions along the joint `joint` of length `length`.
     std::vector<double>
-    positions_along(const double length) const;
+    positions_along(const std::string &joint, const double length) const;
   };
 } // namespace liftoff
