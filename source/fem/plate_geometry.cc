@@ -244,13 +244,6 @@ namespace liftoff
     for (const HeldTag &tag : mesh_tags)
       if (tag.condition == EdgeCondition::joint)
         joint_tags.emplace_back(tag.id, tag.name);
-    if (mesh != nullptr)
-      {
-        std::set<types::boundary_id> joint_ids;
-        for (const auto &tag : joint_tags)
-          joint_ids.insert(tag.first);
-        mesh->require_conforming(joint_ids);
-      }
     check_shape_choices(symmetry_name);
 
     // A symmetric model is only right for a symmetric plate.

@@ -64,6 +64,13 @@ namespace liftoff
 
     joint_list.clear();
     mesh = mesh_file;
+    if (mesh != nullptr)
+      {
+        std::set<types::boundary_id> joint_ids;
+        for (const auto &tag : joint_tags)
+          joint_ids.insert(tag.first);
+        mesh->require_conforming(joint_ids);
+      }
     slab_numbers.clear();
     joint_tag_ids.clear();
     if (slab_grid[0] * slab_grid[1] > 1)
