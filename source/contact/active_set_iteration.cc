@@ -233,8 +233,94 @@ namespace liftoff
 
 
   void
-  ActiveSetIteration::set_base_matrix(const BaseMatrix &write,
-                                      const double      kappa)
+  ActiveSetIteration::set_base_matrix(const BaseMatrix                  &write,
+                                      const double                       kappa,
+                                      const std::optional<unsigned int> &key)
+  {
+    kept_factors.clear();
+    key_in_use = key;
+    build_and_factorise(write, kappa);
+  }
+
+
+  void
+  ActiveSetIteration::switch_base_matrix(const unsigned int key,
+                                         const BaseMatrix  &write,
+                                         const double       kappa)
+  {
+    std::optional<FactorCache::Entry> kept = kept_factors.take(key);
+    if (key_in_use)
+      {
+        FactorCache::Entry in_use{*key_in_use,
+                                  factorised_status,
+                                  velocity_factor,
+                                  {}};
+        exchange(solver, in_use.factor);
+        kept_factors.keep(std::move(in_use));
+      }
+    key_in_use = key;
+    if (!kept)
+      return build_and_factorise(write, kappa);
+    // The matrix B + K_f(S) for the current S; the factor is exact for it
+    // if S is the set it was built with (the same sums give the same
+    // values), else it is a stale factor of a changed matrix.
+    const bool is_exact =
+      Utilities::MPI::min(static_cast<int>(statuses()
+                                           == kept->factorised_status),
+                          discretization.mpi_communicator)
+      == 1;
+    {
+      SectionTimer::Scope t(timer, "foundation update");
+      write_base        = write;
+      velocity_factor   = kappa;
+      factorised_status = std::move(kept->factorised_status);
+      write_base(matrix);
+      for (StatusTerm *term : terms)
+        term->add_to_matrix({0.0, velocity_factor}, matrix);
+    }
+    kept->factor.is_exact = is_exact;
+    exchange(solver, kept->factor);
+    if (!is_exact)
+      solver.matrix_changed();
+  }
+
+
+  void
+  ActiveSetIteration::save_kept_factors(OutputArchive &archive) const
+  {
+    const bool         has_key = key_in_use.has_value();
+    const unsigned int key     = key_in_use.value_or(0);
+    archive << has_key << key;
+    kept_factors.save(archive);
+  }
+
+
+  void
+  ActiveSetIteration::load_kept_factors(
+    InputArchive                                        &archive,
+    const std::function<BaseMatrix(const unsigned int)> &write_of_key)
+  {
+    bool         has_key = false;
+    unsigned int key     = 0;
+    archive >> has_key >> key;
+    // Each factor from the matrix it was built from, as load() does.
+    kept_factors.load(archive, [&](FactorCache::Entry &entry) {
+      discretization.reinit_matrix(matrix);
+      write_of_key(entry.key)(matrix);
+      for (unsigned int t = 0; t < terms.size(); ++t)
+        terms[t]->add_to_matrix(entry.factorised_status[t],
+                                entry.velocity_factor,
+                                matrix);
+      solver.prepare(matrix, discretization, this);
+      exchange(solver, entry.factor);
+    });
+    key_in_use = has_key ? std::optional<unsigned int>(key) : std::nullopt;
+  }
+
+
+  void
+  ActiveSetIteration::build_and_factorise(const BaseMatrix &write,
+                                          const double      kappa)
   {
     {
       SectionTimer::Scope t(timer, "foundation update");

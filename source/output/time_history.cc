@@ -419,7 +419,8 @@ namespace liftoff
     const std::function<std::vector<double>()> &values)
   {
     add_columns({{"dt_min", PhysicalUnits::Quantity::time},
-                 {"substeps", PhysicalUnits::Quantity::number}},
+                 {"substeps", PhysicalUnits::Quantity::number},
+                 {"local_error", PhysicalUnits::Quantity::deflection}},
                 [values](const StepData &) { return values(); });
   }
 

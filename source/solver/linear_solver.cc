@@ -518,6 +518,29 @@ namespace liftoff
   }
 
 
+  KeptFactor::KeptFactor()                       = default;
+  KeptFactor::KeptFactor(KeptFactor &&) noexcept = default;
+  KeptFactor &
+  KeptFactor::operator=(KeptFactor &&) noexcept = default;
+  KeptFactor::~KeptFactor()                     = default;
+
+
+  void
+  exchange(LinearSolver &solver, KeptFactor &kept)
+  {
+    std::swap(solver.direct, kept.direct);
+    std::swap(solver.cholesky, kept.cholesky);
+    std::swap(solver.mumps_cholesky, kept.mumps_cholesky);
+    std::swap(solver.amg, kept.amg);
+    std::swap(solver.factor_is_exact, kept.is_exact);
+    std::swap(solver.cg_excess_flops, kept.cg_excess_flops);
+    std::swap(solver.substitution_error, kept.substitution_error);
+    // CG's residual belongs to the last solve, with the other factor.
+    solver.residual_is_current = false;
+    solver.met_tolerance       = false;
+  }
+
+
   void
   LinearSolver::save(OutputArchive &archive) const
   {

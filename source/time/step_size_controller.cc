@@ -132,7 +132,8 @@ namespace liftoff
   StepSizeController::relative_error(const double largest_error,
                                      const double largest_w_of_step)
   {
-    largest_w = std::max(largest_w, largest_w_of_step);
+    largest_w  = std::max(largest_w, largest_w_of_step);
+    step_error = largest_error;
     return largest_w > 0 ? largest_error / largest_w : 0.0;
   }
 
@@ -174,6 +175,7 @@ namespace liftoff
       ++n_at_finest_above_tolerance;
     ++n_accepted;
     ++interval_substeps;
+    interval_error += step_error;
     interval_finest = std::max(interval_finest, current);
 
     // At most twice the step, and a step of level k starts on a multiple
@@ -201,6 +203,7 @@ namespace liftoff
   {
     interval_substeps = 0;
     interval_finest   = 0;
+    interval_error    = 0;
   }
 
 
@@ -222,9 +225,10 @@ namespace liftoff
   StepSizeController::interval_columns() const
   {
     if (interval_substeps == 0)
-      return {0.0, 0.0};
+      return {0.0, 0.0, 0.0};
     return {std::ldexp(base_step, -static_cast<int>(interval_finest)),
-            static_cast<double>(interval_substeps)};
+            static_cast<double>(interval_substeps),
+            interval_error};
   }
 
 

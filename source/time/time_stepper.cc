@@ -529,7 +529,8 @@ namespace liftoff
     // adaptive run would then solve with Gamma alone: balance error 0.38
     // of the energy scale).
     active_set.set_base_matrix(effective_base_matrix(),
-                               newmark.velocity_factor());
+                               newmark.velocity_factor(),
+                               level_in_use);
     check_time_step();
     state_.energies    = energies();
     const double after = stored_energy();
@@ -637,7 +638,8 @@ namespace liftoff
         // The first iterate is the bilateral problem.
         foundation.activate_all();
         active_set.set_base_matrix(effective_base_matrix(),
-                                   newmark.velocity_factor());
+                                   newmark.velocity_factor(),
+                                   level_in_use);
       }
     if (controller.is_enabled())
       return do_controlled_steps(step);
@@ -702,8 +704,11 @@ namespace liftoff
       return;
     newmark      = scheme_of_level(level);
     level_in_use = level;
-    active_set.set_base_matrix(effective_base_matrix(),
-                               newmark.velocity_factor());
+    // The factors of the levels used last are kept (ActiveSetIteration):
+    // a return to one costs no factorisation.
+    active_set.switch_base_matrix(level,
+                                  effective_base_matrix(),
+                                  newmark.velocity_factor());
   }
 
 
@@ -971,6 +976,12 @@ namespace liftoff
         // dashpots (Gamma + c kappa).
         for (SystemTerm *term : terms)
           term->load(archive);
+        if (controller.is_enabled())
+          active_set.load_kept_factors(archive, [this](const unsigned int l) {
+            const NewmarkIntegrator scheme = scheme_of_level(l);
+            return base_matrix(
+              {scheme.mass_factor(), scheme.velocity_factor()});
+          });
         active_set.load(archive,
                         effective_base_matrix(),
                         newmark.velocity_factor());
@@ -983,6 +994,8 @@ namespace liftoff
       {
         for (const SystemTerm *term : terms)
           term->save(archive);
+        if (controller.is_enabled())
+          active_set.save_kept_factors(archive);
         active_set.save(archive);
       }
   }

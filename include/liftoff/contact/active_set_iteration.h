@@ -8,6 +8,7 @@
 #include <liftoff/contact/status_term.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/solver/factor_cache.h>
 #include <liftoff/solver/ghost_update.h>
 #include <liftoff/solver/linear_solver.h>
 
@@ -87,9 +88,30 @@ namespace liftoff
     /// gamma / (beta dt) for a time step: the velocity of the unknown is
     /// kappa u + ...). B is written into the system matrix itself, so no
     /// second matrix of the plate's size is alive while the factor is
-    /// built (L: 330 MB of the peak).
+    /// built (L: 330 MB of the peak). Drops the kept factors (a new mesh);
+    /// `key` names the factor for switch_base_matrix().
     void
-    set_base_matrix(const BaseMatrix &write_base, const double velocity_factor);
+    set_base_matrix(const BaseMatrix                  &write_base,
+                    const double                       velocity_factor,
+                    const std::optional<unsigned int> &key = {});
+    /// set_base_matrix() for one of a few B that take turns, named by
+    /// `key` (a time step's level): the factor in use is kept (if it has a
+    /// key), and a B whose factor is kept is not factorised again: its
+    /// factor, of B + K_f(S') for the S' it was built with, serves the
+    /// matrix B + K_f(S) as a stale factor does.
+    void
+    switch_base_matrix(const unsigned int key,
+                       const BaseMatrix  &write_base,
+                       const double       velocity_factor);
+    /// The kept factors: what builds them again and their state, and the
+    /// key in use. Before save() and load(); `write_of_key` gives the B of
+    /// a key.
+    void
+    save_kept_factors(OutputArchive &archive) const;
+    void
+    load_kept_factors(
+      InputArchive                                        &archive,
+      const std::function<BaseMatrix(const unsigned int)> &write_of_key);
 
     /// What one solve needs besides the matrix: the right-hand side b, the
     /// bed's pressure k (w - e) for the velocity of the unknown (the
@@ -166,6 +188,11 @@ namespace liftoff
     Statuses factorised_status;
     /// Declared after `matrix`: a factorisation must die before its matrix.
     LinearSolver solver;
+    /// Factors of other B (switch_base_matrix()), at most 4: one per time
+    /// step size, as many as a run moves between; and the key of the one
+    /// in use. After `solver`, whose direct solver's control they share.
+    FactorCache                 kept_factors{4};
+    std::optional<unsigned int> key_in_use;
     /// rhs + f_g(S) when the foundation has a gap.
     LA::MPI::Vector rhs_with_loads;
     /// The vector the solver multiplies by the change of the matrix since
@@ -177,6 +204,9 @@ namespace liftoff
     /// The next solve may continue the last one (LinearSolver::solve()).
     bool continues_solve = false;
 
+    /// Build B + K_f(S) for the current S and factorise it.
+    void
+    build_and_factorise(const BaseMatrix &write, const double kappa);
     /// B + K_f(S) for the S the matrix holds, written afresh (before a
     /// factorisation: the factor is then of a matrix that can be built
     /// again from B and S).

@@ -75,9 +75,10 @@ namespace liftoff
     add_columns(const std::vector<HistoryColumns::Column> &group,
                 HistoryColumns::Values                     values);
 
-    /// With Time step control = error: the columns dt_min and substeps,
-    /// the smallest step and the number of steps since the last row, which
-    /// `values` gives.
+    /// With Time step control = error: the columns dt_min, substeps and
+    /// local_error, the smallest step, the number of steps and the sum of
+    /// their local error estimates since the last row, which `values`
+    /// gives.
     void
     add_step_sizes(const std::function<std::vector<double>()> &values);
 

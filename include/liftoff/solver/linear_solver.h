@@ -57,6 +57,29 @@ namespace liftoff
   };
 
   /**
+   * A LinearSolver's factor or preconditioner with its state, out of the
+   * solver, to be put back later (FactorCache: one per time step size) by
+   * exchange(). Parameters, counters, the matrix and CG's vectors stay
+   * with the solver.
+   */
+  struct KeptFactor
+  {
+    KeptFactor();
+    KeptFactor(KeptFactor &&) noexcept;
+    KeptFactor &
+    operator=(KeptFactor &&) noexcept;
+    ~KeptFactor();
+
+    std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
+    std::unique_ptr<CholeskyFactor>                    cholesky;
+    std::unique_ptr<MumpsCholeskyFactor>               mumps_cholesky;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    bool                                               is_exact        = false;
+    double                                             cg_excess_flops = 0;
+    double                                             substitution_error = -1;
+  };
+
+  /**
    * Solves A x = b for a matrix that changes a little between solves: the
    * effective matrix of a time step plus the foundation term of the current
    * contact set.
@@ -212,6 +235,12 @@ namespace liftoff
          ChangingMatrix        *changes = nullptr);
 
   private:
+    /// Swap the solver's factor and its state with `kept`; the matrix
+    /// given to prepare() stays, and is changed in place for the factor
+    /// put in (matrix_changed()).
+    friend void
+    exchange(LinearSolver &solver, KeptFactor &kept);
+
     Type         type                      = Type::direct;
     Package      package                   = Package::cholmod;
     bool         has_reported_fallback     = false;

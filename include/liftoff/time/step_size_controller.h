@@ -82,8 +82,11 @@ namespace liftoff
     substeps_in_interval() const;
     unsigned int
     finest_level_in_interval() const;
-    /// The history's columns dt_min and substeps of the last Time step:
-    /// its smallest step (0 before the first) and the number of its steps.
+    /// The history's columns dt_min, substeps and local_error of the last
+    /// Time step: its smallest step (0 before the first), the number of its
+    /// steps, and the sum of their local error estimates (the largest |e|
+    /// over the nodes' w, in units of w; summed over the rows, an estimate
+    /// of the global error).
     std::vector<double>
     interval_columns() const;
     /// Over the run: accepted, rejected steps, and changes of level.
@@ -109,6 +112,10 @@ namespace liftoff
     double       largest_w         = 0;
     unsigned int interval_substeps = 0;
     unsigned int interval_finest   = 0;
+    /// The largest |e| of the step last measured (relative_error()), and
+    /// the sum of the accepted steps' since the last row.
+    double step_error     = 0;
+    double interval_error = 0;
 
     /// The level whose step is the largest at most dt (tolerance /
     /// error)^(1/3) Safety factor, dt that of `level`.
