@@ -58,30 +58,32 @@ namespace liftoff
                                       disc.element().shear_integration(),
                                       solution,
                                       thermal_bending);
-    const unsigned int     m_1 = StressResultants::field_index("M_1"),
-                       m_2     = StressResultants::field_index("M_2"),
-                       q_x     = StressResultants::field_index("Q_x"),
-                       q_y     = StressResultants::field_index("Q_y");
-    const FE_DGQ<2> output_points(disc.element().degree());
-    FEValues<2>     fe_values(
+    const FE_DGQ<2>        output_points(disc.element().degree());
+    FEValues<2>            fe_values(
       disc.mapping(),
       disc.dof_handler.get_fe(),
       Quadrature<2>(output_points.get_unit_support_points()),
       update_values | update_gradients | update_quadrature_points);
-    const unsigned int          n = fe_values.n_quadrature_points;
-    std::vector<Vector<double>> fields;
-    std::vector<double>         w(n);
+    const unsigned int n = fe_values.n_quadrature_points;
+    // Kept from cell to cell; the cell's dofs are read from the vector once.
+    Vector<double>                    dof_values(fe_values.dofs_per_cell);
+    std::vector<double>               w(n);
+    StressResultants::PrincipalValues principal;
     point_list.clear();
     value_list.clear();
+    point_list.reserve(n * disc.triangulation.n_active_cells());
+    value_list.reserve(point_list.capacity());
     // In the order of the cells' CellId: of two equal extremes (a vertex
     // of several cells) the first is taken, which must not depend on how
     // the mesh was reached (refined in the run or loaded at a resume).
     for (const auto &cell : disc.locally_owned_cells())
       {
         fe_values.reinit(cell);
-        resultants.evaluate(cell, fe_values, fields);
-        fe_values[FEValuesExtractors::Scalar(0)].get_function_values(solution,
-                                                                     w);
+        cell->get_dof_values(solution, dof_values);
+        const ArrayView<double> dofs = make_array_view(dof_values);
+        resultants.principal(cell, fe_values, dofs, principal);
+        fe_values[FEValuesExtractors::Scalar(0)]
+          .get_function_values_from_local_dof_values(dofs, w);
         const auto &x = fe_values.get_quadrature_points();
         for (unsigned int k = 0; k < n; ++k)
           {
@@ -89,9 +91,9 @@ namespace liftoff
             Values       v;
             v.w        = w[k];
             v.pressure = law.spring_pressure(w[k] - g);
-            v.m_1      = fields[k][m_1];
-            v.m_2      = fields[k][m_2];
-            v.shear    = std::hypot(fields[k][q_x], fields[k][q_y]);
+            v.m_1      = principal.m_1[k];
+            v.m_2      = principal.m_2[k];
+            v.shear    = std::hypot(principal.q[k][0], principal.q[k][1]);
             point_list.push_back(x[k]);
             value_list.push_back(v);
           }

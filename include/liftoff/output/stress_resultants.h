@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/thread_local_storage.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
@@ -81,6 +82,25 @@ namespace liftoff
     std::map<std::string, double>
     at_point(const Discretization &discretization, const Point<2> &p) const;
 
+    /// The principal moments and the shear force at the points of
+    /// `values`, as evaluate() gives M_1, M_2, Q_x and Q_y to the bit,
+    /// without the other fields and from the cell's dof values read once
+    /// by the caller (the design outputs' pass over every output point).
+    /// The vectors are kept by the caller from cell to cell.
+    struct PrincipalValues
+    {
+      std::vector<double>       m_1, m_2;
+      std::vector<Tensor<1, 2>> q;
+      /// Scratch: the solution's derivatives at the points.
+      std::vector<Tensor<1, 2>> grad_w, psi;
+      std::vector<Tensor<2, 2>> grad_psi;
+    };
+    void
+    principal(const DoFHandler<2>::cell_iterator &cell,
+              const FEValues<2>                  &values,
+              const ArrayView<double>            &dof_values,
+              PrincipalValues                    &out) const;
+
   private:
     const MindlinPlate                    &plate;
     const Mapping<2>                      &mapping;
@@ -110,8 +130,10 @@ namespace liftoff
             const std::vector<std::vector<Tensor<1, 2>>> &gradients,
             std::vector<Vector<double>>                  &computed) const;
 
-    std::vector<Tensor<1, 2>>
+    void
     shear_strains(const DoFHandler<2>::cell_iterator &cell,
-                  const std::vector<Point<2>>        &unit_points) const;
+                  const std::vector<Point<2>>        &unit_points,
+                  const ArrayView<double>            &dof_values,
+                  std::vector<Tensor<1, 2>>          &gamma) const;
   };
 } // namespace liftoff
