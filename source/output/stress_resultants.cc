@@ -143,9 +143,9 @@ namespace liftoff
 
   void
   StressResultants::shear_strains(const DoFHandler<2>::cell_iterator &cell,
-                                  const std::vector<Point<2>> &unit_points,
-                                  const ArrayView<double>     &dof_values,
-                                  std::vector<Tensor<1, 2>>   &gamma) const
+                                  const std::vector<Point<2>>   &unit_points,
+                                  const ArrayView<const double> &dof_values,
+                                  std::vector<Tensor<1, 2>>     &gamma) const
   {
     StrainsAtPoints &cached = strains_at_points.get();
     const auto       same   = [](const Point<2> &a, const Point<2> &b) {
@@ -208,7 +208,11 @@ namespace liftoff
       {
         Vector<double> dof_values(cell->get_fe().n_dofs_per_cell());
         cell->get_dof_values(solution, dof_values);
-        shear_strains(cell, unit_points, make_array_view(dof_values), gamma);
+        shear_strains(cell,
+                      unit_points,
+                      ArrayView<const double>(dof_values.begin(),
+                                              dof_values.size()),
+                      gamma);
       }
     else
       for (unsigned int q = 0; q < unit_points.size(); ++q)
@@ -247,34 +251,22 @@ namespace liftoff
 
 
   void
-  StressResultants::principal(const DoFHandler<2>::cell_iterator &cell,
-                              const FEValues<2>                  &values,
-                              const ArrayView<double>            &dof_values,
-                              PrincipalValues                    &out) const
+  StressResultants::principal(const DoFHandler<2>::active_cell_iterator &cell,
+                              const PlateFieldAtPoints                  &fields,
+                              const ArrayView<const double> &dof_values,
+                              PrincipalValues               &out) const
   {
-    const unsigned int               n = values.n_quadrature_points;
-    const FEValuesExtractors::Scalar w(0);
-    const FEValuesExtractors::Vector psi(1);
-    const std::vector<Point<2>>     &unit_points =
-      values.get_quadrature().get_points();
-    out.grad_w.resize(n);
-    out.psi.resize(n);
-    out.grad_psi.resize(n);
+    const unsigned int n = fields.n_points();
     out.m_1.resize(n);
     out.m_2.resize(n);
-    values[w].get_function_gradients_from_local_dof_values(dof_values,
-                                                           out.grad_w);
-    values[psi].get_function_values_from_local_dof_values(dof_values, out.psi);
-    values[psi].get_function_gradients_from_local_dof_values(dof_values,
-                                                             out.grad_psi);
     if (treatment == TransverseShearStrain::Treatment::mitc)
-      shear_strains(cell, unit_points, dof_values, out.q);
+      shear_strains(cell, fields.unit_points(), dof_values, out.q);
     else
       {
         out.q.resize(n);
         for (unsigned int q = 0; q < n; ++q)
           for (unsigned int d = 0; d < 2; ++d)
-            out.q[q][d] = out.grad_w[q][d] - out.psi[q][d];
+            out.q[q][d] = fields.grad_w[q][d] - fields.psi[q][d];
       }
     const double              nu      = plate.poisson_ratio;
     const SectionCoefficients section = plate.section(cell->material_id());
@@ -283,8 +275,8 @@ namespace liftoff
       {
         const PlaneMoments m(bending,
                              nu,
-                             out.grad_psi[q][0],
-                             out.grad_psi[q][1]);
+                             fields.grad_psi[q][0],
+                             fields.grad_psi[q][1]);
         out.m_1[q] = m.first;
         out.m_2[q] = m.second;
         for (unsigned int d = 0; d < 2; ++d)
@@ -292,7 +284,7 @@ namespace liftoff
         if (free_bending)
           {
             const double free =
-              free_moment(free_bending(values.quadrature_point(q)), nu);
+              free_moment(free_bending(fields.points()[q]), nu);
             out.m_1[q] += free;
             out.m_2[q] += free;
           }

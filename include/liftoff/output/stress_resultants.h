@@ -11,6 +11,7 @@
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/transverse_shear_strain.h>
 #include <liftoff/loads/free_bending.h>
+#include <liftoff/output/plate_field_at_points.h>
 
 #include <map>
 #include <memory>
@@ -83,23 +84,20 @@ namespace liftoff
     at_point(const Discretization &discretization, const Point<2> &p) const;
 
     /// The principal moments and the shear force at the points of
-    /// `values`, as evaluate() gives M_1, M_2, Q_x and Q_y to the bit,
-    /// without the other fields and from the cell's dof values read once
-    /// by the caller (the design outputs' pass over every output point).
-    /// The vectors are kept by the caller from cell to cell.
+    /// `fields`, reinitialised on `cell` with its dof values `dof_values`,
+    /// as evaluate() gives M_1, M_2, Q_x and Q_y to the bit, without the
+    /// other fields (the design outputs' pass over every output point). The
+    /// vectors of `out` are kept by the caller from cell to cell.
     struct PrincipalValues
     {
       std::vector<double>       m_1, m_2;
       std::vector<Tensor<1, 2>> q;
-      /// Scratch: the solution's derivatives at the points.
-      std::vector<Tensor<1, 2>> grad_w, psi;
-      std::vector<Tensor<2, 2>> grad_psi;
     };
     void
-    principal(const DoFHandler<2>::cell_iterator &cell,
-              const FEValues<2>                  &values,
-              const ArrayView<double>            &dof_values,
-              PrincipalValues                    &out) const;
+    principal(const DoFHandler<2>::active_cell_iterator &cell,
+              const PlateFieldAtPoints                  &fields,
+              const ArrayView<const double>             &dof_values,
+              PrincipalValues                           &out) const;
 
   private:
     const MindlinPlate                    &plate;
@@ -133,7 +131,7 @@ namespace liftoff
     void
     shear_strains(const DoFHandler<2>::cell_iterator &cell,
                   const std::vector<Point<2>>        &unit_points,
-                  const ArrayView<double>            &dof_values,
+                  const ArrayView<const double>      &dof_values,
                   std::vector<Tensor<1, 2>>          &gamma) const;
   };
 } // namespace liftoff
