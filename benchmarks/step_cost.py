@@ -90,6 +90,14 @@ def main():
     binaries = [("new", os.path.abspath(args.executable))]
     if args.baseline:
         binaries.insert(0, ("baseline", os.path.abspath(args.baseline)))
+    for _, executable in binaries:
+        if not os.access(executable, os.X_OK):
+            parser.error("no executable liftoff at " + executable)
+    for scene in args.scenes:
+        if not os.path.isfile(os.path.join(HERE, "scenes", scene + ".prm")):
+            parser.error("no scene %s in benchmarks/scenes/" % scene)
+    if args.repeat < 1:
+        parser.error("--repeat wants at least 1")
     stamp = datetime.datetime.now().strftime("%Y%m%d-%H%M%S")
     columns = ["step ms", "subst. ms", "step / subst.", "output / subst.",
                "design / subst.", "process s"]
