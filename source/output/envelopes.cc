@@ -25,31 +25,30 @@ namespace liftoff
     {
       const char *name;
       double      sign;
-      double (*value)(const ResultantSweep::Values &);
-      PhysicalUnits::Quantity quantity;
+      double ResultantSweep::Values::*value;
+      PhysicalUnits::Quantity         quantity;
     };
 
-    const std::array<Kind, 5> kinds = {
-      {{"w_max",
-        1,
-        [](const ResultantSweep::Values &v) { return v.w; },
-        PhysicalUnits::Quantity::deflection},
-       {"w_min",
-        -1,
-        [](const ResultantSweep::Values &v) { return v.w; },
-        PhysicalUnits::Quantity::deflection},
-       {"foundation_pressure_max",
-        1,
-        [](const ResultantSweep::Values &v) { return v.pressure; },
-        PhysicalUnits::Quantity::pressure},
-       {"M_1_max",
-        1,
-        [](const ResultantSweep::Values &v) { return v.m_1; },
-        PhysicalUnits::Quantity::moment},
-       {"M_2_min",
-        -1,
-        [](const ResultantSweep::Values &v) { return v.m_2; },
-        PhysicalUnits::Quantity::moment}}};
+    const std::array<Kind, 5> kinds = {{{"w_max",
+                                         1,
+                                         &ResultantSweep::Values::w,
+                                         PhysicalUnits::Quantity::deflection},
+                                        {"w_min",
+                                         -1,
+                                         &ResultantSweep::Values::w,
+                                         PhysicalUnits::Quantity::deflection},
+                                        {"foundation_pressure_max",
+                                         1,
+                                         &ResultantSweep::Values::pressure,
+                                         PhysicalUnits::Quantity::pressure},
+                                        {"M_1_max",
+                                         1,
+                                         &ResultantSweep::Values::m_1,
+                                         PhysicalUnits::Quantity::moment},
+                                        {"M_2_min",
+                                         -1,
+                                         &ResultantSweep::Values::m_2,
+                                         PhysicalUnits::Quantity::moment}}};
   } // namespace
 
 
@@ -128,9 +127,11 @@ namespace liftoff
             envelope.extreme.assign(values.size(), 0.0);
             envelope.time.assign(values.size(), step.state.clock.tau());
           }
+        const double sign  = kinds[e].sign;
+        const auto   value = kinds[e].value;
         for (unsigned int i = 0; i < values.size(); ++i)
           {
-            const double v = kinds[e].sign * kinds[e].value(values[i]);
+            const double v = sign * values[i].*value;
             if (first || v > envelope.extreme[i])
               {
                 envelope.extreme[i] = v;

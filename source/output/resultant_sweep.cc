@@ -1,5 +1,4 @@
 #include <deal.II/fe/fe_dgq.h>
-#include <deal.II/fe/fe_values.h>
 
 #include <liftoff/contact/contact_law.h>
 #include <liftoff/fem/discretization.h>
@@ -10,6 +9,26 @@
 
 namespace liftoff
 {
+  namespace
+  {
+    /// Whether the entries of `v` on this rank are all of it, in the order
+    /// of their indices, so that entry i is v.begin()[i] (one rank).
+    /// deal.II's get_dof_values asks Epetra's map for every entry's place:
+    /// a fifth of the sweep's time on S.
+    bool
+    is_whole_vector_in_order(const LA::MPI::Vector &v)
+    {
+      const Epetra_BlockMap &map = v.trilinos_vector().Map();
+      if (static_cast<types::global_dof_index>(map.NumMyElements()) != v.size())
+        return false;
+      for (int i = 0; i < map.NumMyElements(); ++i)
+        if (map.GID64(i) != i)
+          return false;
+      return true;
+    }
+  } // namespace
+
+
   ResultantSweep::ResultantSweep(const MindlinPlate     &plate,
                                  const Discretization   &discretization,
                                  const ContactLaw       &law,
@@ -58,40 +77,50 @@ namespace liftoff
                                       disc.element().shear_integration(),
                                       solution,
                                       thermal_bending);
-    const unsigned int     m_1 = StressResultants::field_index("M_1"),
-                       m_2     = StressResultants::field_index("M_2"),
-                       q_x     = StressResultants::field_index("Q_x"),
-                       q_y     = StressResultants::field_index("Q_y");
-    const FE_DGQ<2> output_points(disc.element().degree());
-    FEValues<2>     fe_values(
-      disc.mapping(),
-      disc.dof_handler.get_fe(),
-      Quadrature<2>(output_points.get_unit_support_points()),
-      update_values | update_gradients | update_quadrature_points);
-    const unsigned int          n = fe_values.n_quadrature_points;
-    std::vector<Vector<double>> fields;
-    std::vector<double>         w(n);
+    const FE_DGQ<2>        output_points(disc.element().degree());
+    PlateFieldAtPoints     fields(disc.mapping(),
+                              disc.dof_handler.get_fe(),
+                              Quadrature<2>(
+                                output_points.get_unit_support_points()));
+    const unsigned int     n = fields.n_points();
+    // Kept from cell to cell; the cell's dofs are read from the vector once.
+    const unsigned int dofs_per_cell =
+      disc.dof_handler.get_fe().n_dofs_per_cell();
+    Vector<double>                       dof_values(dofs_per_cell);
+    std::vector<types::global_dof_index> indices(dofs_per_cell);
+    const bool                    in_order = is_whole_vector_in_order(solution);
+    const ArrayView<const double> dofs(dof_values.begin(), dof_values.size());
+    StressResultants::PrincipalValues principal;
     point_list.clear();
     value_list.clear();
+    point_list.reserve(n * disc.triangulation.n_active_cells());
+    value_list.reserve(point_list.capacity());
     // In the order of the cells' CellId: of two equal extremes (a vertex
     // of several cells) the first is taken, which must not depend on how
     // the mesh was reached (refined in the run or loaded at a resume).
     for (const auto &cell : disc.locally_owned_cells())
       {
-        fe_values.reinit(cell);
-        resultants.evaluate(cell, fe_values, fields);
-        fe_values[FEValuesExtractors::Scalar(0)].get_function_values(solution,
-                                                                     w);
-        const auto &x = fe_values.get_quadrature_points();
+        if (in_order)
+          {
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              dof_values[i] = solution.begin()[indices[i]];
+          }
+        else
+          cell->get_dof_values(solution, dof_values);
+        fields.reinit(cell, dofs);
+        resultants.principal(cell, fields, dofs, principal);
+        const std::vector<double>   &w = fields.w;
+        const std::vector<Point<2>> &x = fields.points();
         for (unsigned int k = 0; k < n; ++k)
           {
             const double g = (law.has_gap() ? law.gap_at(x[k]) : 0.0);
             Values       v;
             v.w        = w[k];
             v.pressure = law.spring_pressure(w[k] - g);
-            v.m_1      = fields[k][m_1];
-            v.m_2      = fields[k][m_2];
-            v.shear    = std::hypot(fields[k][q_x], fields[k][q_y]);
+            v.m_1      = principal.m_1[k];
+            v.m_2      = principal.m_2[k];
+            v.shear    = std::hypot(principal.q[k][0], principal.q[k][1]);
             point_list.push_back(x[k]);
             value_list.push_back(v);
           }

@@ -32,13 +32,20 @@ namespace liftoff
     // self-equilibrating stress is isotropic in the plane and differs
     // between the faces. (Added only with a temperature: + 0 would turn a
     // -0 into 0 in the files.)
+    double
+    free_moment(const FreeBending &thermal, const double nu)
+    {
+      return (1 + nu) * thermal.curvature;
+    }
+
+
     void
     add_free_bending(const FreeBending &thermal,
                      const double       nu,
                      const double       to_stress,
                      Vector<double>    &out)
     {
-      const double m = (1 + nu) * thermal.curvature;
+      const double m = free_moment(thermal, nu);
       for (const unsigned int k : {0, 1, 5, 6})
         out[k] += m;
       out[8] += to_stress * m + thermal.bottom_stress;
@@ -46,6 +53,28 @@ namespace liftoff
       out[11] = std::max(to_stress * out[5] + thermal.bottom_stress,
                          -to_stress * out[6] + thermal.top_stress);
     }
+
+
+    /// M_xx, M_yy, M_xy and the principal moments from the gradients of
+    /// psi_x and psi_y; `bending`: -D_s / D (z along w).
+    struct PlaneMoments
+    {
+      double xx, yy, xy, first, second;
+
+      PlaneMoments(const double        bending,
+                   const double        nu,
+                   const Tensor<1, 2> &grad_psi_x,
+                   const Tensor<1, 2> &grad_psi_y)
+          : xx(bending * (grad_psi_x[0] + nu * grad_psi_y[1]))
+          , yy(bending * (grad_psi_y[1] + nu * grad_psi_x[0]))
+          , xy(bending * 0.5 * (1 - nu) * (grad_psi_x[1] + grad_psi_y[0]))
+      {
+        const double centre = 0.5 * (xx + yy);
+        const double radius = std::hypot(0.5 * (xx - yy), xy);
+        first               = centre + radius;
+        second              = centre - radius;
+      }
+    };
   } // namespace
 
 
@@ -112,10 +141,11 @@ namespace liftoff
   }
 
 
-  std::vector<Tensor<1, 2>>
-  StressResultants::shear_strains(
-    const DoFHandler<2>::cell_iterator &cell,
-    const std::vector<Point<2>>        &unit_points) const
+  void
+  StressResultants::shear_strains(const DoFHandler<2>::cell_iterator &cell,
+                                  const std::vector<Point<2>>   &unit_points,
+                                  const ArrayView<const double> &dof_values,
+                                  std::vector<Tensor<1, 2>>     &gamma) const
   {
     StrainsAtPoints &cached = strains_at_points.get();
     const auto       same   = [](const Point<2> &a, const Point<2> &b) {
@@ -134,13 +164,10 @@ namespace liftoff
     TransverseShearStrain &strains = *cached.strains;
     strains.reinit(cell);
 
-    Vector<double> dof_values(cell->get_fe().n_dofs_per_cell());
-    cell->get_dof_values(solution, dof_values);
-    std::vector<Tensor<1, 2>> gamma(unit_points.size());
+    gamma.assign(unit_points.size(), Tensor<1, 2>());
     for (unsigned int q = 0; q < unit_points.size(); ++q)
       for (unsigned int i = 0; i < dof_values.size(); ++i)
         gamma[q] += dof_values[i] * strains.strain(i, q);
-    return gamma;
   }
 
 
@@ -178,7 +205,15 @@ namespace liftoff
     // assumed strain needs the element's tying points.
     std::vector<Tensor<1, 2>> gamma(unit_points.size());
     if (treatment == TransverseShearStrain::Treatment::mitc)
-      gamma = shear_strains(cell, unit_points);
+      {
+        Vector<double> dof_values(cell->get_fe().n_dofs_per_cell());
+        cell->get_dof_values(solution, dof_values);
+        shear_strains(cell,
+                      unit_points,
+                      ArrayView<const double>(dof_values.begin(),
+                                              dof_values.size()),
+                      gamma);
+      }
     else
       for (unsigned int q = 0; q < unit_points.size(); ++q)
         for (unsigned int d = 0; d < 2; ++d)
@@ -195,30 +230,64 @@ namespace liftoff
     for (unsigned int q = 0; q < unit_points.size(); ++q)
       {
         // Components: 0 w, 1 psi_x, 2 psi_y.
-        const double m_xx =
-          bending * (gradient[q][1][0] + nu * gradient[q][2][1]);
-        const double m_yy =
-          bending * (gradient[q][2][1] + nu * gradient[q][1][0]);
-        const double m_xy =
-          bending * 0.5 * (1 - nu) * (gradient[q][1][1] + gradient[q][2][0]);
-        const double    centre = 0.5 * (m_xx + m_yy);
-        const double    radius = std::hypot(0.5 * (m_xx - m_yy), m_xy);
-        const double    m_1 = centre + radius, m_2 = centre - radius;
-        Vector<double> &out = computed[q];
-        out[0]              = m_xx;
-        out[1]              = m_yy;
-        out[2]              = m_xy;
-        out[3]              = shear * gamma[q][0];
-        out[4]              = shear * gamma[q][1];
-        out[5]              = m_1;
-        out[6]              = m_2;
-        out[7]  = 0.5 * std::atan2(2 * m_xy, m_xx - m_yy) * 180.0 / M_PI;
-        out[8]  = to_stress * m_xx;
-        out[9]  = to_stress * m_yy;
-        out[10] = to_stress * m_xy;
-        out[11] = to_stress * std::max(m_1, -m_2);
+        const PlaneMoments m(bending, nu, gradient[q][1], gradient[q][2]);
+        Vector<double>    &out = computed[q];
+        out[0]                 = m.xx;
+        out[1]                 = m.yy;
+        out[2]                 = m.xy;
+        out[3]                 = shear * gamma[q][0];
+        out[4]                 = shear * gamma[q][1];
+        out[5]                 = m.first;
+        out[6]                 = m.second;
+        out[7]  = 0.5 * std::atan2(2 * m.xy, m.xx - m.yy) * 180.0 / M_PI;
+        out[8]  = to_stress * m.xx;
+        out[9]  = to_stress * m.yy;
+        out[10] = to_stress * m.xy;
+        out[11] = to_stress * std::max(m.first, -m.second);
         if (free_bending)
           add_free_bending(free_bending(points[q]), nu, to_stress, out);
+      }
+  }
+
+
+  void
+  StressResultants::principal(const DoFHandler<2>::active_cell_iterator &cell,
+                              const PlateFieldAtPoints                  &fields,
+                              const ArrayView<const double> &dof_values,
+                              PrincipalValues               &out) const
+  {
+    const unsigned int n = fields.n_points();
+    out.m_1.resize(n);
+    out.m_2.resize(n);
+    if (treatment == TransverseShearStrain::Treatment::mitc)
+      shear_strains(cell, fields.unit_points(), dof_values, out.q);
+    else
+      {
+        out.q.resize(n);
+        for (unsigned int q = 0; q < n; ++q)
+          for (unsigned int d = 0; d < 2; ++d)
+            out.q[q][d] = fields.grad_w[q][d] - fields.psi[q][d];
+      }
+    const double              nu      = plate.poisson_ratio;
+    const SectionCoefficients section = plate.section(cell->material_id());
+    const double              bending = -section.bending;
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        const PlaneMoments m(bending,
+                             nu,
+                             fields.grad_psi[q][0],
+                             fields.grad_psi[q][1]);
+        out.m_1[q] = m.first;
+        out.m_2[q] = m.second;
+        for (unsigned int d = 0; d < 2; ++d)
+          out.q[q][d] = section.shear * out.q[q][d];
+        if (free_bending)
+          {
+            const double free =
+              free_moment(free_bending(fields.points()[q]), nu);
+            out.m_1[q] += free;
+            out.m_2[q] += free;
+          }
       }
   }
 

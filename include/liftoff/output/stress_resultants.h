@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/thread_local_storage.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
@@ -10,6 +11,7 @@
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/transverse_shear_strain.h>
 #include <liftoff/loads/free_bending.h>
+#include <liftoff/output/plate_field_at_points.h>
 
 #include <map>
 #include <memory>
@@ -81,6 +83,22 @@ namespace liftoff
     std::map<std::string, double>
     at_point(const Discretization &discretization, const Point<2> &p) const;
 
+    /// The principal moments and the shear force at the points of
+    /// `fields`, reinitialised on `cell` with its dof values `dof_values`,
+    /// as evaluate() gives M_1, M_2, Q_x and Q_y to the bit, without the
+    /// other fields (the design outputs' pass over every output point). The
+    /// vectors of `out` are kept by the caller from cell to cell.
+    struct PrincipalValues
+    {
+      std::vector<double>       m_1, m_2;
+      std::vector<Tensor<1, 2>> q;
+    };
+    void
+    principal(const DoFHandler<2>::active_cell_iterator &cell,
+              const PlateFieldAtPoints                  &fields,
+              const ArrayView<const double>             &dof_values,
+              PrincipalValues                           &out) const;
+
   private:
     const MindlinPlate                    &plate;
     const Mapping<2>                      &mapping;
@@ -110,8 +128,10 @@ namespace liftoff
             const std::vector<std::vector<Tensor<1, 2>>> &gradients,
             std::vector<Vector<double>>                  &computed) const;
 
-    std::vector<Tensor<1, 2>>
+    void
     shear_strains(const DoFHandler<2>::cell_iterator &cell,
-                  const std::vector<Point<2>>        &unit_points) const;
+                  const std::vector<Point<2>>        &unit_points,
+                  const ArrayView<const double>      &dof_values,
+                  std::vector<Tensor<1, 2>>          &gamma) const;
   };
 } // namespace liftoff
