@@ -30,8 +30,8 @@ namespace liftoff
       "(Zienkiewicz and Xie: (Beta - 1/6) dtau^2 (a_{n+1} - a_n), largest "
       "over the nodes' w) stays below Error tolerance; a step above it is "
       "taken again smaller. The history keeps its rows at the multiples of "
-      "Time step. Dynamic analyses with an unconditionally stable scheme "
-      "and Beta != 1/6 only.");
+      "Time step. Dynamic analyses with Scheme = newmark, unconditionally "
+      "stable, and Beta != 1/6 only.");
     prm.declare_entry("Error tolerance",
                       "1e-4",
                       Patterns::Double(0.0),
@@ -98,6 +98,12 @@ namespace liftoff
                 ExcMessage("Time integration/Time step control = error "
                            "needs Analysis/Type = dynamic: a static analysis "
                            "has no time steps."));
+    AssertThrow(newmark.alpha_m == 0 && newmark.alpha_f == 0,
+                ExcMessage("Time integration/Time step control = error with "
+                           "Scheme = generalized-alpha: the error estimate is "
+                           "Newmark's (its accelerations at the steps' ends, "
+                           "where generalized-alpha's are not). Use Scheme = "
+                           "newmark."));
     AssertThrow(std::abs(newmark.beta - 1.0 / 6.0) > 1e-3,
                 ExcMessage("Time integration/Time step control = error with "
                            "Beta = "
