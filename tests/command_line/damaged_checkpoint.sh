@@ -88,8 +88,11 @@ restore
 # taken_over PID: wait (polling every 10 ms, at most 60 s) until the run
 # PID has taken the folder over or ended.
 taken_over() {
+  local state
   for _ in $(seq 6000); do
-    [ -e out/summary.txt ] && [ -d "/proc/$1" ] && ! grep -q '^State:.*Z' "/proc/$1/status" 2>/dev/null || break
+    [ -e out/summary.txt ] || break
+    # Bash's own read: no process per poll to compete with the run.
+    read -r _ _ state _ < "/proc/$1/stat" 2> /dev/null && [ "$state" != Z ] || break
     sleep 0.01
   done
 }
