@@ -17,10 +17,14 @@ for signal in INT TERM; do
   rm -rf out
   "$liftoff" scene.prm >stdout.txt 2>stderr.txt &
   pid=$!
-  # Let it run some steps (the history file appears with its header).
-  for _ in $(seq 100); do [ -s out/history.csv ] && break; sleep 0.1; done
-  sleep 1
-  count_vtu_pieces out
+  # Let it run past its second output (step 7) until the PVD, replaced at
+  # most once a second, lists one.
+  wait_for_rows 8
+  for _ in $(seq 600); do
+    count_vtu_pieces out
+    [ "$n_pieces" -ge 1 ] && break
+    sleep 0.1
+  done
   running_pieces=$n_pieces
   kill -"$signal" "$pid"
   wait "$pid"

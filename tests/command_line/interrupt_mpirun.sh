@@ -13,8 +13,8 @@ enter_work_directory
 write_long_scene 0
 mpirun --allow-run-as-root --oversubscribe -np 2 "$liftoff" scene.prm >stdout.txt 2>stderr.txt &
 launcher=$!
-for _ in $(seq 300); do [ -s out/history.csv ] && break; sleep 0.1; done
-sleep 1
+# Let both ranks run some steps.
+wait_for_rows 5
 # The ranks: the children of mpirun that run this liftoff binary.
 ranks=$(pgrep -P "$launcher" -f "$(basename "$liftoff") scene.prm")
 kill -TERM $ranks

@@ -61,15 +61,12 @@ resume_and_compare() {
   check $? "$1: no temporary files or half-written checkpoint left"
 }
 # start_and_wait: start the long scene in the background, wait until it has
-# done some steps. Sets pid.
+# passed its first periodic checkpoint (step 50) by a few steps. Sets pid.
 start_and_wait() {
   scene out 20 > long.prm
   "${run[@]}" long.prm > stdout.txt 2> stderr.txt &
   pid=$!
-  # Up to a minute: on a loaded machine (two 2-rank tests at once under
-  # ctest -j2) the 50 steps to the first checkpoint took more than 10 s.
-  for _ in $(seq 600); do [ -s out/checkpoint/checkpoint.txt ] && break; sleep 0.1; done
-  sleep 0.5
+  wait_for_rows 55
 }
 # signal_run SIGNAL: signal liftoff itself (under mpirun its processes, which
 # are the launcher's children), and wait for the run to end. Sets status.
@@ -118,7 +115,7 @@ resume_and_compare "SIGINT" "$step"
 # temporary files it may have left are removed.
 rm -rf out
 start_and_wait
-sleep 0.5
+wait_for_rows 60
 signal_run KILL
 # Killed between the renames of a checkpoint, only the previous one is left.
 header=out/checkpoint/checkpoint.txt

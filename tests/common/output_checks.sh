@@ -22,6 +22,17 @@ history_is_complete() {
     awk -F, -v n="$n_columns" 'NF != n {bad = 1} END {exit bad}' "$1/history.csv"
 }
 
+# wait_for_rows N [DIR]: wait, polling every 0.1 s for at most a minute (a
+# loaded machine, two 2-rank tests at once under ctest -j2, took more than
+# 10 s for 50 steps), until DIR/history.csv (DIR = out) holds N rows after
+# its header: a run in the background has done N steps.
+wait_for_rows() {
+  for _ in $(seq 600); do
+    [ "$(cat "${2:-out}/history.csv" 2> /dev/null | wc -l)" -gt "$1" ] && break
+    sleep 0.1
+  done
+}
+
 # count_vtu_pieces DIR: go through the records of DIR/solution.pvd and their
 # VTU pieces. Sets n_pieces (pieces listed) and missing (records or pieces
 # absent, or pieces not ending in </VTKFile>).

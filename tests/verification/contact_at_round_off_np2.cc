@@ -8,7 +8,8 @@
 // with AMG on two ranks; the contact fraction also for CHOLMOD's factor
 // with trial solves so loose that round-off decides their sets. With the
 // bare rule w > 0 (tolerance 0) the same runs do differ, which shows the
-// scene exercises round-off.
+// scene exercises round-off. 20 steps: to tau = 0.02 every figure was the
+// same (8.3e-15 with the tolerance, 3.9e-3 without) in twice the time.
 
 #include <deal.II/base/mpi.h>
 
@@ -43,7 +44,7 @@ subsection Loads
 end
 subsection Time integration
   set Time step = 5e-4
-  set End time = 0.02
+  set End time = 0.01
 end
 )";
 
