@@ -356,7 +356,7 @@ namespace liftoff
     // [w] = w_lower - w_upper: this cell's side first.
     const double sign =
       cell->face(face)->boundary_id() == joint.lower_side ? 1 : -1;
-    const auto opposite = cell->periodic_neighbor(face);
+    const auto opposite = discretization->geometry().slabs().across(cell, face);
     Local      dowel{d, {}, {}};
     for (const auto &[side, factor] :
          {std::make_pair(DoFHandler<2>::cell_iterator(cell), sign),

@@ -142,12 +142,20 @@ namespace liftoff
                          update_values | update_quadrature_points
                            | update_JxW_values);
     here.reinit(cell, face);
-    const auto            opposite = cell->periodic_neighbor(face);
+    // On a symmetry plane the other side is this cell's mirror image: the
+    // same w, the opposite psi . n; the modelled part carries half the
+    // joint's energy.
+    const auto opposite = discretization->geometry().slabs().across(cell, face);
+    const int  mirror   = j.on_plane ? -1 : 1;
+    const double          share = j.on_plane ? 0.5 : 1.0;
     std::vector<Point<2>> unit_points;
     for (const Point<2> &p : here.get_quadrature_points())
       unit_points.push_back(mapping.transform_real_to_unit_cell(opposite, p));
     FEValues<2> there(mapping, fe, Quadrature<2>(unit_points), update_values);
     there.reinit(opposite);
+    // The mirror's values are this side's, so that [w] is exactly 0.
+    const FEValuesBase<2> &other =
+      j.on_plane ? static_cast<const FEValuesBase<2> &>(here) : there;
 
     Segment segment;
     segment.joint = joint;
@@ -162,14 +170,15 @@ namespace liftoff
                         opposite_dofs.end());
     for (const unsigned int q : here.quadrature_point_indices())
       {
-        const double        root = std::sqrt(here.JxW(q));
+        const double        root = std::sqrt(share * here.JxW(q));
         std::vector<double> w(2 * n), psi(2 * n);
         for (unsigned int i = 0; i < n; ++i)
           {
-            w[i]       = root * here.shape_value_component(i, q, 0);
-            w[n + i]   = -root * there.shape_value_component(i, q, 0);
-            psi[i]     = root * here.shape_value_component(i, q, rotation);
-            psi[n + i] = -root * there.shape_value_component(i, q, rotation);
+            w[i]     = root * here.shape_value_component(i, q, 0);
+            w[n + i] = -root * other.shape_value_component(i, q, 0);
+            psi[i]   = root * here.shape_value_component(i, q, rotation);
+            psi[n + i] =
+              -mirror * root * other.shape_value_component(i, q, rotation);
           }
         segment.w_jump.push_back(w);
         segment.rotation_jump.push_back(psi);
@@ -318,6 +327,13 @@ namespace liftoff
       }
     const MPI_Comm comm = discretization->mpi_communicator;
     Utilities::MPI::sum(force, comm, force);
+    // A joint that crosses a symmetry plane goes on in the mirror image,
+    // which passes the same force.
+    const PlateGeometry &geometry = discretization->geometry();
+    for (unsigned int j = 0; j < n_joints; ++j)
+      for (const unsigned int axis : geometry.symmetry_axes())
+        if (axis != geometry.slabs().joints()[j].normal_axis)
+          force[j] *= 2;
     const auto            all = Utilities::MPI::all_gather(comm, loaded);
     std::vector<Transfer> result(n_joints);
     for (unsigned int j = 0; j < n_joints; ++j)

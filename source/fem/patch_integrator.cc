@@ -42,8 +42,10 @@ namespace liftoff
     }
 
     /// The share of a line along face `f` that the cell carries: half of one
-    /// between two cells (the other half from the cell behind it) or on a
-    /// symmetry plane (the modelled part's share), all of one on an edge.
+    /// between two cells (the other half from the cell behind it), on a
+    /// joint (the other half from the slab across it, or on a symmetry
+    /// plane from the mirror image) or on a symmetry plane (the modelled
+    /// part's share), all of one on an edge.
     double
     share_along_face(const DoFHandler<2>::active_cell_iterator &cell,
                      const unsigned int                         f,
@@ -56,7 +58,10 @@ namespace liftoff
         geometry.symmetry() != Symmetry::full
         && (face->boundary_id() == PlateGeometry::x_symmetry_plane
             || face->boundary_id() == PlateGeometry::y_symmetry_plane);
-      return (!face->at_boundary() || on_plane) ? 0.5 : 1.0;
+      const bool on_joint =
+        face->at_boundary()
+        && geometry.slabs().joint_of(face->boundary_id()) != nullptr;
+      return (!face->at_boundary() || on_plane || on_joint) ? 0.5 : 1.0;
     }
 
     /// A 1d rule on [0, 1] moved onto [a, b].

@@ -178,13 +178,12 @@ namespace liftoff
               + std::to_string(slab_grid[axis]) + " puts the joint " + name
               + " at " + axis_names[axis] + " = " + format_number(position);
             const double tolerance = 1e-10 * (high[axis] - low[axis]);
-            AssertThrow(std::abs(position) > tolerance
-                          || geometry.symmetry_axes().size() <= axis,
-                        ExcMessage(what
-                                   + ", on the symmetry plane of "
-                                     "Discretization/Symmetry: model "
-                                     "the full plate."));
-            if (position < modelled_low[axis] + tolerance)
+            const types::boundary_id id =
+              first_joint_id + 2 * joint_list.size();
+            const bool on_plane = std::abs(position) <= tolerance
+                                  && geometry.symmetry_axes().size() > axis;
+            if (position < modelled_low[axis] - tolerance
+                || (position < modelled_low[axis] + tolerance && !on_plane))
               continue;
             const double cells = (position - modelled_low[axis]) / cell;
             AssertThrow(std::abs(cells - std::round(cells)) < 1e-8,
@@ -194,8 +193,6 @@ namespace liftoff
                                    + axis_names[axis]
                                    + " a multiple of the slabs on the "
                                      "meshed part."));
-            const types::boundary_id id =
-              first_joint_id + 2 * joint_list.size();
             joint_list.push_back({name,
                                   axis,
                                   position,
@@ -203,7 +200,8 @@ namespace liftoff
                                   id + 1u,
                                   false,
                                   low[1 - axis],
-                                  high[1 - axis]});
+                                  high[1 - axis],
+                                  on_plane});
           }
       }
   }
@@ -239,6 +237,17 @@ namespace liftoff
       if (id == joint.lower_side || id == joint.upper_side)
         return &joint;
     return nullptr;
+  }
+
+
+  DoFHandler<2>::cell_iterator
+  SlabLayout::across(const DoFHandler<2>::active_cell_iterator &cell,
+                     const unsigned int                         face) const
+  {
+    const Joint *joint = joint_of(cell->face(face)->boundary_id());
+    Assert(joint != nullptr, ExcInternalError());
+    return joint->on_plane ? DoFHandler<2>::cell_iterator(cell)
+                           : cell->periodic_neighbor(face);
   }
 
 
@@ -320,14 +329,15 @@ namespace liftoff
 
     mark_faces(whole, cut);
     for (const Joint &joint : joint_list)
-      {
-        std::vector<GridTools::PeriodicFacePair<
-          parallel::distributed::Triangulation<2>::cell_iterator>>
-          pairs;
-        GridTools::collect_periodic_faces(
-          cut, joint.lower_side, joint.upper_side, joint.normal_axis, pairs);
-        cut.add_periodicity(pairs);
-      }
+      if (!joint.on_plane)
+        {
+          std::vector<GridTools::PeriodicFacePair<
+            parallel::distributed::Triangulation<2>::cell_iterator>>
+            pairs;
+          GridTools::collect_periodic_faces(
+            cut, joint.lower_side, joint.upper_side, joint.normal_axis, pairs);
+          cut.add_periodicity(pairs);
+        }
   }
 
 
@@ -336,7 +346,8 @@ namespace liftoff
                          Triangulation<2>       &cut) const
   {
     // The edges' and planes' ids at the same places; the other faces on
-    // the boundary now, and a mesh file's joints, are the joints'.
+    // the boundary now, a mesh file's joints and the joints on a symmetry
+    // plane that are not tied, are the joints'.
     std::vector<std::pair<Point<2>, types::boundary_id>> edge_ids;
     for (const auto &face : whole.active_face_iterators())
       if (face->at_boundary() && joint_tag_ids.count(face->boundary_id()) == 0)
@@ -347,25 +358,27 @@ namespace liftoff
         if (face->at_boundary())
           {
             const Point<2> c = face->center();
-            const auto     edge =
+            const auto     joint =
+              std::find_if(joint_list.begin(), joint_list.end(), [&](auto &j) {
+                const unsigned int along = 1 - j.normal_axis;
+                return std::abs(c[j.normal_axis] - j.position) < tolerance
+                       && c[along] > j.start && c[along] < j.end
+                       && !(j.on_plane && j.tied);
+              });
+            if (joint != joint_list.end())
+              {
+                face->set_boundary_id(cell->center()[joint->normal_axis]
+                                          < joint->position
+                                        ? joint->lower_side
+                                        : joint->upper_side);
+                continue;
+              }
+            const auto edge =
               std::find_if(edge_ids.begin(), edge_ids.end(), [&](auto &e) {
                 return e.first.distance(c) < tolerance;
               });
             if (edge != edge_ids.end())
-              {
-                face->set_boundary_id(edge->second);
-                continue;
-              }
-            for (const Joint &joint : joint_list)
-              {
-                const unsigned int along = 1 - joint.normal_axis;
-                if (std::abs(c[joint.normal_axis] - joint.position) < tolerance
-                    && c[along] > joint.start && c[along] < joint.end)
-                  face->set_boundary_id(cell->center()[joint.normal_axis]
-                                            < joint.position
-                                          ? joint.lower_side
-                                          : joint.upper_side);
-              }
+              face->set_boundary_id(edge->second);
           }
   }
 
@@ -384,7 +397,8 @@ namespace liftoff
             const Joint *joint = cell->face(f)->at_boundary()
                                    ? joint_of(cell->face(f)->boundary_id())
                                    : nullptr;
-            if (joint == nullptr || joint->tied)
+            // A joint on a plane couples a cell with its own mirror image.
+            if (joint == nullptr || joint->tied || joint->on_plane)
               continue;
             // A finer neighbour couples from its side, as it sees this
             // cell as its coarser neighbour.
@@ -404,8 +418,9 @@ namespace liftoff
   SlabLayout::tie(const DoFHandler<2>       &dof_handler,
                   AffineConstraints<double> &constraints) const
   {
+    // A tied joint on a symmetry plane is the plane (psi . n = 0 there).
     for (const Joint &joint : joint_list)
-      if (joint.tied)
+      if (joint.tied && !joint.on_plane)
         DoFTools::make_periodicity_constraints(dof_handler,
                                                joint.lower_side,
                                                joint.upper_side,
@@ -431,10 +446,13 @@ namespace liftoff
             if (joint == nullptr || joint->tied)
               continue;
             // Each piece of the joint once: from the finer side, from the
-            // lower one where both are alike.
-            if (cell->periodic_neighbor(face)->has_children()
-                || (!cell->periodic_neighbor_is_coarser(face)
-                    && cell->face(face)->boundary_id() == joint->upper_side))
+            // lower one where both are alike; on a plane from the modelled
+            // side, the only one.
+            if (!joint->on_plane
+                && (cell->periodic_neighbor(face)->has_children()
+                    || (!cell->periodic_neighbor_is_coarser(face)
+                        && cell->face(face)->boundary_id()
+                             == joint->upper_side)))
               continue;
             f(cell, face, joint - joint_list.data());
           }

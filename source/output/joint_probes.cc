@@ -161,7 +161,7 @@ namespace liftoff
             if (probes[k].joint == joint && x >= std::min(a, b) - tol
                 && (x < end - tol || end >= high[along] - tol))
               {
-                const auto opposite = cell->periodic_neighbor(face);
+                const auto opposite = slabs.across(cell, face);
                 const bool is_lower =
                   cell->face(face)->boundary_id() == j.lower_side;
                 located.push_back(

@@ -50,7 +50,8 @@ namespace liftoff
     energy(const TermState &state) const override;
 
     /// What a joint passes at ghosted_u: the shear force from its lower to
-    /// its upper slab, int AGG (w_lower - w_upper) ds, and its load
+    /// its upper slab, int AGG (w_lower - w_upper) ds over the whole joint
+    /// (its mirror images included), and its load
     /// transfer efficiency w_unloaded / w_loaded at the Gauss point of the
     /// joint where the larger |w| of its two sides is largest (1 where
     /// the joint does not move).

@@ -27,7 +27,9 @@ namespace liftoff
   /// x) or y = const, from `start` to `end` along it: on the rectangle x1,
   /// x2, ... the transverse joints, y1, ... the longitudinal ones; in a
   /// mesh file a physical curve. Its faces carry two boundary ids, one per
-  /// side: `lower_side` that of the slab with the smaller coordinate.
+  /// side: `lower_side` that of the slab with the smaller coordinate. A
+  /// joint on a symmetry plane (`on_plane`) has the modelled slab on its
+  /// upper side only; the lower side is that slab's mirror image.
   struct Joint
   {
     std::string        name;
@@ -38,6 +40,7 @@ namespace liftoff
     bool               tied;
     double             start;
     double             end;
+    bool               on_plane = false;
   };
 
   /**
@@ -62,8 +65,8 @@ namespace liftoff
     static void
     declare_parameters(ParameterHandler &prm);
     /// The joints of `geometry`'s plate, refused (naming the entries) on
-    /// a disc or annulus, where a joint's line is no line of the coarse
-    /// cells, or on a symmetry plane; the slabs and joints (`joint_tags`,
+    /// a disc or annulus, or where a joint's line is no line of the coarse
+    /// cells; the slabs and joints (`joint_tags`,
     /// boundary id and name) of `mesh` if there is one.
     void
     parse_parameters(
@@ -109,6 +112,12 @@ namespace liftoff
       const std::function<void(const DoFHandler<2>::active_cell_iterator &,
                                const unsigned int,
                                const unsigned int)> &f) const;
+    /// The cell across the joint face `face` of `cell`: its periodic
+    /// neighbour, or on a symmetry plane the cell itself, whose mirror
+    /// image is across (the same w and stresses, the opposite psi . n).
+    DoFHandler<2>::cell_iterator
+    across(const DoFHandler<2>::active_cell_iterator &cell,
+           const unsigned int                         face) const;
     /// The number of the slab a point of the full plate is on (x first on
     /// the rectangle).
     unsigned int

@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""Joints on and across the symmetry planes against the full plate, and a
+line load along joints against the plate without them:
+
+- four slabs along x and two along y (joints x1, x3 off the planes, x2 on
+  x = 0, y1 on y = 0) with aggregate interlock and a rotational stiffness,
+  on a tensionless bed, under loads symmetric about both axes (point
+  loads, a line along x2): the half model (x2 on its plane, y1 across it)
+  and the quarter model (both on planes) against the full plate, every
+  column of history.csv, joint probes included. On a plane the other
+  side of a joint is the mirror image: [w] = 0 and [psi . n] = 2 psi . n,
+  so the joint passes no shear and its rotational springs act with 2 R
+  on the modelled side;
+- the same with x2 and y1 tied (a tied joint on a plane is the plane);
+- a line load along the joints of four slabs, all tied and all stiff,
+  against the same line on the plate without joints: each slab carries
+  half of a line along its joint face.
+
+    symmetric_joints.py LIFTOFF
+"""
+
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+from checks import check, finish  # noqa: E402
+from scenes import (point_load, read_history, run_scene_or_fail,  # noqa: E402
+                    scene_text)
+
+LIFTOFF = os.path.abspath(sys.argv[1])
+
+BASE = {
+    "Discretization": {"Polynomial degree": 1},
+    "Slabs": {"Slabs along x": 4, "Slabs along y": 2,
+              "Shear stiffness": 50, "Rotational stiffness": 3},
+    "Foundation": {"Model": "tensionless"},
+    "Time integration": {"Time step": 1e-3, "End time": 0.01},
+    "Loads": {"Line load 1": {"Magnitude": 2,
+                              "Segment": "0, -0.2, 0, 0.2"}},
+    "Output": {"Probe points": "0.3, 0.3; 0.01, 0.2; 0.2, 0.01; 0.45, 0.1",
+               "Joint probe points": "0, 0.3; 0.3, 0; 0.25, 0.2"},
+}
+LOADS = {}
+for k, (x, y) in enumerate([(0.2, 0.1), (-0.2, 0.1), (0.2, -0.1),
+                            (-0.2, -0.1)]):
+    LOADS = {"Loads": {**LOADS.get("Loads", {}),
+                       **point_load(k + 1, x, y, 1)["Loads"]}}
+CELLS = {"full": (8, 8), "half": (4, 8), "quarter": (4, 4)}
+SKIPPED = ("cells", "dofs", "balance_error")
+
+
+def compare(full, part, what, tolerance=1e-10, least=20):
+    """Every column of FULL that PART has, against PART; the shear of a
+    joint on a plane is round-off on both, compared absolutely."""
+    compared = 0
+    for column, values in full.items():
+        if column in SKIPPED or column not in part:
+            continue
+        scale = np.max(np.abs(values))
+        if column.startswith("shear_"):
+            scale = max(scale, 1.0)
+        error = np.max(np.abs(values - part[column])) / max(scale, 1e-300)
+        if error >= tolerance:
+            check(False, f"{what}: {column} differs by {error:.1e}")
+        compared += 1
+    check(compared >= least, f"{what}: {compared} columns agree within "
+          f"{tolerance:g}")
+
+
+def symmetric_parts(work, name, extra):
+    runs = {}
+    for symmetry, (nx, ny) in CELLS.items():
+        runs[symmetry] = read_history(run_scene_or_fail(
+            LIFTOFF, work, f"{name}-{symmetry}", scene_text(
+                BASE, LOADS, extra,
+                {"Discretization": {"Symmetry": symmetry,
+                                    "Cells along x": nx,
+                                    "Cells along y": ny}})))
+    for symmetry in ("half", "quarter"):
+        compare(runs["full"], runs[symmetry], f"{name}, {symmetry} model")
+    return runs["full"]
+
+
+def line_along_joints(work):
+    line = {"Loads": {"Line load 1": {"Magnitude": 2,
+                                      "Segment": "0, -0.4, 0, 0.4"},
+                      "Line load 2": {"Magnitude": 1,
+                                      "Segment": "-0.3, 0, 0.3, 0"}},
+            "Discretization": {"Cells along x": 8, "Cells along y": 8},
+            "Output": {"Probe points": "0.1, 0.1; 0.3, -0.2"}}
+    plain = {k: v for k, v in BASE.items() if k != "Slabs"}
+    plain["Output"] = {}
+    alone = read_history(run_scene_or_fail(
+        LIFTOFF, work, "line-plain", scene_text(plain, line)))
+    slabs = {"Slabs": {"Slabs along x": 2, "Slabs along y": 2}}
+    tied = read_history(run_scene_or_fail(
+        LIFTOFF, work, "line-tied", scene_text(
+            plain, line, slabs, {"Slabs": {"Tied joints": "x1, y1"}})))
+    compare(alone, tied, "lines along tied joints", 1e-11, 10)
+    stiff = read_history(run_scene_or_fail(
+        LIFTOFF, work, "line-stiff", scene_text(
+            plain, line, slabs, {"Slabs": {"Shear stiffness": 1e9,
+                                           "Rotational stiffness": 1e9}})))
+    error = (np.max(np.abs(alone["w(0.1;0.1)"] - stiff["w(0.1;0.1)"]))
+             / np.max(np.abs(alone["w(0.1;0.1)"])))
+    check(error < 1e-4, f"lines along stiff joints: w(0.1;0.1) within "
+          f"{error:.1e} of the plate without joints")
+
+
+with tempfile.TemporaryDirectory() as work:
+    full = symmetric_parts(work, "springs", {})
+    check(np.max(np.abs(full["lte_x2"] - 1)) < 1e-12
+          and np.max(np.abs(full["shear_x2"])) < 1e-12,
+          f"the full plate's x2 passes no shear (largest "
+          f"{np.max(np.abs(full['shear_x2'])):.1e}), LTE 1")
+    check(np.max(np.abs(full["shear_x1"])) > 1e-3,
+          f"x1, off the planes, passes shear (largest "
+          f"{np.max(np.abs(full['shear_x1'])):.3e})")
+    symmetric_parts(work, "tied", {"Slabs": {"Tied joints": "x2, y1"},
+                                   "Output": {"Joint probe points":
+                                              "0.25, 0.2"}})
+    line_along_joints(work)
+finish()
