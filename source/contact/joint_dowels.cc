@@ -14,6 +14,34 @@ namespace liftoff
 {
   namespace
   {
+    /// A dowel at p, `at` along `joint`, refused where another joint that
+    /// is not tied crosses it: there four slabs meet, and the dowel would
+    /// join two of them by the order of the cells.
+    void
+    require_off_crossings(const Point<2>           &p,
+                          const Joint              &joint,
+                          const std::vector<Joint> &joints,
+                          const double              at)
+    {
+      const double tolerance = 1e-10 * (joint.end - joint.start);
+      for (const Joint &other : joints)
+        {
+          const unsigned int along = 1 - other.normal_axis;
+          AssertThrow(&other == &joint || other.tied
+                        || std::abs(p[other.normal_axis] - other.position)
+                             > tolerance
+                        || p[along] < other.start - tolerance
+                        || p[along] > other.end + tolerance,
+                      ExcMessage("Slabs/Dowels: the dowel at "
+                                 + format_number(at) + " on the joint "
+                                 + joint.name + " lies on the joint "
+                                 + other.name
+                                 + ", where the slabs meet at a corner: "
+                                   "move it off the crossing."));
+        }
+    }
+
+
     // Trilinos' first add after an insert assembles the object, a
     // collective call, on the rank that adds: a rank that holds no dowel
     // must take that step too, or the ranks wait for each other for ever
@@ -287,12 +315,10 @@ namespace liftoff
   {
     joint_of.clear();
     locations.clear();
+    share_of.clear();
     dowel_names.clear();
     if (joint_names.empty())
       return;
-    AssertThrow(geometry.n_symmetry_copies() == 1,
-                ExcMessage("Slabs/Dowels/Joints: dowels need the full plate "
-                           "(Discretization/Symmetry = full)."));
     const std::vector<Joint> &joints = geometry.slabs().joints();
     std::string               known;
     for (const Joint &joint : joints)
@@ -305,10 +331,12 @@ namespace liftoff
           });
         AssertThrow(joint != joints.end(),
                     ExcMessage("Slabs/Dowels/Joints names " + name
-                               + ", which the plate does not have; its joints "
-                                 "are: "
+                               + ", which the modelled plate does not have; "
+                                 "its joints are: "
                                + (known.empty() ? "none" : known)
-                               + " (Slabs/Slabs along x and y)."));
+                               + " (Slabs/Slabs along x and y; a half or "
+                                 "quarter model has the joints of its "
+                                 "part)."));
         AssertThrow(!joint->tied,
                     ExcMessage("Slabs/Dowels/Joints names " + name
                                + ", which Slabs/Tied joints ties: a tied "
@@ -334,12 +362,51 @@ namespace liftoff
             Point<2> p;
             p[joint->normal_axis] = joint->position;
             p[along]              = joint->start + at[k];
+            require_off_crossings(p, *joint, joints, at[k]);
+            const double share = modelled_share(p, geometry, *joint, at);
+            if (share == 0)
+              continue;
             joint_of.push_back(joint - joints.begin());
             locations.push_back(p);
+            share_of.push_back(share);
             dowel_names.push_back("dowel_" + name + "_"
                                   + std::to_string(k + 1));
           }
       }
+  }
+
+
+  double
+  JointDowels::modelled_share(const Point<2>            &p,
+                              const PlateGeometry       &geometry,
+                              const Joint               &joint,
+                              const std::vector<double> &at) const
+  {
+    const unsigned int along     = 1 - joint.normal_axis;
+    const double       tolerance = 1e-10 * (joint.end - joint.start);
+    double             share     = 1;
+    for (const unsigned int axis : geometry.symmetry_axes())
+      {
+        share *= std::abs(p[axis]) <= tolerance ? 0.5 : (p[axis] < 0 ? 0 : 1);
+        // A plane across the joint mirrors each dowel onto another.
+        const double mirror = -p[along] - joint.start;
+        AssertThrow(axis != along
+                      || std::any_of(at.begin(),
+                                     at.end(),
+                                     [&](const double a) {
+                                       return std::abs(a - mirror) <= tolerance;
+                                     }),
+                    ExcMessage("Slabs/Dowels: the dowel at "
+                               + format_number(p[along] - joint.start)
+                               + " on the joint " + joint.name
+                               + " has no mirror image at "
+                               + format_number(mirror)
+                               + " about the symmetry plane, so "
+                                 "Discretization/Symmetry would model other "
+                                 "dowels: place them symmetrically, or model "
+                                 "the full plate."));
+      }
+    return share;
   }
 
 
@@ -438,7 +505,8 @@ namespace liftoff
     FullMatrix<double>         cell_matrix(b.size(), b.size());
     for (unsigned int r = 0; r < b.size(); ++r)
       for (unsigned int c = 0; c < b.size(); ++c)
-        cell_matrix(r, c) = factor * stiffness() * b[r] * b[c];
+        cell_matrix(r, c) =
+          factor * stiffness() * share_of[local[i].index] * b[r] * b[c];
     discretization->constraints.distribute_local_to_global(cell_matrix,
                                                            local[i].dofs,
                                                            matrix);
@@ -451,7 +519,7 @@ namespace liftoff
                           LA::MPI::Vector   &vector) const
   {
     Vector<double> cell_vector(local[i].jump.begin(), local[i].jump.end());
-    cell_vector *= factor;
+    cell_vector *= factor * share_of[local[i].index];
     discretization->constraints.distribute_local_to_global(cell_vector,
                                                            local[i].dofs,
                                                            vector);
@@ -541,7 +609,7 @@ namespace liftoff
     double energy = 0;
     for (unsigned int i = 0; i < local.size(); ++i)
       if (current[i] != slack)
-        energy += 0.5 * stiffness()
+        energy += 0.5 * stiffness() * share_of[local[i].index]
                   * std::pow(jump_of(i, state.ghosted_u)
                                - looseness * offset_sign(current[i]),
                              2);
@@ -579,7 +647,8 @@ namespace liftoff
     for (unsigned int i = 0; i < local.size(); ++i)
       {
         const double offset = looseness * offset_sign(current[i]);
-        work += stiffness() * offset * (offset - jump_of(i, ghosted_u));
+        work += stiffness() * share_of[local[i].index] * offset
+                * (offset - jump_of(i, ghosted_u));
       }
     return Utilities::MPI::sum(work, discretization->mpi_communicator);
   }

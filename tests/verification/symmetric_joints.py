@@ -70,17 +70,21 @@ def compare(full, part, what, tolerance=1e-10, least=20):
           f"{tolerance:g}")
 
 
-def symmetric_parts(work, name, extra):
+def symmetric_parts(work, name, extra, per_model=None, loads=None,
+                    models=("full", "half", "quarter"), tolerance=1e-10):
     runs = {}
-    for symmetry, (nx, ny) in CELLS.items():
+    for symmetry in models:
+        nx, ny = CELLS[symmetry]
         runs[symmetry] = read_history(run_scene_or_fail(
             LIFTOFF, work, f"{name}-{symmetry}", scene_text(
-                BASE, LOADS, extra,
+                BASE, loads or LOADS, extra,
+                (per_model or {}).get(symmetry, {}),
                 {"Discretization": {"Symmetry": symmetry,
                                     "Cells along x": nx,
                                     "Cells along y": ny}})))
-    for symmetry in ("half", "quarter"):
-        compare(runs["full"], runs[symmetry], f"{name}, {symmetry} model")
+    for symmetry in models[1:]:
+        compare(runs["full"], runs[symmetry], f"{name}, {symmetry} model",
+                tolerance)
     return runs["full"]
 
 
@@ -122,5 +126,37 @@ with tempfile.TemporaryDirectory() as work:
     symmetric_parts(work, "tied", {"Slabs": {"Tied joints": "x2, y1"},
                                    "Output": {"Joint probe points":
                                               "0.25, 0.2"}})
+    # Loose dowels on x2 (on x = 0) and x3 (across y = 0, with a dowel on
+    # that plane, half of it in the quarter model).
+    along = {"x1": "0.2, 0.5, 0.8", "x2": "0.25, 0.75", "x3": "0.2, 0.5, 0.8"}
+    dowels = {"Slabs": {"Slabs along y": 1,
+                        "Dowels": {"Stiffness": 30, "Looseness": 2e-4}},
+              "Output": {"Joint probe points": "0, 0.3; 0.25, 0.2"}}
+    joints = {"full": ["x1", "x2", "x3"], "half": ["x2", "x3"],
+              "quarter": ["x2", "x3"]}
+    named = {symmetry: {"Slabs": {"Dowels": {
+        "Joints": ", ".join(names),
+        "Positions": "; ".join(f"{n}: {along[n]}" for n in names)}}}
+        for symmetry, names in joints.items()}
+    # Measured 4.2e-10 at most (the springs alone: 1e-12).
+    full = symmetric_parts(work, "dowels", dowels, named, tolerance=1e-9)
+    forces = [c for c in full if c.startswith("dowel_")]
+    check(len(forces) == 8 and np.max(np.abs(full["dowel_x3_2"])) > 1e-3,
+          f"{len(forces)} dowels, the one on x3 at y = 0 passing "
+          f"{np.max(np.abs(full['dowel_x3_2'])):.3e}")
+    # Slabs above and below y1, loads above it: y1's dowels pass forces,
+    # the one on x = 0 half of it in the half model.
+    above = {"Loads": {k: v for k, v in LOADS["Loads"].items()
+                       if k in ("Point load 1", "Point load 2")}}
+    full = symmetric_parts(
+        work, "dowels-above",
+        {"Slabs": {"Slabs along x": 1,
+                   "Dowels": {"Stiffness": 30, "Looseness": 5e-5,
+                              "Joints": "y1", "Positions": "0.1, 0.5, 0.9"}},
+         "Output": {"Joint probe points": "0.3, 0"}},
+        loads=above, models=("full", "half"), tolerance=1e-9)
+    check(np.max(np.abs(full["dowel_y1_2"])) > 1e-3,
+          f"the dowel on y1 at x = 0 passes "
+          f"{np.max(np.abs(full['dowel_y1_2'])):.3e}")
     line_along_joints(work)
 finish()

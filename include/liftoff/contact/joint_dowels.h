@@ -16,6 +16,7 @@ namespace liftoff
 
   class SlabLayout;
   class PlateGeometry;
+  struct Joint;
 
   /**
    * A steel dowel bar across an open joint, embedded in the concrete of
@@ -69,7 +70,10 @@ namespace liftoff
    *
    * A dowel belongs to the rank that owns the cell on the finer side of
    * the joint where it sits (the side JointSprings integrates on), and is
-   * evaluated there and at the same point of the cell opposite.
+   * evaluated there and at the same point of the cell opposite. On a half
+   * or quarter model the dowels of the mirror images are left out, and a
+   * dowel on a symmetry plane acts with the modelled part's share of its
+   * stiffness (1/2 per plane; its force is the whole dowel's).
    */
   class JointDowels : public StatusTerm
   {
@@ -80,8 +84,8 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
     /// Places the dowels on the joints of `geometry`'s slabs, refusing a
-    /// joint that is not there or is tied, a position off the joint, and a
-    /// model with symmetry planes.
+    /// joint that is not there or is tied, a position off the joint, and
+    /// dowels that are not mirror images across a symmetry plane.
     void
     place_on(const PlateGeometry &geometry);
 
@@ -175,7 +179,10 @@ namespace liftoff
     /// Per dowel of the plate: its joint, and its point.
     std::vector<unsigned int> joint_of;
     std::vector<Point<2>>     locations;
-    std::vector<std::string>  dowel_names;
+    /// The modelled part's share of each dowel: 1/2 per symmetry plane
+    /// through it.
+    std::vector<double>      share_of;
+    std::vector<std::string> dowel_names;
 
     /// A dowel of this rank: its number, the dofs of the two cells, and
     /// [w] at its point as their coefficients.
@@ -191,6 +198,13 @@ namespace liftoff
     double                band           = 0;
     const Discretization *discretization = nullptr;
 
+    /// The modelled part's share of a dowel at p on `joint`, whose dowels
+    /// are at the distances `at` from its lower end: 0 on a mirror image.
+    double
+    modelled_share(const Point<2>            &p,
+                   const PlateGeometry       &geometry,
+                   const Joint               &joint,
+                   const std::vector<double> &at) const;
     /// Dowel d, on the piece `face` of `cell` (a piece of its joint).
     Local
     make_local(const DoFHandler<2>::active_cell_iterator &cell,
