@@ -252,10 +252,10 @@ namespace liftoff
   }
 
 
-  const std::vector<std::string> &
-  JointDowels::names() const
+  const std::vector<DowelSite> &
+  JointDowels::sites() const
   {
-    return dowel_names;
+    return dowel_sites;
   }
 
 
@@ -313,10 +313,7 @@ namespace liftoff
   void
   JointDowels::place_on(const PlateGeometry &geometry)
   {
-    joint_of.clear();
-    locations.clear();
-    share_of.clear();
-    dowel_names.clear();
+    dowel_sites.clear();
     if (joint_names.empty())
       return;
     const std::vector<Joint> &joints = geometry.slabs().joints();
@@ -364,13 +361,12 @@ namespace liftoff
             p[along]              = joint->start + at[k];
             require_off_crossings(p, *joint, joints, at[k]);
             const double share = modelled_share(p, geometry, *joint, at);
-            if (share == 0)
-              continue;
-            joint_of.push_back(joint - joints.begin());
-            locations.push_back(p);
-            share_of.push_back(share);
-            dowel_names.push_back("dowel_" + name + "_"
-                                  + std::to_string(k + 1));
+            if (share > 0)
+              dowel_sites.push_back(
+                {"dowel_" + name + "_" + std::to_string(k + 1),
+                 static_cast<unsigned int>(joint - joints.begin()),
+                 p,
+                 share});
           }
       }
   }
@@ -419,7 +415,7 @@ namespace liftoff
     const Mapping<2>       &mapping = discretization->mapping();
     const unsigned int      n       = fe.n_dofs_per_cell();
     const Joint            &joint =
-      discretization->geometry().slabs().joints()[joint_of[d]];
+      discretization->geometry().slabs().joints()[dowel_sites[d].joint];
     // [w] = w_lower - w_upper: this cell's side first.
     const double sign =
       cell->face(face)->boundary_id() == joint.lower_side ? 1 : -1;
@@ -435,7 +431,7 @@ namespace liftoff
         FEValues<2> values(mapping,
                            fe,
                            Quadrature<2>(mapping.transform_real_to_unit_cell(
-                             side, locations[d])),
+                             side, dowel_sites[d].location)),
                            update_values);
         values.reinit(side);
         for (unsigned int i = 0; i < n; ++i)
@@ -460,17 +456,17 @@ namespace liftoff
         const double       a     = cell->face(face)->vertex(0)[along];
         const double       b     = cell->face(face)->vertex(1)[along];
         const double       tol   = 1e-10 * std::abs(b - a);
-        for (unsigned int d = 0; d < locations.size(); ++d)
+        for (unsigned int d = 0; d < dowel_sites.size(); ++d)
           {
-            const double x = locations[d][along];
+            const double x = dowel_sites[d].location[along];
             // Half-open pieces: a dowel at a vertex belongs to one.
-            if (joint_of[d] == joint && x >= std::min(a, b) - tol
+            if (dowel_sites[d].joint == joint && x >= std::min(a, b) - tol
                 && x < std::max(a, b) - tol)
               local.push_back(make_local(cell, face, d));
           }
       });
     AssertThrow(Utilities::MPI::sum(local.size(), disc.mpi_communicator)
-                  == locations.size(),
+                  == dowel_sites.size(),
                 ExcInternalError());
     current.assign(local.size(), looseness > 0 ? slack : both);
     in_matrix = current;
@@ -505,8 +501,8 @@ namespace liftoff
     FullMatrix<double>         cell_matrix(b.size(), b.size());
     for (unsigned int r = 0; r < b.size(); ++r)
       for (unsigned int c = 0; c < b.size(); ++c)
-        cell_matrix(r, c) =
-          factor * stiffness() * share_of[local[i].index] * b[r] * b[c];
+        cell_matrix(r, c) = factor * stiffness()
+                            * dowel_sites[local[i].index].share * b[r] * b[c];
     discretization->constraints.distribute_local_to_global(cell_matrix,
                                                            local[i].dofs,
                                                            matrix);
@@ -519,7 +515,7 @@ namespace liftoff
                           LA::MPI::Vector   &vector) const
   {
     Vector<double> cell_vector(local[i].jump.begin(), local[i].jump.end());
-    cell_vector *= factor * share_of[local[i].index];
+    cell_vector *= factor * dowel_sites[local[i].index].share;
     discretization->constraints.distribute_local_to_global(cell_vector,
                                                            local[i].dofs,
                                                            vector);
@@ -609,7 +605,7 @@ namespace liftoff
     double energy = 0;
     for (unsigned int i = 0; i < local.size(); ++i)
       if (current[i] != slack)
-        energy += 0.5 * stiffness() * share_of[local[i].index]
+        energy += 0.5 * stiffness() * dowel_sites[local[i].index].share
                   * std::pow(jump_of(i, state.ghosted_u)
                                - looseness * offset_sign(current[i]),
                              2);
@@ -620,7 +616,7 @@ namespace liftoff
   bool
   JointDowels::has_status_load() const
   {
-    return looseness > 0 && !locations.empty();
+    return looseness > 0 && !dowel_sites.empty();
   }
 
 
@@ -647,7 +643,7 @@ namespace liftoff
     for (unsigned int i = 0; i < local.size(); ++i)
       {
         const double offset = looseness * offset_sign(current[i]);
-        work += stiffness() * share_of[local[i].index] * offset
+        work += stiffness() * dowel_sites[local[i].index].share * offset
                 * (offset - jump_of(i, ghosted_u));
       }
     return Utilities::MPI::sum(work, discretization->mpi_communicator);
@@ -745,7 +741,7 @@ namespace liftoff
   std::vector<double>
   JointDowels::forces(const LA::MPI::Vector &ghosted_u) const
   {
-    std::vector<double> force(locations.size(), 0.0);
+    std::vector<double> force(dowel_sites.size(), 0.0);
     for (unsigned int i = 0; i < local.size(); ++i)
       if (current[i] != slack)
         force[local[i].index] =

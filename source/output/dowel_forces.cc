@@ -5,10 +5,80 @@
 #include <liftoff/output/time_history.h>
 #include <liftoff/time/plate_state.h>
 
+#include <deal.II/base/data_out_base.h>
+
+#include <liftoff/output/vtu_pieces.h>
+
 #include <cmath>
 
 namespace liftoff
 {
+  namespace
+  {
+    /// Points with their data, as DataOutBase writes them.
+    class PointPatches : public DataOutInterface<0, 2>
+    {
+    public:
+      std::vector<DataOutBase::Patch<0, 2>> patches;
+      std::vector<std::string>              names;
+
+    private:
+      const std::vector<DataOutBase::Patch<0, 2>> &
+      get_patches() const override
+      {
+        return patches;
+      }
+      std::vector<std::string>
+      get_dataset_names() const override
+      {
+        return names;
+      }
+    };
+  } // namespace
+
+
+  void
+  write_dowel_points(const std::string     &directory,
+                     const JointDowels     &dowels,
+                     const LA::MPI::Vector &ghosted_u,
+                     const PhysicalUnits   &units,
+                     const MPI_Comm         comm,
+                     const double           time,
+                     const std::string     &stem)
+  {
+    using Quantity                  = PhysicalUnits::Quantity;
+    const std::vector<double> force = dowels.forces(ghosted_u);
+    const DowelBar           *bar   = dowels.bar();
+    PointPatches              points;
+    points.names = {"force"};
+    if (bar != nullptr)
+      points.names.emplace_back("bearing_stress");
+    std::map<std::string, std::string> symbols = {
+      {"force", units.unit_symbol(Quantity::force)},
+      {"bearing_stress", units.unit_symbol(Quantity::pressure)}};
+    for (unsigned int d = 0;
+         d < force.size() && Utilities::MPI::this_mpi_process(comm) == 0;
+         ++d)
+      {
+        DataOutBase::Patch<0, 2> patch;
+        patch.vertices[0] =
+          dowels.sites()[d].location * units.scale(Quantity::length);
+        patch.patch_index = d;
+        patch.data.reinit(points.names.size(), 1);
+        patch.data(0, 0) = force[d] * units.scale(Quantity::force);
+        if (bar != nullptr)
+          patch.data(1, 0) = bar->bearing_stress(std::abs(force[d]))
+                             * units.scale(Quantity::pressure);
+        points.patches.push_back(patch);
+      }
+    DataOutBase::VtkFlags flags;
+    flags.time           = time;
+    flags.physical_units = symbols;
+    points.set_flags(flags);
+    write_vtu_pieces(directory, points, comm, time, stem, false);
+  }
+
+
   DowelForces::DowelForces(const JointDowels &dowels)
       : dowels(dowels)
   {}
@@ -25,8 +95,8 @@ namespace liftoff
   DowelForces::add_columns_to(TimeHistory &history) const
   {
     std::vector<HistoryColumns::Column> group;
-    for (const std::string &name : dowels.names())
-      group.push_back({name, PhysicalUnits::Quantity::force});
+    for (const DowelSite &site : dowels.sites())
+      group.push_back({site.name, PhysicalUnits::Quantity::force});
     history.add_columns(group, [this](const StepData &step) {
       return dowels.forces(step.state.ghosted_u);
     });
@@ -45,7 +115,7 @@ namespace liftoff
   void
   DowelForces::execute(const StepData &step)
   {
-    if (dowels.names().empty())
+    if (dowels.sites().empty())
       return;
     const std::vector<double> force = dowels.forces(step.state.ghosted_u);
     for (unsigned int d = 0; d < force.size(); ++d)
@@ -75,17 +145,17 @@ namespace liftoff
   void
   DowelForces::add_to(RunSummary &summary) const
   {
-    if (dowels.names().empty())
+    if (dowels.sites().empty())
       return;
     using Quantity = PhysicalUnits::Quantity;
     // C is a force per unit deflection.
     const double stiffness_scale =
       units.scale(Quantity::force) / units.scale(Quantity::deflection);
     RunSummary::Section section{
-      {"dowels", double(dowels.names().size())},
+      {"dowels", double(dowels.sites().size())},
       {"stiffness C" + (units.is_physical() ? std::string(" [N/m]") : ""),
        dowels.stiffness() * stiffness_scale},
-      {"largest force, " + dowels.names()[largest_of]
+      {"largest force, " + dowels.sites()[largest_of].name
          + units.unit(Quantity::force),
        largest * units.scale(Quantity::force)},
       {"its time" + units.unit(Quantity::time),

@@ -5,6 +5,7 @@
 
 #include <liftoff/base/archives.h>
 #include <liftoff/base/output_files.h>
+#include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/field_output.h>
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/stress_resultants.h>
@@ -398,9 +399,11 @@ namespace liftoff
 
   void
   FieldOutput::parse_parameters(ParameterHandler   &prm,
-                                const MindlinPlate &scene_plate)
+                                const MindlinPlate &scene_plate,
+                                const JointDowels  &scene_dowels)
   {
     plate              = scene_plate;
+    dowels             = &scene_dowels;
     writes_moments     = prm.get_bool("Moment fields");
     interval           = prm.get_integer("VTU interval");
     higher_order_cells = prm.get("Field cells") == "higher order";
@@ -433,6 +436,19 @@ namespace liftoff
       // output's time (Example 2 pulse, 100 files) for files 6 % smaller.
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       return flags;
+    }
+
+
+    /// The stem of the dowels' file of the output whose plate file is
+    /// `master` (solution_NNNNN.pvtu): dowels_NNNNN.
+    std::string
+    dowel_file_of(const std::string &master)
+    {
+      const std::string plate = "solution_";
+      return "dowels_"
+             + master.substr(plate.size(),
+                             master.size() - plate.size()
+                               - std::string(".pvtu").size());
     }
 
 
@@ -516,6 +532,9 @@ namespace liftoff
     const std::string stem = "solution_" + Utilities::int_to_string(step, 5);
     const std::string master =
       write_vtu_pieces(directory, data_out, comm, time, stem, writes_moments);
+    if (!dowels->sites().empty())
+      write_dowel_points(
+        directory, *dowels, solution, units, comm, time, dowel_file_of(master));
     if (writes_hdf5)
       write_hdf5(directory,
                  data_out,
@@ -547,6 +566,17 @@ namespace liftoff
                             [&](std::ostream &out) {
                               DataOutBase::write_pvd_record(out, records);
                             });
+      if (!dowels->sites().empty())
+        {
+          std::vector<std::pair<double, std::string>> dowel_records;
+          for (const auto &[time, master] : records)
+            dowel_records.emplace_back(time, dowel_file_of(master) + ".pvtu");
+          write_file_atomically(directory + "/dowels.pvd",
+                                [&](std::ostream &out) {
+                                  DataOutBase::write_pvd_record(out,
+                                                                dowel_records);
+                                });
+        }
       // After a resume the entries wait for the next output (write_hdf5),
       // and the earlier run's file stays until then.
       if (writes_hdf5 && !xdmf_entries.empty())

@@ -126,14 +126,14 @@ namespace liftoff
   // complete, and the record naming the pieces is written only after every
   // rank has renamed its piece: a viewer never finds a half-written file.
   // Returns the name of the record (the .pvtu).
-  template <int spacedim>
+  template <int dim, int spacedim>
   std::string
-  write_vtu_pieces(const std::string                   &directory,
-                   const DataOutInterface<2, spacedim> &data_out,
-                   const MPI_Comm                       comm,
-                   const double                         time,
-                   const std::string                   &stem,
-                   const bool                           has_moments)
+  write_vtu_pieces(const std::string                     &directory,
+                   const DataOutInterface<dim, spacedim> &data_out,
+                   const MPI_Comm                         comm,
+                   const double                           time,
+                   const std::string                     &stem,
+                   const bool                             has_moments)
   {
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -168,6 +168,13 @@ namespace liftoff
   }
 
 
+  template std::string
+  write_vtu_pieces(const std::string &,
+                   const DataOutInterface<0, 2> &,
+                   const MPI_Comm,
+                   const double,
+                   const std::string &,
+                   const bool);
   template std::string
   write_vtu_pieces(const std::string &,
                    const DataOutInterface<2, 2> &,

@@ -33,18 +33,20 @@ namespace liftoff
     constexpr off_t summary_space = 16 * 1024;
 
     // The names that Simulator, RunSummary, TimeHistory, ProfileOutput,
-    // FieldOutput and Checkpoint write, with their temporary names
-    // (write_file_atomically).
+    // FieldOutput (with the dowels' files) and Checkpoint write, with their
+    // temporary names (write_file_atomically).
     const std::regex file_names(
       R"((used_parameters\.prm|summary\.txt|summary\.json|history\.csv|)"
-      R"(profiles\.csv|solution\.pvd|solution_[0-9]+\.pvtu|)"
-      R"(solution_[0-9]+\.[0-9]+\.vtu|solution\.xdmf|solution_[0-9]+\.h5))"
+      R"(profiles\.csv|(solution|dowels)\.pvd|(solution|dowels)_[0-9]+\.pvtu|)"
+      R"((solution|dowels)_[0-9]+\.[0-9]+\.vtu|solution\.xdmf|)"
+      R"(solution_[0-9]+\.h5))"
       R"((\.tmp)?)");
     const std::regex checkpoint_folders(R"(checkpoint(\.new|\.previous)?)");
     const std::regex
       checkpoint_files(R"((checkpoint\.txt|rank_[0-9]+\.bin)(\.tmp)?)");
     /// A field file and its step.
-    const std::regex field_file(R"(solution_([0-9]+)\.(pvtu|[0-9]+\.vtu|h5))");
+    const std::regex
+      field_file(R"((?:solution|dowels)_([0-9]+)\.(pvtu|[0-9]+\.vtu|h5))");
 
     bool
     matches(const fs::directory_entry &entry, const std::regex &names)

@@ -69,7 +69,7 @@ namespace liftoff
     joint_springs.parse_parameters(prm);
     joint_dowels.parse_parameters(prm);
     joint_dowels.place_on(discretization.geometry());
-    if (!joint_dowels.names().empty())
+    if (!joint_dowels.sites().empty())
       active_set.drive_also({&joint_dowels});
     loads.parse_parameters(prm);
     loads.use_plate(plate);
@@ -155,7 +155,7 @@ namespace liftoff
   SceneParts::system_terms()
   {
     // Only a plate of several slabs has joints to pass forces.
-    if (!joint_dowels.names().empty())
+    if (!joint_dowels.sites().empty())
       return {&plate_term, &foundation, &joint_springs, &joint_dowels};
     if (discretization.geometry().slabs().is_jointed())
       return {&plate_term, &foundation, &joint_springs};

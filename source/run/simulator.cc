@@ -62,7 +62,7 @@ namespace liftoff
       const PlateGeometry &geometry = parts.discretization.geometry();
       joint_probes.parse_parameters(scene, geometry, parts.plate);
       joint_profiles.parse_parameters(scene, geometry);
-      field_output.parse_parameters(scene, parts.plate);
+      field_output.parse_parameters(scene, parts.plate, parts.joint_dowels);
       envelopes.parse_parameters(scene);
       scene.leave_subsection();
       deflectometer_sensors.parse_parameters(scene);

@@ -35,7 +35,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..",
                                 "scripts"))
 from checks import check, finish  # noqa: E402
 from lte_fits import radius_of_relative_stiffness  # noqa: E402
-from scenes import read_history, run_scene_or_fail, scene_text  # noqa: E402
+from scenes import (read_history, run_scene, run_scene_or_fail,  # noqa: E402
+                    scene_text)
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 
@@ -128,8 +129,9 @@ def disc_load():
             "Output": {"Probe points": "0, -1e-7; 0, 1e-7"}}
 
 
-def bar_against_bvp(work, d, support, z):
+def bar_against_bvp(work, d, support, z, fields=False):
     text = scene_text(si_units(), disc_load(), {
+        "Output": {"VTU interval": 1 if fields else 0},
         "Discretization": {"Cells along x": 12, "Cells along y": 12},
         "Slabs": {"Slabs along y": 2,
                   "Dowels": {"Joints": "y1", "Positions": 3.0,
@@ -150,6 +152,31 @@ def bar_against_bvp(work, d, support, z):
     error = abs(stress - bearing * force) / (bearing * force)
     check(error < 1e-5, f"  bearing stress {stress:.6g} Pa under {force:.4g} N"
           f" against the beam's {bearing * force:.6g} (error {error:.1e})")
+    if fields:
+        dowel_field_file(folder, bearing)
+        two = run_scene(LIFTOFF, work, f"bar_{d}_{z}_np2", text, ranks=2)[0]
+        dowel_field_file(two, bearing)
+
+
+def dowel_field_file(folder, bearing):
+    """The dowels' field file of a static run: the dowel at (0, 0) m with
+    history.csv's force and the beam's bearing stress under it."""
+    import meshio
+    with open(os.path.join(folder, "dowels.pvd")) as f:
+        record = f.read()
+    piece = os.path.join(folder, "dowels_00000.0000.vtu")
+    check('file="dowels_00000.pvtu"' in record and os.path.exists(piece),
+          f"{os.path.basename(folder)}: dowels.pvd names dowels_00000.pvtu")
+    points = meshio.read(piece)
+    force = read_history(folder)["dowel_y1_1 [N]"][-1]
+    got = points.point_data["force"][0]
+    stress = points.point_data["bearing_stress"][0]
+    check(len(points.points) == 1 and np.allclose(points.points[0], 0)
+          and abs(got - force) <= 1e-6 * abs(force)
+          and abs(stress - bearing * abs(force)) <= 1e-5 * bearing * abs(force),
+          f"  its field file: one dowel at (0, 0) m, force {got:.6g} N "
+          f"(history {force:.6g}), bearing stress {stress:.6g} Pa (beam "
+          f"{bearing * abs(force):.6g})")
 
 
 def lte(work, name, slabs):
@@ -182,6 +209,6 @@ def dowels_as_springs(work):
 with tempfile.TemporaryDirectory() as work:
     for d, support, z in [(0.032, 407e9, 0.006), (0.025, 300e9, 0.0),
                           (0.038, 800e9, 0.025)]:
-        bar_against_bvp(work, d, support, z)
+        bar_against_bvp(work, d, support, z, fields=d == 0.032)
     dowels_as_springs(work)
 finish()

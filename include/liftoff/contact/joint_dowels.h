@@ -58,6 +58,19 @@ namespace liftoff
   };
 
 
+  /// A dowel of the modelled part: its name dowel_<joint>_<k> (k from 1
+  /// along the joint, numbered on the full plate), its joint (index in the
+  /// layout's joints), its point, and the modelled part's share of it (1/2
+  /// per symmetry plane through it).
+  struct DowelSite
+  {
+    std::string  name;
+    unsigned int joint;
+    Point<2>     location;
+    double       share;
+  };
+
+
   /**
    * Dowels at points along the joints between slabs: each a spring of
    * stiffness C between the two slabs' w at its point, with a looseness g:
@@ -89,10 +102,10 @@ namespace liftoff
     void
     place_on(const PlateGeometry &geometry);
 
-    /// The dowels' names (none: the scene has no dowels), dowel_<joint>_<k> (k
-    /// from 1 along the joint), in the order of forces().
-    const std::vector<std::string> &
-    names() const;
+    /// The dowels (none: the scene has no dowels), in the order of
+    /// forces().
+    const std::vector<DowelSite> &
+    sites() const;
     /// The stiffness C of each dowel.
     double
     stiffness() const;
@@ -176,13 +189,7 @@ namespace liftoff
     DowelBar                                   dowel_bar;
     double                                     looseness = 0;
 
-    /// Per dowel of the plate: its joint, and its point.
-    std::vector<unsigned int> joint_of;
-    std::vector<Point<2>>     locations;
-    /// The modelled part's share of each dowel: 1/2 per symmetry plane
-    /// through it.
-    std::vector<double>      share_of;
-    std::vector<std::string> dowel_names;
+    std::vector<DowelSite> dowel_sites;
 
     /// A dowel of this rank: its number, the dofs of the two cells, and
     /// [w] at its point as their coefficients.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <liftoff/base/linear_algebra.h>
 #include <liftoff/base/physical_units.h>
 #include <liftoff/output/output.h>
 
@@ -9,6 +10,20 @@
 namespace liftoff
 {
   class TimeHistory;
+
+  /// The dowels' forces at ghosted_u as points of a field file,
+  /// stem.pvtu with its pieces (rank 0 holds the points): at each dowel's
+  /// point its `force` (from the lower slab to the upper one) and, for
+  /// Friberg's bars, the `bearing_stress` under it, in `units`; named by
+  /// `dowel` (its column in history.csv, less the prefix). Collective.
+  void
+  write_dowel_points(const std::string     &directory,
+                     const JointDowels     &dowels,
+                     const LA::MPI::Vector &ghosted_u,
+                     const PhysicalUnits   &units,
+                     const MPI_Comm         comm,
+                     const double           time,
+                     const std::string     &stem);
 
   /**
    * The dowels' forces (Slabs/Dowels): each dowel's force in history.csv

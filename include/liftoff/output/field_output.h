@@ -6,6 +6,7 @@
 
 #include <liftoff/base/archive_types.h>
 #include <liftoff/base/physical_units.h>
+#include <liftoff/contact/joint_dowels.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
@@ -26,11 +27,12 @@ namespace liftoff
    * pressure and the contact status (fraction of each cell's Gauss points in
    * contact), the moments, shear forces and stresses (StressResultants,
    * unless `Moment fields = false`), as VTU (plus PVTU under MPI) every k steps
-   * and a PVD record naming them. The record is replaced at most once a second
-   * of wall time and at flush(), as history.csv is: rewriting it after every
-   * file made the output quadratic in the number of files (2 001 outputs of
-   * Example 2: 34 % of the run's `perf` samples in the record) and cost a file
-   * creation per output.
+   * and a PVD record naming them; with dowels (Slabs/Dowels) their forces
+   * as points beside each (dowels_NNNNN.pvtu, dowels.pvd). The record is
+   * replaced at most once a second of wall time and at flush(), as history.csv
+   * is: rewriting it after every file made the output quadratic in the number
+   * of files (2 001 outputs of Example 2: 34 % of the run's `perf` samples in
+   * the record) and cost a file creation per output.
    */
   class FieldOutput : public Output
   {
@@ -38,9 +40,12 @@ namespace liftoff
     /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
-    /// `plate` is the scene's, whose section the moment fields need.
+    /// `plate` is the scene's, whose section the moment fields need, and
+    /// `dowels` its dowels (none: no dowel files).
     void
-    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
+    parse_parameters(ParameterHandler   &prm,
+                     const MindlinPlate &plate,
+                     const JointDowels  &dowels);
 
     /// Whether step `step` is written (the last step always is, unless the
     /// interval is 0).
@@ -109,6 +114,7 @@ namespace liftoff
     MindlinPlate                                plate;
     PhysicalUnits                               units;
     std::vector<std::pair<double, std::string>> records;
+    const JointDowels                          *dowels = nullptr;
     std::string                                 directory;
     const Discretization                       *discretization = nullptr;
     /// The velocity with ghosts, filled only for the steps written.

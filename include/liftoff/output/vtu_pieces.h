@@ -50,17 +50,18 @@ namespace liftoff
   };
 
 
-  /// The pieces of one output (stem.NNNN.vtu, one per rank) and the .pvtu
+  /// The pieces of one output (stem.NNNN.vtu, one per rank; cells or, with
+  /// dim = 0, points) and the .pvtu
   /// that names them, each written atomically and with liftoff's metadata
   /// (the time as ParaView reads it, the version, and with `has_moments`
   /// the moments' sign convention). Collective; a failure on any rank stops
   /// all of them. Returns the name of the .pvtu.
-  template <int spacedim>
+  template <int dim, int spacedim>
   std::string
-  write_vtu_pieces(const std::string                   &directory,
-                   const DataOutInterface<2, spacedim> &data_out,
-                   const MPI_Comm                       comm,
-                   const double                         time,
-                   const std::string                   &stem,
-                   const bool                           has_moments);
+  write_vtu_pieces(const std::string                     &directory,
+                   const DataOutInterface<dim, spacedim> &data_out,
+                   const MPI_Comm                         comm,
+                   const double                           time,
+                   const std::string                     &stem,
+                   const bool                             has_moments);
 } // namespace liftoff
