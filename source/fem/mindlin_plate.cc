@@ -182,7 +182,13 @@ namespace liftoff
   MindlinPlate::section(const unsigned int slab) const
   {
     if (slab_sections.empty())
-      return {1.0, shear_stiffness(), 1.0, rotary_inertia(), thickness_ratio};
+      return {1.0,
+              shear_stiffness(),
+              1.0,
+              rotary_inertia(),
+              thickness_ratio,
+              1.0,
+              1.0};
     AssertIndexRange(slab, slab_sections.size());
     const double t = slab_sections[slab].thickness;
     const double e = slab_sections[slab].modulus;
@@ -190,7 +196,9 @@ namespace liftoff
             e * t * shear_stiffness(),
             t,
             t * t * t * rotary_inertia(),
-            t * thickness_ratio};
+            t * thickness_ratio,
+            e * t * t,
+            e};
   }
 
 

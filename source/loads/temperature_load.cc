@@ -116,15 +116,11 @@ namespace liftoff
 
 
   void
-  TemperatureLoad::use_plate(const MindlinPlate &plate)
+  TemperatureLoad::use_plate(const MindlinPlate &scene_plate)
   {
-    AssertThrow(!plate.has_slab_sections(),
-                ExcMessage(load_name
-                           + " on slabs of different Slabs/Thicknesses or "
-                             "Modulus ratios: a temperature is modelled on "
-                             "slabs of one section only."));
-    one_plus_nu     = 1 + plate.poisson_ratio;
-    thickness_ratio = plate.thickness_ratio;
+    one_plus_nu     = 1 + scene_plate.poisson_ratio;
+    thickness_ratio = scene_plate.thickness_ratio;
+    plate           = scene_plate;
   }
 
 
@@ -184,10 +180,13 @@ namespace liftoff
       {
         values.reinit(cell);
         cell_rhs = 0;
+        // The slab's D_s (1 + nu) alpha dT / H_s over the plate's.
+        const double section =
+          plate.section(cell->material_id()).thermal_moment;
         for (unsigned int q = 0; q < rule.size(); ++q)
           {
             const double moment =
-              one_plus_nu
+              section * one_plus_nu
               * free_bending_at(values.quadrature_point(q), tau).curvature
               * values.JxW(q);
             for (unsigned int i = 0; i < cell_rhs.size(); ++i)

@@ -39,6 +39,19 @@ namespace liftoff
     }
 
 
+    /// The free bending of the plate's section (FreeBendingField) in a
+    /// slab's: the curvature alpha dT / H_s, with the moment D_s (1 + nu)
+    /// of it, as the curvature whose moment at the plate's D is the same,
+    /// and the stresses of E_s.
+    FreeBending
+    in_section(const FreeBending &thermal, const SectionCoefficients &section)
+    {
+      return {thermal.curvature * section.thermal_moment,
+              thermal.bottom_stress * section.modulus,
+              thermal.top_stress * section.modulus};
+    }
+
+
     void
     add_free_bending(const FreeBending &thermal,
                      const double       nu,
@@ -245,7 +258,10 @@ namespace liftoff
         out[10] = to_stress * m.xy;
         out[11] = to_stress * std::max(m.first, -m.second);
         if (free_bending)
-          add_free_bending(free_bending(points[q]), nu, to_stress, out);
+          add_free_bending(in_section(free_bending(points[q]), section),
+                           nu,
+                           to_stress,
+                           out);
       }
   }
 
@@ -284,7 +300,8 @@ namespace liftoff
         if (free_bending)
           {
             const double free =
-              free_moment(free_bending(fields.points()[q]), nu);
+              free_moment(in_section(free_bending(fields.points()[q]), section),
+                          nu);
             out.m_1[q] += free;
             out.m_2[q] += free;
           }

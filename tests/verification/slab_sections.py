@@ -50,7 +50,11 @@ def same(a, b, what, tolerance=1e-9):
     check(error < tolerance, f"{what}: relative difference {error:.1e}")
 
 
-def thicker_slab_is_alone(work):
+def thicker_slab_is_alone(work, heat=None, tag=""):
+    """The 0.30 m slab in the pair against itself alone; with `heat`, a
+    Loads/Temperature load 1 on both scenes (runs named with `tag`)."""
+    heated = {} if heat is None else {"Loads": {"Temperature load 1": heat}}
+
     def scene(length, shift, extra):
         load_x = -1.0 + shift
         probes = [(-1.0, 0.5), (-1.9, -1.9), (-0.1, 1), (-0.6, 0.2)]
@@ -67,10 +71,10 @@ def thicker_slab_is_alone(work):
                        + ("; 2, 0" if "Slabs" in extra else ""),
                        "Probe quantities": quantities(
                            ("M_xx", "M_xy", "Q_x", "sigma_xx"), moved)}},
-                extra)
-    alone = read_history(run_scene_or_fail(LIFTOFF, work, "alone", scene(
+                heated, extra)
+    alone = read_history(run_scene_or_fail(LIFTOFF, work, "alone" + tag, scene(
         4, 0, {"Units": {"Thickness": 0.30, "Young's modulus": 36e9}})))
-    pair = read_history(run_scene_or_fail(LIFTOFF, work, "sections", scene(
+    pair = read_history(run_scene_or_fail(LIFTOFF, work, "sections" + tag, scene(
         8, -2, {"Slabs": {"Slabs along x": 2, "Thicknesses": "0.30, 0.25",
                           "Modulus ratios": "1.2, 1"}})))
     compared = 0
@@ -78,9 +82,11 @@ def thicker_slab_is_alone(work):
         mine = [c for c in alone if c.startswith(prefix)]
         theirs = [c for c in pair if c.startswith(prefix)][:len(mine)]
         for a, b in zip(mine, theirs):
-            same(alone[a], pair[b], f"0.30 m slab: {b} against alone {a}")
+            same(alone[a], pair[b], f"0.30 m slab{tag}: {b} against alone {a}")
             compared += 1
     check(compared == 20, f"{compared} probe columns compared (20)")
+    if heat is not None:
+        return
     other = pair["w(2;0) [m]"]
     weight = RHO * G * 0.25 / K
     check(np.max(np.abs(other - weight)) < 1e-9 * weight,
@@ -136,5 +142,13 @@ def merged_slabs(base, slabs):
 
 with tempfile.TemporaryDirectory() as work:
     thicker_slab_is_alone(work)
+    # A permanent curl (the slabs settle curled on their weight) and a
+    # pulse of a nonlinear profile: the slab's own alpha dT / H_s, D_s and
+    # E_s.
+    thicker_slab_is_alone(work, {"Magnitude": 12, "Expansion coefficient": 1e-5,
+                                 "Permanent": "true"}, "-curled")
+    thicker_slab_is_alone(work, {"Magnitude": 15, "Expansion coefficient": 1e-5,
+                                 "Profile": "1, 0.3, 0",
+                                 "Time history": "sin(1000*t)"}, "-pulse")
     symmetric_half(work)
 finish()

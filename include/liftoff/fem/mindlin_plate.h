@@ -35,6 +35,11 @@ namespace liftoff
     double rotary;
     /// H_s / L.
     double thickness_ratio;
+    /// A temperature's moment D_s (1 + nu) alpha dT / H_s over the plate's
+    /// D (1 + nu) alpha dT / H: (E_s / E) (H_s / H)^2.
+    double thermal_moment;
+    /// E_s / E, the factor of a temperature's stresses.
+    double modulus;
   };
 
 

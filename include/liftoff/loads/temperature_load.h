@@ -18,7 +18,10 @@ namespace liftoff
    * A Profile through the thickness gives dT as its equivalent linear
    * difference and adds its self-equilibrating stress at the faces. A
    * Permanent one (built-in curl, moisture warping as an equivalent dT)
-   * acts from before tau = 0, as the self-weight does. doc/model.md,
+   * acts from before tau = 0, as the self-weight does. On slabs of other
+   * sections (Slabs/Thicknesses, Modulus ratios) the same dT curls a slab
+   * by alpha dT / H_s with the moment D_s (1 + nu) of it, and stresses it
+   * with E_s. doc/model.md,
    * "Temperature", has the signs.
    */
   class TemperatureLoad : public DistributedLoad
@@ -77,5 +80,7 @@ namespace liftoff
     TemperatureProfile profile;
     /// (1 + nu) and Delta = H / L of the plate (use_plate()).
     double one_plus_nu = 1, thickness_ratio = 1;
+    /// The plate, whose slabs' sections scale the thermal moment.
+    MindlinPlate plate;
   };
 } // namespace liftoff
