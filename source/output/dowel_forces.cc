@@ -75,7 +75,7 @@ namespace liftoff
     flags.time           = time;
     flags.physical_units = symbols;
     points.set_flags(flags);
-    write_vtu_pieces(directory, points, comm, time, stem, false);
+    write_points_file(directory, points, comm, time, stem + ".vtu");
   }
 
 

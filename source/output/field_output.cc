@@ -570,7 +570,7 @@ namespace liftoff
         {
           std::vector<std::pair<double, std::string>> dowel_records;
           for (const auto &[time, master] : records)
-            dowel_records.emplace_back(time, dowel_file_of(master) + ".pvtu");
+            dowel_records.emplace_back(time, dowel_file_of(master) + ".vtu");
           write_file_atomically(directory + "/dowels.pvd",
                                 [&](std::ostream &out) {
                                   DataOutBase::write_pvd_record(out,

@@ -126,14 +126,33 @@ namespace liftoff
   // complete, and the record naming the pieces is written only after every
   // rank has renamed its piece: a viewer never finds a half-written file.
   // Returns the name of the record (the .pvtu).
-  template <int dim, int spacedim>
+  void
+  write_points_file(const std::string            &directory,
+                    const DataOutInterface<0, 2> &points,
+                    const MPI_Comm                comm,
+                    const double                  time,
+                    const std::string            &name)
+  {
+    collective_attempt(comm, "Writing " + name + " failed", [&]() {
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      write_file_atomically(directory + "/" + name, [&](std::ostream &out) {
+        std::ostringstream vtu;
+        points.write_vtu(vtu);
+        out << with_liftoff_metadata(vtu.str(), time, false);
+      });
+    });
+  }
+
+
+  template <int spacedim>
   std::string
-  write_vtu_pieces(const std::string                     &directory,
-                   const DataOutInterface<dim, spacedim> &data_out,
-                   const MPI_Comm                         comm,
-                   const double                           time,
-                   const std::string                     &stem,
-                   const bool                             has_moments)
+  write_vtu_pieces(const std::string                   &directory,
+                   const DataOutInterface<2, spacedim> &data_out,
+                   const MPI_Comm                       comm,
+                   const double                         time,
+                   const std::string                   &stem,
+                   const bool                           has_moments)
   {
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -168,13 +187,6 @@ namespace liftoff
   }
 
 
-  template std::string
-  write_vtu_pieces(const std::string &,
-                   const DataOutInterface<0, 2> &,
-                   const MPI_Comm,
-                   const double,
-                   const std::string &,
-                   const bool);
   template std::string
   write_vtu_pieces(const std::string &,
                    const DataOutInterface<2, 2> &,

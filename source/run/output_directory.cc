@@ -37,8 +37,8 @@ namespace liftoff
     // temporary names (write_file_atomically).
     const std::regex file_names(
       R"((used_parameters\.prm|summary\.txt|summary\.json|history\.csv|)"
-      R"(profiles\.csv|(solution|dowels)\.pvd|(solution|dowels)_[0-9]+\.pvtu|)"
-      R"((solution|dowels)_[0-9]+\.[0-9]+\.vtu|solution\.xdmf|)"
+      R"(profiles\.csv|(solution|dowels)\.pvd|solution_[0-9]+\.pvtu|)"
+      R"(solution_[0-9]+\.[0-9]+\.vtu|dowels_[0-9]+\.vtu|solution\.xdmf|)"
       R"(solution_[0-9]+\.h5))"
       R"((\.tmp)?)");
     const std::regex checkpoint_folders(R"(checkpoint(\.new|\.previous)?)");
@@ -46,7 +46,7 @@ namespace liftoff
       checkpoint_files(R"((checkpoint\.txt|rank_[0-9]+\.bin)(\.tmp)?)");
     /// A field file and its step.
     const std::regex
-      field_file(R"((?:solution|dowels)_([0-9]+)\.(pvtu|[0-9]+\.vtu|h5))");
+      field_file(R"((?:solution|dowels)_([0-9]+)\.(pvtu|[0-9]+\.vtu|vtu|h5))");
 
     bool
     matches(const fs::directory_entry &entry, const std::regex &names)

@@ -11,8 +11,8 @@ namespace liftoff
 {
   class TimeHistory;
 
-  /// The dowels' forces at ghosted_u as points of a field file,
-  /// stem.pvtu with its pieces (rank 0 holds the points): at each dowel's
+  /// The dowels' forces at ghosted_u as points of a field file, stem.vtu
+  /// (from rank 0, which has them all): at each dowel's
   /// point its `force` (from the lower slab to the upper one) and, for
   /// Friberg's bars, the `bearing_stress` under it, in `units`; named by
   /// `dowel` (its column in history.csv, less the prefix). Collective.

@@ -28,7 +28,7 @@ namespace liftoff
    * contact), the moments, shear forces and stresses (StressResultants,
    * unless `Moment fields = false`), as VTU (plus PVTU under MPI) every k steps
    * and a PVD record naming them; with dowels (Slabs/Dowels) their forces
-   * as points beside each (dowels_NNNNN.pvtu, dowels.pvd). The record is
+   * as points beside each (dowels_NNNNN.vtu, dowels.pvd). The record is
    * replaced at most once a second of wall time and at flush(), as history.csv
    * is: rewriting it after every file made the output quadratic in the number
    * of files (2 001 outputs of Example 2: 34 % of the run's `perf` samples in

@@ -50,18 +50,27 @@ namespace liftoff
   };
 
 
-  /// The pieces of one output (stem.NNNN.vtu, one per rank; cells or, with
-  /// dim = 0, points) and the .pvtu
+  /// The pieces of one output (stem.NNNN.vtu, one per rank) and the .pvtu
   /// that names them, each written atomically and with liftoff's metadata
   /// (the time as ParaView reads it, the version, and with `has_moments`
   /// the moments' sign convention). Collective; a failure on any rank stops
   /// all of them. Returns the name of the .pvtu.
-  template <int dim, int spacedim>
+  template <int spacedim>
   std::string
-  write_vtu_pieces(const std::string                     &directory,
-                   const DataOutInterface<dim, spacedim> &data_out,
-                   const MPI_Comm                         comm,
-                   const double                           time,
-                   const std::string                     &stem,
-                   const bool                             has_moments);
+  write_vtu_pieces(const std::string                   &directory,
+                   const DataOutInterface<2, spacedim> &data_out,
+                   const MPI_Comm                       comm,
+                   const double                         time,
+                   const std::string                   &stem,
+                   const bool                           has_moments);
+
+  /// Rank 0's points (the others' are not written) as the file `name`,
+  /// atomically and with liftoff's metadata: one file, which viewers read
+  /// where an empty piece of a .pvtu stops them. Collective.
+  void
+  write_points_file(const std::string            &directory,
+                    const DataOutInterface<0, 2> &points,
+                    const MPI_Comm                comm,
+                    const double                  time,
+                    const std::string            &name);
 } // namespace liftoff
