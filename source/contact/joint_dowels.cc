@@ -474,6 +474,33 @@ namespace liftoff
   }
 
 
+  std::vector<SystemTerm::Coupling>
+  JointDowels::couplings() const
+  {
+    if (dowel_sites.empty())
+      return {};
+    Coupling coupling{bar() == nullptr
+                        ? std::string("Slabs/Dowels/Stiffness")
+                        : std::string("The dowels' stiffness from "
+                                      "Slabs/Dowels/Diameter, Steel modulus "
+                                      "and Modulus of dowel support"),
+                      stiffness(),
+                      {}};
+    discretization->reinit_vector(coupling.diagonal_per_unit);
+    for (const Local &dowel : local)
+      {
+        Vector<double> diagonal(dowel.jump.size());
+        for (unsigned int i = 0; i < dowel.jump.size(); ++i)
+          diagonal[i] =
+            dowel_sites[dowel.index].share * dowel.jump[i] * dowel.jump[i];
+        discretization->constraints.distribute_local_to_global(
+          diagonal, dowel.dofs, coupling.diagonal_per_unit);
+      }
+    coupling.diagonal_per_unit.compress(VectorOperation::add);
+    return {std::move(coupling)};
+  }
+
+
   double
   JointDowels::jump_of(const unsigned int     i,
                        const LA::MPI::Vector &ghosted_u) const

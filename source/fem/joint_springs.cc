@@ -9,6 +9,7 @@
 #include <liftoff/fem/joint_springs.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace liftoff
 {
@@ -224,6 +225,45 @@ namespace liftoff
                                                     springs);
       }
     springs.compress(VectorOperation::add);
+  }
+
+
+  std::vector<SystemTerm::Coupling>
+  JointSprings::couplings() const
+  {
+    const Discretization &disc   = *discretization;
+    const auto           &joints = disc.geometry().slabs().joints();
+    std::vector<Coupling> result;
+    for (unsigned int j = 0; j < joints.size(); ++j)
+      for (const auto &[values, entry, of_rotation] :
+           {std::make_tuple(&shear_stiffness, "Shear stiffness", false),
+            std::make_tuple(&rotational_stiffness,
+                            "Rotational stiffness",
+                            true)})
+        {
+          const double value = stiffness_of(*values, j);
+          if (joints[j].tied || value == 0)
+            continue;
+          Coupling coupling{"Slabs/" + std::string(entry) + " (joint "
+                              + joints[j].name + ")",
+                            value,
+                            {}};
+          disc.reinit_vector(coupling.diagonal_per_unit);
+          for (const Segment &segment : segments)
+            if (segment.joint == j)
+              {
+                Vector<double> diagonal(segment.dofs.size());
+                for (const auto &jump :
+                     of_rotation ? segment.rotation_jump : segment.w_jump)
+                  for (unsigned int i = 0; i < jump.size(); ++i)
+                    diagonal[i] += jump[i] * jump[i];
+                disc.constraints.distribute_local_to_global(
+                  diagonal, segment.dofs, coupling.diagonal_per_unit);
+              }
+          coupling.diagonal_per_unit.compress(VectorOperation::add);
+          result.push_back(std::move(coupling));
+        }
+    return result;
   }
 
 

@@ -10,6 +10,7 @@
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/plate_matrices.h>
 #include <liftoff/fem/point_functional.h>
+#include <liftoff/fem/stiffness_limit.h>
 #include <liftoff/loads/load_set.h>
 #include <liftoff/time/energy_check.h>
 #include <liftoff/time/newmark_integrator.h>
@@ -110,6 +111,9 @@ namespace liftoff
         term->setup(discretization);
       }
     SectionTimer::Scope t(timer, "setup");
+    StiffnessLimit::check(matrices.stiffness,
+                          discretization.constraints,
+                          terms);
     loads.setup(discretization);
     if (!keep_motion)
       for (auto *vector : {&state_.u, &state_.v, &state_.a})
@@ -369,12 +373,60 @@ namespace liftoff
              ? "the cells of Discretization/Mesh file"
              : "Plate/Aspect ratio against Discretization/Cells along x and y")
         + "); use cells closer to square");
+    if (const std::string slab = slab_barely_in_contact(); !slab.empty())
+      causes.push_back(slab);
     if (causes.empty())
       causes.push_back(
         "a very small Foundation/Stiffness under a thin plate (Plate/Thickness "
         "ratio) with free edges; use a stiffer foundation, support an edge "
         "or run a dynamic analysis");
     return as_alternatives(causes);
+  }
+
+
+  std::string
+  TimeStepper::slab_barely_in_contact() const
+  {
+    const SlabLayout &slabs = discretization.geometry().slabs();
+    if (slabs.n_slabs() < 2)
+      return "";
+    const Vector<float> fraction =
+      foundation.diagnostics().contact_fraction_per_cell();
+    // Each slab's area and area in contact; the cut mesh numbers a cell's
+    // material by its slab.
+    std::vector<double> area(2 * slabs.n_slabs(), 0.0);
+    for (const auto &cell : discretization.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          area[2 * cell->material_id()] += cell->measure();
+          area[2 * cell->material_id() + 1] +=
+            fraction[cell->active_cell_index()] * cell->measure();
+        }
+    Utilities::MPI::sum(area, discretization.mpi_communicator, area);
+    unsigned int least    = 0;
+    double       smallest = 2;
+    for (unsigned int s = 0; s < slabs.n_slabs(); ++s)
+      if (area[2 * s] > 0 && area[2 * s + 1] / area[2 * s] < smallest)
+        {
+          smallest = area[2 * s + 1] / area[2 * s];
+          least    = s;
+        }
+    if (smallest >= 0.1)
+      return "";
+    std::string joints;
+    for (const Joint &joint : slabs.joints())
+      if (!joint.tied)
+        joints += (joints.empty() ? "" : ", ") + joint.name;
+    return "slab " + std::to_string(least + 1) + " (of "
+           + std::to_string(slabs.n_slabs())
+           + ", numbered along x first) touches the bed over only "
+           + format_number(100 * smallest)
+           + " % of its area: a slab that its joints (" + joints
+           + ") hold too little tips about a load at its own edge, or floats "
+             "without one, on a bed that does not pull; stiffen the joint "
+             "(Slabs/Shear stiffness, Slabs/Dowels), move the load off the "
+             "joint, give the slabs their weight (Loads/Self weight) or run "
+             "a dynamic analysis";
   }
 
 

@@ -122,6 +122,9 @@ namespace liftoff
     add_force(const TermState &state, LA::MPI::Vector &force) const override;
     double
     energy(const TermState &state) const override;
+    /// The dowels' C, every dowel engaged.
+    std::vector<Coupling>
+    couplings() const override;
 
     unsigned long
     update_status(const LA::MPI::Vector &ghosted_u,

@@ -48,6 +48,9 @@ namespace liftoff
     add_force(const TermState &state, LA::MPI::Vector &force) const override;
     double
     energy(const TermState &state) const override;
+    /// Each joint's AGG and R that are not 0.
+    std::vector<Coupling>
+    couplings() const override;
 
     /// What a joint passes at ghosted_u: the shear force from its lower to
     /// its upper slab, int AGG (w_lower - w_upper) ds over the whole joint

@@ -3,6 +3,9 @@
 #include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
 
+#include <string>
+#include <vector>
+
 namespace liftoff
 {
   class Discretization;
@@ -70,6 +73,23 @@ namespace liftoff
     /// The energy it stores at `state`, on the modelled part (collective).
     virtual double
     energy(const TermState &state) const = 0;
+
+    /// A stiffness by which the term ties unknowns together (a joint's
+    /// springs, the dowels): the entry that gives it as the scene names it,
+    /// its value, and the diagonal entries one unit of it adds to the
+    /// system matrix, every status engaged (StiffnessLimit).
+    struct Coupling
+    {
+      std::string     entry;
+      double          value;
+      LA::MPI::Vector diagonal_per_unit;
+    };
+    /// Its couplings on the current mesh (none by default).
+    virtual std::vector<Coupling>
+    couplings() const
+    {
+      return {};
+    }
 
     /// Its state for a checkpoint, bit for bit (none by default).
     virtual void

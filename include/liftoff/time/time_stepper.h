@@ -260,6 +260,12 @@ namespace liftoff
     /// very soft bed under free edges.
     std::string
     likely_cause_of_ill_conditioning() const;
+    /// The slab of a jointed plate that touches the bed least, if it
+    /// touches it over less than 10 % of its area, as a likely cause: a
+    /// slab the joints hold too little tips about its edge (empty if none;
+    /// a free joint with the load 1e-3 from it: 3.5 %).
+    std::string
+    slab_barely_in_contact() const;
 
     /// The static equilibrium K u + R_f(u) = load into state.u with the
     /// active set, refused (naming `what`) if it does not exist or is not
