@@ -43,7 +43,9 @@ class History:
         with open(path) as f:
             rows = list(csv.reader(f))
         self.header = [h.split(" [")[0] for h in rows[0]]
-        self.rows = [[float(v) for v in r] for r in rows[1:] if r]
+        # An empty cell: a joint's load transfer with the load far.
+        self.rows = [[float(v) if v else math.nan for v in r]
+                     for r in rows[1:] if r]
 
     def column(self, name):
         return self.header.index(name) if name in self.header else None

@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -9,6 +10,7 @@
 #include <liftoff/fem/joint_springs.h>
 
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace liftoff
@@ -106,6 +108,8 @@ namespace liftoff
   {
     discretization = &disc;
     segments.clear();
+    w_dofs                  = DoFTools::extract_dofs(disc.dof_handler,
+                                    ComponentMask({true, false, false}));
     const SlabLayout &slabs = disc.geometry().slabs();
     has_springs             = false;
     for (unsigned int j = 0; j < slabs.joints().size(); ++j)
@@ -317,9 +321,43 @@ namespace liftoff
   }
 
 
-  std::vector<JointSprings::JointPoint>
-  JointSprings::points_along(const LA::MPI::Vector &ghosted_u) const
+  double
+  JointSprings::load_transfer(const double a,
+                              const double b,
+                              const double reference)
   {
+    const double larger = std::max(std::abs(a), std::abs(b));
+    if (larger < far_load_fraction * reference || reference == 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    // + 0.0: a side at rest gives 0, not -0.
+    return (std::abs(a) < std::abs(b) ? a / b : b / a) + 0.0;
+  }
+
+
+  double
+  JointSprings::largest_load_deflection(
+    const LA::MPI::Vector &ghosted_u,
+    const LA::MPI::Vector &ghosted_rest) const
+  {
+    std::vector<double> largest(2, 0.0);
+    for (const auto i : w_dofs)
+      {
+        largest[0] =
+          std::max(largest[0], std::abs(ghosted_u(i) - ghosted_rest(i)));
+        largest[1] = std::max(largest[1], std::abs(ghosted_rest(i)));
+      }
+    Utilities::MPI::max(largest, discretization->mpi_communicator, largest);
+    // A plate at rest drifts by round-off (1e-10 of its settled w over a
+    // run without another load): no load's part.
+    return largest[0] > 1e-6 * largest[1] ? largest[0] : 0.0;
+  }
+
+
+  std::vector<JointSprings::JointPoint>
+  JointSprings::points_along(const LA::MPI::Vector &ghosted_u,
+                             const LA::MPI::Vector &ghosted_rest) const
+  {
+    const double reference = largest_load_deflection(ghosted_u, ghosted_rest);
     std::vector<JointPoint> points;
     for (const Segment &segment : segments)
       {
@@ -328,13 +366,18 @@ namespace liftoff
           {
             const auto [here, there, root] =
               sides(segment, segment.w_jump[q], ghosted_u);
+            const auto [here_0, there_0, root_0] =
+              sides(segment, segment.w_jump[q], ghosted_rest);
             const double lower = (segment.sign > 0 ? here : there) / root;
             const double upper = (segment.sign > 0 ? there : here) / root;
             points.push_back({segment.joint,
                               segment.points[q],
                               lower,
                               upper,
-                              agg * (lower - upper)});
+                              load_transfer((here - here_0) / root,
+                                            (there - there_0) / root,
+                                            reference),
+                              agg * (lower - upper) + 0.0});
           }
       }
     return points;
@@ -342,27 +385,31 @@ namespace liftoff
 
 
   std::vector<JointSprings::Transfer>
-  JointSprings::transfer(const LA::MPI::Vector &ghosted_u) const
+  JointSprings::transfer(const LA::MPI::Vector &ghosted_u,
+                         const LA::MPI::Vector &ghosted_rest) const
   {
     const unsigned int n_joints =
       discretization->geometry().slabs().joints().size();
     std::vector<double> force(n_joints, 0.0);
-    // Per joint: the largest |w| of a side, and the ratio of the other
-    // side's w to it there.
-    std::vector<std::pair<double, double>> loaded(n_joints, {0.0, 1.0});
+    // Per joint: the largest change of w of a side since rest, and the
+    // other side's change there.
+    std::vector<std::array<double, 2>> loaded(n_joints, {{0.0, 0.0}});
     for (const Segment &segment : segments)
       {
         const double agg = stiffness_of(shear_stiffness, segment.joint);
         for (const std::vector<double> &jump : segment.w_jump)
           {
             const auto [here, there, root] = sides(segment, jump, ghosted_u);
+            const auto [here_0, there_0, root_0] =
+              sides(segment, jump, ghosted_rest);
             force[segment.joint] += segment.sign * agg * (here - there) * root;
-            const double larger = std::max(std::abs(here), std::abs(there));
-            if (larger / root > loaded[segment.joint].first)
-              loaded[segment.joint] = {larger / root,
-                                       std::abs(here) < std::abs(there)
-                                         ? here / there
-                                         : there / here};
+            const double a = (here - here_0) / root,
+                         b = (there - there_0) / root;
+            if (std::max(std::abs(a), std::abs(b))
+                > std::abs(loaded[segment.joint][0]))
+              loaded[segment.joint] = std::abs(a) > std::abs(b)
+                                        ? std::array<double, 2>{{a, b}}
+                                        : std::array<double, 2>{{b, a}};
           }
       }
     const MPI_Comm comm = discretization->mpi_communicator;
@@ -374,18 +421,21 @@ namespace liftoff
       for (const unsigned int axis : geometry.symmetry_axes())
         if (axis != geometry.slabs().joints()[j].normal_axis)
           force[j] *= 2;
-    const auto            all = Utilities::MPI::all_gather(comm, loaded);
+    const double reference = largest_load_deflection(ghosted_u, ghosted_rest);
+    const auto   all       = Utilities::MPI::all_gather(comm, loaded);
     std::vector<Transfer> result(n_joints);
     for (unsigned int j = 0; j < n_joints; ++j)
       {
-        result[j].shear_force = force[j];
-        double largest        = 0;
+        result[j].shear_force = force[j] + 0.0;
+        std::array<double, 2> largest{{0.0, 0.0}};
         for (const auto &rank : all)
-          if (rank[j].first > largest)
-            {
-              largest              = rank[j].first;
-              result[j].efficiency = rank[j].second;
-            }
+          if (std::abs(rank[j][0]) > std::abs(largest[0]))
+            largest = rank[j];
+        // A tied joint is one slab: it transfers all.
+        result[j].efficiency =
+          geometry.slabs().joints()[j].tied
+            ? 1.0
+            : load_transfer(largest[0], largest[1], reference);
       }
     return result;
   }

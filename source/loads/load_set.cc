@@ -116,6 +116,32 @@ namespace liftoff
   }
 
 
+  namespace
+  {
+    bool
+    is_of_rest(const Load &load)
+    {
+      return load.is_permanent() || load.bends_freely();
+    }
+  } // namespace
+
+
+  bool
+  LoadSet::has_rest_loads() const
+  {
+    return std::any_of(loads.begin(), loads.end(), [](const auto &load) {
+      return is_of_rest(*load);
+    });
+  }
+
+
+  void
+  LoadSet::assemble_rest(LA::MPI::Vector &load_vector) const
+  {
+    assemble_selected(0.0, is_of_rest, load_vector);
+  }
+
+
   bool
   LoadSet::is_empty() const
   {

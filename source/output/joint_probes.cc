@@ -6,6 +6,7 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/joint_springs.h>
 #include <liftoff/fem/plate_geometry.h>
 #include <liftoff/output/joint_probes.h>
 #include <liftoff/output/resultant_sweep.h>
@@ -17,17 +18,6 @@
 
 namespace liftoff
 {
-  namespace
-  {
-    /// The smaller side over the larger (1 where both are 0).
-    double
-    transfer(const double a, const double b)
-    {
-      const bool   a_larger = std::abs(a) > std::abs(b);
-      const double larger   = a_larger ? a : b;
-      return larger == 0 ? 1.0 : (a_larger ? b : a) / larger;
-    }
-  } // namespace
 
 
   void
@@ -46,9 +36,13 @@ namespace liftoff
       "load transfer lte(x;y) (the smaller over the larger), the face "
       "stress along the joint on each side (sigma_yy on a joint x = const, "
       "sigma_xx on y = const), sigma_lower(x;y) and sigma_upper(x;y), and "
-      "its transfer lte_sigma(x;y), at every step. In a time integration "
-      "the transfers are of the changes since tau = 0, the plate at rest "
-      "under its weight, as a deflectometer measures."
+      "its transfer lte_sigma(x;y), at every step. The transfers are of "
+      "the load's part, the changes since the plate at rest, as a "
+      "deflectometer measures: since tau = 0 in a time integration (the "
+      "plate settled under its weight and permanent loads), since the "
+      "equilibrium under the weight and the temperature loads alone in a "
+      "static analysis; empty where the larger side moves by less than a "
+      "tenth of the plate's largest change (the load far from the joint)."
         + quantity("position"));
   }
 
@@ -173,13 +167,14 @@ namespace liftoff
 
 
   std::vector<double>
-  JointProbes::values(const StepData &step) const
+  JointProbes::sides_at(const LA::MPI::Vector &ghosted_u,
+                        const StepData        &step) const
   {
     const Discretization  &disc = *discretization;
     const StressResultants resultants(*plate,
                                       disc.mapping(),
                                       disc.element().shear_integration(),
-                                      step.state.ghosted_u,
+                                      ghosted_u,
                                       step.resultants.free_bending());
     std::vector<double>    result(6 * probes.size(), 0.0);
     for (const Located &l : located)
@@ -189,7 +184,7 @@ namespace liftoff
           disc.geometry().slabs().joints()[probe.joint].normal_axis == 0
             ? "sigma_yy"
             : "sigma_xx");
-        double w[2], s[2];
+        double *out = &result[6 * l.probe];
         for (unsigned int side = 0; side < 2; ++side)
           {
             const auto    &cell = side == 0 ? l.lower : l.upper;
@@ -203,25 +198,41 @@ namespace liftoff
             fe_values.reinit(cell);
             std::vector<Vector<double>> computed, u(1, Vector<double>(3));
             resultants.evaluate(cell, fe_values, computed);
-            fe_values.get_function_values(step.state.ghosted_u, u);
-            w[side] = u[0][0];
-            s[side] = computed[0][sigma];
+            fe_values.get_function_values(ghosted_u, u);
+            out[side]     = u[0][0];
+            out[3 + side] = computed[0][sigma];
           }
-        // The ratios follow once the rest state is known.
-        double *out = &result[6 * l.probe];
-        out[0]      = w[0];
-        out[1]      = w[1];
-        out[3]      = s[0];
-        out[4]      = s[1];
       }
     Utilities::MPI::sum(result, disc.mpi_communicator, result);
-    const Clock &clock = step.state.clock;
-    if (clock.step() == 0 && clock.n_steps() > 0)
-      rest = result;
+    return result;
+  }
+
+
+  std::vector<double>
+  JointProbes::values(const StepData &step) const
+  {
+    std::vector<double> result = sides_at(step.state.ghosted_u, step);
+    if (step.state.clock.step() == 0)
+      rest = sides_at(step.state.ghosted_rest, step);
     rest.resize(result.size(), 0.0);
-    for (unsigned int k = 0; k < result.size(); k += 3)
-      result[k + 2] =
-        transfer(result[k] - rest[k], result[k + 1] - rest[k + 1]);
+    const double reference =
+      step.joints.largest_load_deflection(step.state.ghosted_u,
+                                          step.state.ghosted_rest);
+    for (unsigned int k = 0; k < result.size(); k += 6)
+      {
+        result[k + 2] = JointSprings::load_transfer(result[k] - rest[k],
+                                                    result[k + 1] - rest[k + 1],
+                                                    reference);
+        // The stress's ratio where the deflection's has a meaning.
+        const double a = result[k + 3] - rest[k + 3];
+        const double b = result[k + 4] - rest[k + 4];
+        result[k + 5] =
+          std::isnan(result[k + 2])
+            ? result[k + 2]
+            : JointSprings::load_transfer(a,
+                                          b,
+                                          std::max(std::abs(a), std::abs(b)));
+      }
     return result;
   }
 

@@ -25,9 +25,13 @@ namespace liftoff
       "are integrated at, the distance s along it from its lower end (on "
       "the rectangle the plate's edge), w of the lower (left, bottom) and the "
       "upper "
-      "slab, their load transfer (the smaller w over the larger) and the "
-      "shear force per length the aggregate interlock passes from the "
-      "lower slab to the upper one.");
+      "slab, the load transfer of the load's part (the smaller change of w "
+      "since the plate at rest over the larger: since tau = 0 in a time "
+      "integration, since the equilibrium under the weight and the "
+      "temperature loads alone in a static analysis; empty where the "
+      "larger moves by less than a tenth of the plate's largest change, "
+      "the load being far) and the shear force per length the aggregate "
+      "interlock passes from the lower slab to the upper one.");
   }
 
 
@@ -90,20 +94,26 @@ namespace liftoff
     if (!is_on || !times.is_due(tau, step.state.clock.time_step()))
       return;
     // Rank 0 writes every rank's points: joint, x, y, w_lower, w_upper,
-    // shear.
+    // lte, shear.
     std::vector<double> mine;
-    for (const auto &p : step.joints.points_along(step.state.ghosted_u))
-      mine.insert(
-        mine.end(),
-        {double(p.joint), p.x[0], p.x[1], p.w_lower, p.w_upper, p.shear});
+    for (const auto &p : step.joints.points_along(step.state.ghosted_u,
+                                                  step.state.ghosted_rest))
+      mine.insert(mine.end(),
+                  {double(p.joint),
+                   p.x[0],
+                   p.x[1],
+                   p.w_lower,
+                   p.w_upper,
+                   p.lte,
+                   p.shear});
     const MPI_Comm comm = discretization->mpi_communicator;
     // Empty on the other ranks, whose stream discards what they write.
     const auto all = Utilities::MPI::gather(comm, mine, 0);
 
     const auto &joints = discretization->geometry().slabs().joints();
-    std::vector<std::array<double, 7>> rows;
+    std::vector<std::array<double, 8>> rows;
     for (const auto &rank : all)
-      for (std::size_t k = 0; k + 5 < rank.size(); k += 6)
+      for (std::size_t k = 0; k + 6 < rank.size(); k += 7)
         {
           const unsigned int j    = rank[k];
           const unsigned int axis = 1 - joints[j].normal_axis;
@@ -113,7 +123,8 @@ namespace liftoff
                            rank[k + 2],
                            rank[k + 3],
                            rank[k + 4],
-                           rank[k + 5]}});
+                           rank[k + 5],
+                           rank[k + 6]}});
         }
     std::sort(rows.begin(), rows.end());
 
@@ -123,17 +134,16 @@ namespace liftoff
     std::ostream &out    = file.stream();
     out << std::setprecision(12);
     // The shear + 0.0: a free joint's -0 (0 times a negative jump) is
-    // written as 0.
+    // written as 0. An lte far from the load is NaN, written empty.
     for (const auto &r : rows)
       {
-        const double larger  = std::abs(r[4]) > std::abs(r[5]) ? r[4] : r[5];
-        const double smaller = std::abs(r[4]) > std::abs(r[5]) ? r[5] : r[4];
         out << units.scale(Quantity::time) * tau << ','
             << joints[static_cast<unsigned int>(r[0])].name << ','
             << length * r[1] << ',' << length * r[2] << ',' << length * r[3]
-            << ',' << w * r[4] << ',' << w * r[5] << ','
-            << (larger == 0 ? 1.0 : smaller / larger) << ','
-            << (units.scale(Quantity::shear_force) * r[6] + 0.0) << '\n';
+            << ',' << w * r[4] << ',' << w * r[5] << ',';
+        if (!std::isnan(r[6]))
+          out << r[6];
+        out << ',' << (units.scale(Quantity::shear_force) * r[7] + 0.0) << '\n';
       }
     file.flush();
   }

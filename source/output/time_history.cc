@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 
 #include <iomanip>
 #include <limits>
@@ -547,7 +548,8 @@ namespace liftoff
         group.push_back({"lte_" + name, PhysicalUnits::Quantity::number});
       }
     columns.add(group, [this](const StepData &step) {
-      const auto          transfer = step.joints.transfer(step.state.ghosted_u);
+      const auto transfer =
+        step.joints.transfer(step.state.ghosted_u, step.state.ghosted_rest);
       std::vector<double> values;
       for (const auto &joint : joints)
         {
@@ -846,6 +848,10 @@ namespace liftoff
     void
     put(std::ostream &out, const double value)
     {
+      // NaN: not defined at this row (a joint's load transfer with the
+      // load far from it), an empty cell.
+      if (std::isnan(value))
+        return;
       char       text[32];
       const auto end = std::to_chars(std::begin(text),
                                      std::end(text),

@@ -116,7 +116,7 @@ namespace liftoff
                           terms);
     loads.setup(discretization);
     if (!keep_motion)
-      for (auto *vector : {&state_.u, &state_.v, &state_.a})
+      for (auto *vector : {&state_.u, &state_.v, &state_.a, &state_.rest})
         discretization.reinit_vector(*vector);
     for (auto *vector : {&state_.load,
                          &state_.balance,
@@ -128,9 +128,11 @@ namespace liftoff
                          &dissipative_force})
       discretization.reinit_vector(*vector);
     discretization.reinit_ghosted_vector(state_.ghosted_u);
+    discretization.reinit_ghosted_vector(state_.ghosted_rest);
     discretization.reinit_ghosted_vector(ghosted_scratch);
-    state_.ghosted_u   = state_.u;
-    largest_eigenvalue = 0;
+    state_.ghosted_u    = state_.u;
+    state_.ghosted_rest = state_.rest;
+    largest_eigenvalue  = 0;
     if (controller.is_enabled())
       w_entries = DoFTools::extract_dofs(discretization.dof_handler,
                                          ComponentMask({true, false, false}));
@@ -492,6 +494,7 @@ namespace liftoff
   ActiveSetIteration::Result
   TimeStepper::solve_static_analysis(const StopCheck &stop_if_requested)
   {
+    solve_rest_state();
     LA::MPI::Vector &load = state_.load;
     assemble_loads(0, 0.0, load);
     const auto result =
@@ -512,6 +515,58 @@ namespace liftoff
     require_finite_state("an energy", {}, state_.energies.values(), load);
     check_static_equilibrium(load);
     return result;
+  }
+
+
+  void
+  TimeStepper::set_rest_state()
+  {
+    state_.rest         = state_.u;
+    state_.ghosted_rest = state_.rest;
+  }
+
+
+  void
+  TimeStepper::solve_rest_state()
+  {
+    // Only the joints' load transfer reads it: a plate of one slab is spared
+    // the second solve.
+    if (!loads.has_rest_loads()
+        || !discretization.geometry().slabs().is_jointed())
+      return;
+    SectionTimer::Scope t(timer, "permanent loads");
+    loads.assemble_rest(scratch);
+    try
+      {
+        solve_static(scratch,
+                     "The static equilibrium under the weight and the "
+                     "temperature loads alone, from which the joints' load "
+                     "transfer is measured",
+                     "the equilibrium under the weight and the temperature "
+                     "loads",
+                     "",
+                     // A stop request is answered by the analysis's own
+                     // solve, which follows: here it would be taken for
+                     // a failure of the rest state.
+                     [](const std::string &) {});
+      }
+    catch (const ExcMessage &e)
+      {
+        // Curl without weight on a bed that does not pull has no rest: the
+        // transfer is then of the whole deflection. The failure is
+        // decided collectively, so every rank is here.
+        state_.u = 0;
+        rest_warning =
+          "The weight and the temperature loads alone have no static "
+          "equilibrium ("
+          + message_of(e)
+          + "); the joints' load transfer (lte columns, joints.csv) is of "
+            "the whole deflection, curl and weight included.";
+        if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator)
+            == 0)
+          std::cerr << "liftoff: warning: " << rest_warning << std::endl;
+      }
+    set_rest_state();
   }
 
 
@@ -552,7 +607,7 @@ namespace liftoff
             state_.ghosted_u))
         return false;
       mesh_refinement.execute(discretization,
-                              {&state_.u, &state_.v, &state_.a});
+                              {&state_.u, &state_.v, &state_.a, &state_.rest});
     }
     ++n_new_meshes;
     build_on_current_mesh(true);
@@ -670,6 +725,7 @@ namespace liftoff
       SectionTimer::Scope t(timer, "initial acceleration");
       equilibrate(0, 0.0, "the initial acceleration");
     }
+    set_rest_state();
     // The energies with the contact status of the initial state (the shear
     // layer's is taken over it), before the first iterate replaces it.
     state_.energies         = energies();
@@ -978,9 +1034,11 @@ namespace liftoff
   std::string
   TimeStepper::warnings() const
   {
-    if (mesh_warning.empty() || warning.empty())
-      return mesh_warning + warning;
-    return mesh_warning + " " + warning;
+    std::string all;
+    for (const std::string *text : {&mesh_warning, &rest_warning, &warning})
+      if (!text->empty())
+        all += (all.empty() ? "" : " ") + *text;
+    return all;
   }
 
 

@@ -36,11 +36,12 @@ def run_scene_or_fail(liftoff, work, name, text):
 
 def read_history(folder):
     """FOLDER/history.csv as columns (numpy arrays) by name, in the file's
-    order."""
+    order; an empty cell (a load transfer with the load far from its
+    joint) is NaN."""
     path = os.path.join(folder, "history.csv")
     with open(path) as f:
         header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    data = np.genfromtxt(path, delimiter=",", skip_header=1, ndmin=2)
     return {name: data[:, k] for k, name in enumerate(header)}
 
 

@@ -52,12 +52,29 @@ namespace liftoff
     std::vector<Coupling>
     couplings() const override;
 
+    /// Where the larger side moves by less than this fraction of the
+    /// plate's largest load deflection, the load is too far from the joint
+    /// for a load transfer to mean anything (a truck 5 m from a joint:
+    /// ratios of -0.57 and 0.43), and none is given.
+    static constexpr double far_load_fraction = 0.1;
+
+    /// The load transfer of the changes a and b of w since rest on the two
+    /// sides of a joint, the smaller over the larger; NaN (written empty)
+    /// where the larger is below far_load_fraction of `reference`, the
+    /// plate's largest change of w, or `reference` is 0.
+    static double
+    load_transfer(const double a, const double b, const double reference);
+    /// The largest |w - w_rest| over the plate, or 0 where it is below
+    /// 1e-6 of the largest |w_rest|, round-off (collective).
+    double
+    largest_load_deflection(const LA::MPI::Vector &ghosted_u,
+                            const LA::MPI::Vector &ghosted_rest) const;
+
     /// What a joint passes at ghosted_u: the shear force from its lower to
     /// its upper slab, int AGG (w_lower - w_upper) ds over the whole joint
-    /// (its mirror images included), and its load
-    /// transfer efficiency w_unloaded / w_loaded at the Gauss point of the
-    /// joint where the larger |w| of its two sides is largest (1 where
-    /// the joint does not move).
+    /// (its mirror images included), and its load transfer efficiency of
+    /// the load's part, w - w_rest (load_transfer()), at the Gauss point
+    /// of the joint where the larger change of its two sides is largest.
     struct Transfer
     {
       double shear_force = 0;
@@ -65,23 +82,27 @@ namespace liftoff
     };
     /// One per joint of the layout (tied ones: 0 and 1; collective).
     std::vector<Transfer>
-    transfer(const LA::MPI::Vector &ghosted_u) const;
+    transfer(const LA::MPI::Vector &ghosted_u,
+             const LA::MPI::Vector &ghosted_rest) const;
 
-    /// w on both sides of a joint at a Gauss point of its faces, and the
-    /// aggregate interlock's shear force per length there, from the lower
-    /// slab to the upper one.
+    /// w on both sides of a joint at a Gauss point of its faces, their
+    /// load transfer (load_transfer() with the plate's largest change),
+    /// and the aggregate interlock's shear force per length there, from
+    /// the lower slab to the upper one.
     struct JointPoint
     {
       unsigned int joint;
       Point<2>     x;
       double       w_lower;
       double       w_upper;
+      double       lte;
       double       shear;
     };
     /// The points of the joints' pieces this rank integrates (not
     /// collective).
     std::vector<JointPoint>
-    points_along(const LA::MPI::Vector &ghosted_u) const;
+    points_along(const LA::MPI::Vector &ghosted_u,
+                 const LA::MPI::Vector &ghosted_rest) const;
 
   private:
     std::vector<double> shear_stiffness;
@@ -99,7 +120,9 @@ namespace liftoff
       std::vector<std::vector<double>>     rotation_jump;
       std::vector<Point<2>>                points;
     };
-    std::vector<Segment>  segments;
+    std::vector<Segment> segments;
+    /// The locally owned entries of w.
+    IndexSet              w_dofs;
     const Discretization *discretization = nullptr;
     LA::MPI::SparseMatrix springs;
     bool                  has_springs = false;

@@ -72,6 +72,14 @@ namespace liftoff
     void
     assemble_permanent(LA::MPI::Vector &load_vector) const;
 
+    /// Some load is of the plate at rest: permanent, or a temperature load
+    /// (the curl a deflectometer's reading starts from).
+    bool
+    has_rest_loads() const;
+    /// The load vector of those loads at tau = 0.
+    void
+    assemble_rest(LA::MPI::Vector &load_vector) const;
+
     /// Where the point and patch loads act in n_windows consecutive
     /// windows of time from tau, each `window` long: for each window, boxes
     /// in plate coordinates (a point load that stands: the box of its

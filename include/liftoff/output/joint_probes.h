@@ -22,10 +22,12 @@ namespace liftoff
    * the joint (sigma_yy on a joint x = const, sigma_xx on y = const: the
    * edge stress, the one that cracks a slab at its joint), and the two
    * ratios, unloaded side over loaded side: the deflection LTE and the
-   * stress LTE, as columns of history.csv at every step. In a time
-   * integration the ratios are of the changes since the plate's rest at
-   * tau = 0 (settled under its weight and permanent loads), as a
-   * deflectometer's geophones measure; the w and stress columns are the
+   * stress LTE, as columns of history.csv at every step. The ratios are
+   * of the changes since the plate at rest (PlateState::ghosted_rest:
+   * tau = 0 of a time integration, settled under its weight and permanent
+   * loads; the weight and the curl alone in a static analysis), as a
+   * deflectometer's geophones measure, and empty where the load is far
+   * (JointSprings::load_transfer()); the w and stress columns are the
    * totals. Each side is
    * evaluated in its own cell, so a point on a joint has two values and
    * their ratio, where a probe of w there would read whichever cell is
@@ -81,10 +83,14 @@ namespace liftoff
     std::vector<Located>  located;
     const Discretization *discretization = nullptr;
     const MindlinPlate   *plate          = nullptr;
-    /// w and the stress of both sides at rest, per point (a time
-    /// integration's tau = 0; zeros otherwise).
+    /// w and the stress of both sides at rest, per point, taken at step 0.
     mutable std::vector<double> rest;
 
+    /// w and the stress of both sides at each point for the displacement
+    /// `ghosted_u`, in the columns' order with the ratios left 0
+    /// (collective).
+    std::vector<double>
+    sides_at(const LA::MPI::Vector &ghosted_u, const StepData &step) const;
     /// The columns' values at a step (collective).
     std::vector<double>
     values(const StepData &step) const;

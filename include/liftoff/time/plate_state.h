@@ -27,6 +27,13 @@ namespace liftoff
     LA::MPI::Vector u, v, a;
     /// u with ghost entries, for evaluation at quadrature points.
     LA::MPI::Vector ghosted_u;
+    /// The plate at rest, from which the joints' load transfer is
+    /// measured (as a deflectometer measures): u at tau = 0 in a time
+    /// integration (settled under the loads that act from before it), and
+    /// in a static analysis the equilibrium under the weight and the
+    /// temperature loads alone (0 if they have none). Owned, and with
+    /// ghosts.
+    LA::MPI::Vector rest, ghosted_rest;
     LA::MPI::Vector load, balance;
     double          work = 0;
     /// Energy the foundation's dashpots have taken out since tau = 0.
@@ -39,10 +46,13 @@ namespace liftoff
     serialize(Archive &archive, const unsigned int)
     {
       archive &clock &work &dissipated &energies &initial_energies;
-      for (LA::MPI::Vector *vector : {&u, &v, &a, &load, &balance})
+      for (LA::MPI::Vector *vector : {&u, &v, &a, &load, &balance, &rest})
         serialize_entries(archive, *vector);
       if constexpr (Archive::is_loading::value)
-        ghosted_u = u;
+        {
+          ghosted_u    = u;
+          ghosted_rest = rest;
+        }
     }
   };
 } // namespace liftoff

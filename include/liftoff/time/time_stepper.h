@@ -205,7 +205,9 @@ namespace liftoff
     IndexSet    w_entries;
     std::string warning;
     /// The mesh's area check, apart: a later warning must not hide it.
-    std::string               mesh_warning;
+    std::string mesh_warning;
+    /// A static analysis whose rest state has no equilibrium.
+    std::string               rest_warning;
     StaticEquilibrium::Result equilibrium;
 
     /// Matrices, foundation points, loads and the layout of every vector
@@ -213,6 +215,14 @@ namespace liftoff
     /// false. The one list of what a mesh change rebuilds.
     void
     build_on_current_mesh(const bool keep_motion);
+    /// The plate at rest is the current state (tau = 0 of a time
+    /// integration, or the static equilibrium of solve_rest_state()).
+    void
+    set_rest_state();
+    /// In a static analysis of a jointed plate: the equilibrium under the
+    /// weight and the temperature loads alone, as the rest state.
+    void
+    solve_rest_state();
 
     /// The largest stable time step of the scheme (infinite if it is
     /// unconditionally stable).
