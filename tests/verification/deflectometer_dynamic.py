@@ -105,7 +105,8 @@ def backcalc(measured, output, *options):
 
 def sensor_residuals(stdout):
     table = stdout.split("rms residual over time [um]\n", 1)[1]
-    return [float(line.split()[3]) for line in table.splitlines()]
+    return [float(line.split()[3]) for line in table.splitlines()
+            if line.startswith("  ")]
 
 
 def noisy_histories(seed):
