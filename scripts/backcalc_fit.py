@@ -83,9 +83,9 @@ class RunCache:
 
 # A condition number of the column-scaled Jacobian above this leaves some
 # combination of the values unfixed: 1 % of noise moves it by 10 times its
-# size or more, and the differences' own error (liftoff's round-off over a
-# step of 1e-5, about 1e-5) caps what a singular Jacobian measures at
-# about 1e5.
+# size or more. The differences' round-off keeps a singular Jacobian's
+# number finite (2.1e6 for histories of one time); well-posed fits measure
+# 5 to 51.
 CONDITION_LIMIT = 1e3
 # The residuals are called larger than the data's scatter when chi^2 that
 # large comes less than once in a thousand fits of the right model.

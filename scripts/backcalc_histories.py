@@ -18,7 +18,8 @@ from fwd_histories import (HistoryError, check_window, read_histories,
 
 # The times with a deflection the fit needs: at one time the sensors give
 # one basin, in which the bed's springs and its dashpots act as one
-# stiffness (over the first step, k + c / dt); a second time parts them
+# stiffness (over the first step k + c gamma / (beta dt), k + 2 c / dt
+# with the default Newmark); a second time parts them
 # (then the conditioning judges how well).
 TIMES_NEEDED = 2
 
@@ -41,7 +42,7 @@ def measured_histories(args):
         raise BackcalcError(
             "%s holds %d time%s with a deflection (%s); k and c need %d at "
             "least: at one time the bed's springs and dashpots act as one "
-            "stiffness, k + c / dt over the first step"
+            "stiffness, k + 2 c / dt over the first step"
             % (args.measured, len(moved), "" if len(moved) == 1 else "s",
                ", ".join("%g s" % t for t in moved) or "none",
                TIMES_NEEDED))

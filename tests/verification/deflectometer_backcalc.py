@@ -22,7 +22,7 @@ slab):
   ms half-sine (steps of 2 ms) fitted with the static template gives E
   +6.5 % and k -38 %, many of their error bars (1.1 %, 0.7 %) off; the
   tool must warn that the basin is a pulse's (its t_peak column) and, for
-  a basin precise to --noise 1e-7 m, that the residuals (0.49 um RMS) are
+  a basin precise to --noise 1e-7 m, that the residuals (0.48 um RMS) are
   far above that scatter;
 - the basin in mm labelled as m: the runs end `completed with warnings`
   (|w| / h = 0.49), which the tool must say;

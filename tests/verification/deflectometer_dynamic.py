@@ -23,8 +23,8 @@ samples).
   not increasing, times after the pulse or beyond the scene's End time,
   a negative thickness, an unknown option, a static scene, histories of
   one time with a deflection (the first two rows of the truth: k and c
-  act as one stiffness there; before, fitted to k = 1.5e8 +- 0.18 % and
-  c = 0, exit 0);
+  act as one stiffness there; before, fitted to k = 1.5e8 +- 0.00037 %
+  and c = 0, exit 0);
 - two times suffice: the first three rows (0, 2, 4 ms) fitted back to
   1e-6, the scaled Jacobian's condition number below 1e3 (50.6);
 - the conditioning's judgement against a hand calculation: the Jacobian
