@@ -8,8 +8,8 @@ import os
 import numpy as np
 
 import backcalc_fit
-from backcalc_scene import (BackcalcError, SceneRuns, scene_force,
-                            scene_values)
+from backcalc_scene import (BackcalcError, SceneRuns, make_output,
+                            scene_force, scene_values)
 from fwd_histories import HistoryError, number, read_rows
 
 INCH = 0.0254
@@ -29,7 +29,8 @@ def area_method(offsets, deflections, force, thickness, poisson):
                                 "(+- 5 mm); the basin has %s mm"
                                 % (1e3 * target, ", ".join(
                                     "%g" % (1e3 * r) for r in offsets)))
-        d.append(deflections[near[0]])
+        # Python's floats: a huge reading gives inf, not numpy's warning.
+        d.append(float(deflections[near[0]]))
     if d[0] <= 0:
         raise BackcalcError("the deflection under the load, %g m, must be "
                             "> 0" % d[0])
@@ -182,7 +183,7 @@ def backcalc_basin(args):
     basin = Basin(args.measured)
     offsets, measured = basin.offsets, basin.peaks
     start = area_start(args, offsets, measured)
-    os.makedirs(args.output, exist_ok=True)
+    make_output(args.output)
     parameters = modulus_parameters(*start)
     result = backcalc_fit.fit(parameters, basin_model(args, offsets),
                               measured, measured[0], args.tolerance,

@@ -12,7 +12,7 @@ import numpy as np
 import backcalc_basin
 import backcalc_fit
 from backcalc_scene import (DEFLECTOMETER, BackcalcError, SceneRuns,
-                            scene_number, scene_values)
+                            make_output, scene_number, scene_values)
 from fwd_histories import (HistoryError, check_window, read_histories,
                            write_histories)
 
@@ -152,7 +152,7 @@ def backcalc_histories(args):
     times, offsets, measured = measured_histories(args)
     start = backcalc_basin.area_start(args, offsets, measured.max(axis=0))
     fitted_parameters = parameters(args, start)
-    os.makedirs(args.output, exist_ok=True)
+    make_output(args.output)
     model = Flat(history_model(args, times, offsets))
     scatter = backcalc_fit.scatter_of(args.noise,
                                       np.abs(measured).max(axis=0))

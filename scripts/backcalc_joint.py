@@ -9,7 +9,6 @@ then AGG is fitted to the LTE by least squares over liftoff runs of the
 scene."""
 
 import math
-import os
 
 import numpy as np
 
@@ -17,7 +16,8 @@ import backcalc_fit
 import lte_fits
 from backcalc_basin import read_basin
 from backcalc_scene import (DEFLECTOMETER, BackcalcError, SceneRuns,
-                            scene_joints, scene_number, scene_values)
+                            make_output, scene_joints, scene_number,
+                            scene_values)
 
 
 def sensor_index(offsets, target):
@@ -140,7 +140,7 @@ def backcalc_joint(args):
     agg0, kl = start(args, lte)
     print("the joint %s's Shear stiffness is fitted; the others keep the "
           "scene's (%s N/m^2)" % (joint.name, joint.others()), flush=True)
-    os.makedirs(args.output, exist_ok=True)
+    make_output(args.output)
     parameters = [backcalc_fit.Parameter("AGG", "N/m^2", agg0)]
     result = backcalc_fit.fit(
         parameters, lte_model(args, offsets, pair, joint), [lte], 1.0,

@@ -55,6 +55,22 @@ def scene_number(scene, entry, default, positive=True):
     return value
 
 
+def make_output(folder):
+    """The output folder, made if needed, once the input is checked."""
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError as e:
+        raise BackcalcError("--output %s cannot be made: %s" % (folder, e))
+
+
+def check_includable(scene):
+    """The scene can be included by the runs (its path holds no '#')."""
+    try:
+        scene_including(scene, [], "")
+    except ValueError as e:
+        raise BackcalcError("--scene: %s" % e)
+
+
 def scene_force(scene):
     """The Peak force of the scene's Loads/Deflectometer 1 in N."""
     return scene_number(scene, DEFLECTOMETER + "/Peak force", "0")
