@@ -91,8 +91,10 @@ class Joint:
         return "Slabs/Shear stiffness=" + ", ".join("%r" % v for v in values)
 
     def others(self):
-        return ", ".join("%s %.6g" % (n, v) for n, v in zip(
-            self.names, self.stiffnesses) if n != self.name) or "none"
+        """The other joints and their stiffnesses, as the report says."""
+        kept = ", ".join("%s %.6g N/m^2" % (n, v) for n, v in zip(
+            self.names, self.stiffnesses) if n != self.name)
+        return "the others kept: " + kept if kept else "the scene's only one"
 
 
 def scene_moduli(args):
@@ -138,8 +140,8 @@ def backcalc_joint(args):
     offsets, pair, lte = measured_lte(args)
     joint = Joint(args)
     agg0, kl = start(args, lte)
-    print("the joint %s's Shear stiffness is fitted; the others keep the "
-          "scene's (%s N/m^2)" % (joint.name, joint.others()), flush=True)
+    print("to fit: the Shear stiffness of the joint %s (%s)"
+          % (joint.name, joint.others()), flush=True)
     make_output(args.output)
     parameters = [backcalc_fit.Parameter("AGG", "N/m^2", agg0)]
     result = backcalc_fit.fit(
@@ -149,7 +151,7 @@ def backcalc_joint(args):
     lines = ["measured LTE: %.6g %% (sensors at %g and %g mm)"
              % (lte, 1e3 * offsets[pair[0]], 1e3 * offsets[pair[1]]),
              "fitted:      AGG = %.10g N/m^2 +- %.2g %% (for +- %g LTE "
-             "points), f = AGG/(k l) = %.6g, joint %s (others: %s)"
+             "points), f = AGG/(k l) = %.6g; joint %s (%s)"
              % (agg, 100 * sigma / agg, args.lte_uncertainty, agg / kl,
                 joint.name, joint.others()),
              "fitted LTE:  %.6g %% (residual %+.2e points)"
