@@ -175,7 +175,7 @@ def hidden_bias():
         "  set Directory = pulse\nend\n")
     subprocess.run([LIFTOFF, "--quiet", "dynamic.prm"], check=True,
                    stdout=subprocess.DEVNULL)
-    done, fit = backcalc("pulse/basin.csv", "bias", "1e-6", "--noise",
+    done, fit = backcalc("pulse/basin.csv", "bias", "1e-4", "--noise",
                          "1e-7", "--no-plot")
     if fit is None:
         check(False, "a pulse's basin, static fit: the fit runs")
