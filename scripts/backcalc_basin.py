@@ -183,12 +183,12 @@ def backcalc_basin(args):
     basin = Basin(args.measured)
     offsets, measured = basin.offsets, basin.peaks
     start = area_start(args, offsets, measured)
+    scatter = backcalc_fit.scatter_of(args.noise, measured, offsets)
     make_output(args.output)
     parameters = modulus_parameters(*start)
     result = backcalc_fit.fit(parameters, basin_model(args, offsets),
                               measured, measured[0], args.tolerance,
-                              args.max_runs, scatter=backcalc_fit.scatter_of(
-                                  args.noise, measured))
+                              args.max_runs, scatter=scatter)
     error = backcalc_fit.publish(
         args.output, report(args, offsets, measured, start, result),
         parameters, result, [basin.pulse_note(args.scene)])

@@ -27,6 +27,8 @@ import threading
 
 import numpy as np
 
+from backcalc_scene import BackcalcError
+
 
 class Parameter:
     """One fitted quantity: its name and unit for the printed lines, its
@@ -105,11 +107,20 @@ class FitResult:
         return math.inf if s is None or not s[-1] > 0 else s[0] / s[-1]
 
 
-def scatter_of(noise, peaks):
+def scatter_of(noise, peaks, offsets):
     """Each sensor's standard deviation in m from --noise, (value, share):
     a value in m, or a share of the sensor's peak."""
     value, share = noise
-    return value * np.abs(peaks) if share else np.full(len(peaks), value)
+    if not share:
+        return np.full(len(peaks), value)
+    scatter = value * np.abs(peaks)
+    if not np.all(scatter > 0):
+        # chi^2 would divide by it.
+        raise BackcalcError("--noise %g %%: the sensor at %g mm peaks at 0, "
+                            "a share of which is no scatter; give --noise "
+                            "in m" % (100 * value, 1e3 * offsets[int(
+                                np.argmin(scatter))]))
+    return scatter
 
 
 def describe(parameters, values):

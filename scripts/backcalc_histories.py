@@ -152,10 +152,10 @@ def backcalc_histories(args):
     times, offsets, measured = measured_histories(args)
     start = backcalc_basin.area_start(args, offsets, measured.max(axis=0))
     fitted_parameters = parameters(args, start)
+    scatter = backcalc_fit.scatter_of(
+        args.noise, np.abs(measured).max(axis=0), offsets)
     make_output(args.output)
     model = Flat(history_model(args, times, offsets))
-    scatter = backcalc_fit.scatter_of(args.noise,
-                                      np.abs(measured).max(axis=0))
     result = backcalc_fit.fit(fitted_parameters, model, measured.ravel(),
                               np.abs(measured).max(), args.tolerance,
                               args.max_runs,
