@@ -8,8 +8,9 @@ import os
 import numpy as np
 
 import backcalc_fit
-from backcalc_scene import BackcalcError, SceneRuns, scene_force
-from liftoff_runs import read_csv
+from backcalc_scene import (BackcalcError, SceneRuns, make_output,
+                            scene_force, scene_values)
+from fwd_histories import HistoryError, number, read_rows
 
 INCH = 0.0254
 # The AREA4 sensors: 0, 12, 24 and 36 inches (the SHRP 0, 305, 610, 914 mm).
@@ -28,7 +29,8 @@ def area_method(offsets, deflections, force, thickness, poisson):
                                 "(+- 5 mm); the basin has %s mm"
                                 % (1e3 * target, ", ".join(
                                     "%g" % (1e3 * r) for r in offsets)))
-        d.append(deflections[near[0]])
+        # Python's floats: a huge reading gives inf, not numpy's warning.
+        d.append(float(deflections[near[0]]))
     if d[0] <= 0:
         raise BackcalcError("the deflection under the load, %g m, must be "
                             "> 0" % d[0])
@@ -63,40 +65,75 @@ def area_start(args, offsets, peaks):
     return E0, k0
 
 
+class Basin:
+    """The measured basin: offsets and peak deflections in m, and the
+    peaks' times where the file has them (a liftoff basin.csv's t_peak)."""
+
+    def __init__(self, path):
+        try:
+            header, rows = read_rows(path)
+        except HistoryError as e:
+            raise BackcalcError(str(e))
+        names = [n.strip() for n in header]
+        if len(rows) < 3:
+            raise BackcalcError("the basin %s holds %d sensors; E and k need "
+                                "at least 3" % (path, len(rows)))
+        if len(names) < 2:
+            raise BackcalcError("the basin %s has one column; it needs the "
+                                "offset and the peak deflection" % path)
+        peak = next((i for i, n in enumerate(names)
+                     if n.startswith("peak_w")), 1)
+        when = next((i for i, n in enumerate(names)
+                     if n.startswith("t_peak")), None)
+        try:
+            table = [[number(row[i], path, line, names[i])
+                      for i in (0, peak, when) if i is not None]
+                     for line, row in rows]
+        except HistoryError as e:
+            raise BackcalcError(str(e))
+        for (line, _), (offset, w, *_) in zip(rows, table):
+            if offset < 0 or w < 0:
+                raise BackcalcError(
+                    "%s, line %d: the sensor at %g mm reads %s = %g m; "
+                    "offsets and peak deflections (down positive) must be "
+                    ">= 0" % (path, line, 1e3 * offset, names[peak], w)
+                    if w < 0 else "%s, line %d: the offset %g m is "
+                    "negative; it is the distance from the load's centre"
+                    % (path, line, offset))
+        table = np.array(table)
+        self.offsets, self.peaks = table[:, 0], table[:, 1]
+        self.times = table[:, 2] if when is not None else None
+
+    def pulse_note(self, scene):
+        """A warning when a static scene is to fit a pulse's peaks (their
+        times are after 0), None otherwise."""
+        if self.times is None or not np.any(self.times > 0) or scene_values(
+                scene).get("Analysis/Type", "dynamic").strip() != "static":
+            return None
+        return ("warning: the basin's peaks come at t = %.4g to %.4g ms (its "
+                "t_peak column), a pulse's; the static scene leaves out the "
+                "test's inertia, which a static fit reads as a softer bed "
+                "(doc/deflectometer.md): fit the histories (--histories) or "
+                "with the dynamic scene" % (1e3 * self.times.min(),
+                                            1e3 * self.times.max()))
+
+
 def read_basin(path):
     """(offsets, peak deflections) of the measured basin."""
-    try:
-        rows = read_csv(path)
-    except (OSError, ValueError, KeyError, TypeError) as e:
-        raise BackcalcError("cannot read the basin %s: %s" % (path, e))
-    if len(rows) < 3:
-        raise BackcalcError("the basin %s holds %d sensors; E and k need at "
-                            "least 3" % (path, len(rows)))
-    names = list(rows[0])
-    if len(names) < 2:
-        raise BackcalcError("the basin %s has one column; it needs the "
-                            "offset and the peak deflection" % path)
-    peak = next((n for n in names if n.startswith("peak_w")), names[1])
-    offsets = [row[names[0]] for row in rows]
-    deflections = [row[peak] for row in rows]
-    if not all(v is not None and math.isfinite(v)
-               for v in offsets + deflections):
-        raise BackcalcError("the basin %s holds a value that is not a "
-                            "number" % path)
-    return np.array(offsets), np.array(deflections)
+    basin = Basin(path)
+    return basin.offsets, basin.peaks
 
 
 def basin_model(args, offsets):
     """The peak basin of a liftoff run at (E, k)."""
     runs = SceneRuns(args, offsets)
 
-    def run(values, number):
+    def run(values, serial):
         E, k = values
         folder = runs.run(["Units/Young's modulus=%r" % E,
-                           "Units/Subgrade modulus=%r" % k], number)
-        rows = read_csv(os.path.join(folder, "basin.csv"))
-        return [row["peak_w [m]"] for row in rows]
-    return backcalc_fit.RunCache(run)
+                           "Units/Subgrade modulus=%r" % k], serial)
+        return runs.table(folder, "basin.csv", ["peak_w [m]"])["peak_w [m]"]
+    return backcalc_fit.RunCache(run, runs)
 
 
 def modulus_parameters(E0, k0):
@@ -111,7 +148,7 @@ def fitted_line(result):
 
 
 def report(args, offsets, measured, start, result):
-    """The text printed and kept in fit.txt, and fit.csv."""
+    """The lines of fit.txt; writes fit.csv."""
     lines = ["start: E = %.6g Pa, k = %.6g N/m^3" % start,
              fitted_line(result),
              "liftoff runs: %d (%s)" % (result.runs, result.message),
@@ -122,10 +159,7 @@ def report(args, offsets, measured, start, result):
             f.write("%r,%r,%r,%r\n" % (r, m, w, w - m))
             lines.append("  %7.1f %10.3f %10.3f %+9.3f"
                          % (1e3 * r, 1e6 * m, 1e6 * w, 1e6 * (w - m)))
-    text = "\n".join(lines) + "\n"
-    with open(os.path.join(args.output, "fit.txt"), "w") as f:
-        f.write(text)
-    return text
+    return lines
 
 
 def plot(path, offsets, measured, fitted, values):
@@ -146,13 +180,20 @@ def plot(path, offsets, measured, fitted, values):
 
 
 def backcalc_basin(args):
-    offsets, measured = read_basin(args.measured)
+    basin = Basin(args.measured)
+    offsets, measured = basin.offsets, basin.peaks
     start = area_start(args, offsets, measured)
-    os.makedirs(args.output, exist_ok=True)
-    result = backcalc_fit.fit(modulus_parameters(*start),
-                              basin_model(args, offsets), measured,
-                              measured[0], args.tolerance, args.max_runs)
-    print(report(args, offsets, measured, start, result), end="")
+    scatter = backcalc_fit.scatter_of(args.noise, measured, offsets)
+    make_output(args.output)
+    parameters = modulus_parameters(*start)
+    result = backcalc_fit.fit(parameters, basin_model(args, offsets),
+                              measured, measured[0], args.tolerance,
+                              args.max_runs, scatter=scatter)
+    error = backcalc_fit.publish(
+        args.output, report(args, offsets, measured, start, result),
+        parameters, result, [basin.pulse_note(args.scene)])
     if not args.no_plot:
         plot(os.path.join(args.output, "basin_fit.png"), offsets, measured,
              result.fitted, result.values)
+    if error:
+        raise BackcalcError(error)

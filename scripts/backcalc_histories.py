@@ -12,10 +12,16 @@ import numpy as np
 import backcalc_basin
 import backcalc_fit
 from backcalc_scene import (DEFLECTOMETER, BackcalcError, SceneRuns,
-                            scene_number, scene_values)
+                            make_output, scene_number, scene_values)
 from fwd_histories import (HistoryError, check_window, read_histories,
                            write_histories)
-from liftoff_runs import read_csv
+
+# The times with a deflection the fit needs: at one time the sensors give
+# one basin, in which the bed's springs and its dashpots act as one
+# stiffness (over the first step k + c gamma / (beta dt), k + 2 c / dt
+# with the default Newmark); a second time parts them
+# (then the conditioning judges how well).
+TIMES_NEEDED = 2
 
 
 def measured_histories(args):
@@ -31,6 +37,15 @@ def measured_histories(args):
         check_window(times, end_time, duration, args.measured)
     except HistoryError as e:
         raise BackcalcError(str(e))
+    moved = times[np.any(values != 0, axis=1)]
+    if len(moved) < TIMES_NEEDED:
+        raise BackcalcError(
+            "%s holds %d time%s with a deflection (%s); k and c need %d at "
+            "least: at one time the bed's springs and dashpots act as one "
+            "stiffness, k + 2 c / dt over the first step"
+            % (args.measured, len(moved), "" if len(moved) == 1 else "s",
+               ", ".join("%g s" % t for t in moved) or "none",
+               TIMES_NEEDED))
     return times, offsets, values
 
 
@@ -45,12 +60,15 @@ def history_model(args, times, offsets):
         folder = runs.run(["Units/Young's modulus=%r" % E,
                            "Units/Subgrade modulus=%r" % k,
                            "Units/Dashpot coefficient=%r" % c], number)
-        rows = read_csv(os.path.join(folder, "history.csv"))
-        names = [n for n in rows[0] if n.startswith("d(")]
-        t = [row["t [s]"] for row in rows]
-        return np.array([np.interp(times, t, [row[n] for row in rows])
+        columns = runs.table(folder, "history.csv", ["t [s]"])
+        names = [n for n in columns if n.startswith("d(")]
+        if len(names) != len(offsets):
+            raise BackcalcError("%s has %d sensor columns, not the %d set"
+                                % (os.path.join(folder, "history.csv"),
+                                   len(names), len(offsets)))
+        return np.array([np.interp(times, columns["t [s]"], columns[n])
                          for n in names]).T
-    return backcalc_fit.RunCache(run)
+    return backcalc_fit.RunCache(run, runs)
 
 
 class Flat:
@@ -64,6 +82,9 @@ class Flat:
 
     def runs(self):
         return self.model.runs()
+
+    def warnings(self):
+        return self.model.warnings()
 
 
 def parameters(args, start):
@@ -82,8 +103,8 @@ def parameters(args, start):
         backcalc_fit.Parameter("c", "Pa s/m", c0, scale=critical)]
 
 
-def report(args, offsets, measured, start, result):
-    """The text printed and kept in fit.txt, and histories_fit.csv."""
+def report(offsets, measured, start, result):
+    """The lines of fit.txt."""
     fitted = result.fitted.reshape(measured.shape)
     c, sc = result.values[2], result.sigma[2]
     lines = ["start: E = %.6g Pa, k = %.6g N/m^3" % start,
@@ -97,10 +118,7 @@ def report(args, offsets, measured, start, result):
         lines.append("  %7.1f %10.3f %10.3f %9.3f"
                      % (1e3 * r, 1e6 * measured[:, j].max(),
                         1e6 * fitted[:, j].max(), 1e6 * rms))
-    text = "\n".join(lines) + "\n"
-    with open(os.path.join(args.output, "fit.txt"), "w") as f:
-        f.write(text)
-    return text
+    return lines
 
 
 def plot(path, times, offsets, measured, fitted, values):
@@ -134,15 +152,22 @@ def backcalc_histories(args):
     times, offsets, measured = measured_histories(args)
     start = backcalc_basin.area_start(args, offsets, measured.max(axis=0))
     fitted_parameters = parameters(args, start)
-    os.makedirs(args.output, exist_ok=True)
+    scatter = backcalc_fit.scatter_of(
+        args.noise, np.abs(measured).max(axis=0), offsets)
+    make_output(args.output)
     model = Flat(history_model(args, times, offsets))
     result = backcalc_fit.fit(fitted_parameters, model, measured.ravel(),
                               np.abs(measured).max(), args.tolerance,
-                              args.max_runs)
-    print(report(args, offsets, measured, start, result), end="")
+                              args.max_runs,
+                              scatter=np.tile(scatter, len(times)))
+    error = backcalc_fit.publish(args.output,
+                                 report(offsets, measured, start, result),
+                                 fitted_parameters, result)
     fitted = result.fitted.reshape(measured.shape)
     write_histories(os.path.join(args.output, "histories_fit.csv"), times,
                     offsets, [("measured", measured), ("fitted", fitted)])
     if not args.no_plot:
         plot(os.path.join(args.output, "histories_fit.png"), times, offsets,
              measured, fitted, result.values)
+    if error:
+        raise BackcalcError(error)

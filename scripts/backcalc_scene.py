@@ -3,8 +3,10 @@ those of the files it includes), and one liftoff run of it with the fitted
 values set."""
 
 import os
+import threading
 
-from liftoff_runs import parse_parameters, run_scene, scene_with_overrides
+from liftoff_runs import (parse_parameters, read_csv, run_scene,
+                          scene_including)
 
 DEFLECTOMETER = "Loads/Deflectometer 1"
 
@@ -13,17 +15,27 @@ class BackcalcError(Exception):
     """A problem with the input, said in one line."""
 
 
-def scene_values(scene):
+def scene_values(scene, chain=()):
     """The scene's entries, those of the files it includes first (a
-    later value wins, as in liftoff)."""
+    later value wins, as in liftoff), each include relative to the folder
+    of the file that names it."""
+    path = os.path.abspath(scene)
+    if path in chain:
+        raise BackcalcError("the scene %s includes itself (%s)" % (
+            chain[0], " -> ".join(list(chain) + [path])))
     values = {}
-    with open(scene) as f:
-        for line in f:
-            words = line.split("#", 1)[0].split()
-            if len(words) == 2 and words[0] == "include":
-                values.update(scene_values(os.path.join(
-                    os.path.dirname(os.path.abspath(scene)), words[1])))
-    values.update(parse_parameters(scene))
+    try:
+        with open(path, errors="replace") as f:
+            for line in f:
+                words = line.split("#", 1)[0].split(None, 1)
+                if len(words) == 2 and words[0] in ("include", "INCLUDE"):
+                    values.update(scene_values(os.path.join(
+                        os.path.dirname(path), words[1].strip()),
+                        chain + (path,)))
+        values.update(parse_parameters(path))
+    except (OSError, IndexError) as e:
+        raise BackcalcError("the scene %s cannot be read%s: %s" % (
+            scene, " (included by %s)" % chain[-1] if chain else "", e))
     return values
 
 
@@ -43,15 +55,66 @@ def scene_number(scene, entry, default, positive=True):
     return value
 
 
+def make_output(folder):
+    """The output folder, made if needed, once the input is checked."""
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError as e:
+        raise BackcalcError("--output %s cannot be made: %s" % (folder, e))
+
+
+def check_includable(scene):
+    """The scene can be included by the runs (its path holds no '#')."""
+    try:
+        scene_including(scene, [], "")
+    except ValueError as e:
+        raise BackcalcError("--scene: %s" % e)
+
+
 def scene_force(scene):
     """The Peak force of the scene's Loads/Deflectometer 1 in N."""
     return scene_number(scene, DEFLECTOMETER + "/Peak force", "0")
 
 
+def scene_joints(scene):
+    """The names of the modelled plate's joints in liftoff's order, the
+    order of a per-joint list in Slabs (doc/model.md, "Slabs and joints"):
+    a rectangle's x1, x2, ..., y1, ... (those a half or quarter model
+    meshes: on or beyond its symmetry plane), or a mesh file's curves of
+    the condition `joint` in the order Boundary conditions/Mesh tags names
+    them."""
+    values = scene_values(scene)
+    grid = []
+    for axis in "xy":
+        entry = "Slabs/Slabs along " + axis
+        try:
+            grid.append(int(values.get(entry, "1")))
+        except ValueError:
+            raise BackcalcError("the scene %s sets %s = %s, not a whole "
+                                "number" % (scene, entry, values[entry]))
+    if grid[0] * grid[1] > 1:
+        symmetric = {"full": 0, "half": 1, "quarter": 2}.get(
+            values.get("Discretization/Symmetry", "full").strip(), 0)
+        # A joint at -1/2 + j/n of the side is meshed on a symmetric axis
+        # when it lies on the plane (2 j = n) or beyond it.
+        return ["%s%d" % (axis, j) for a, (axis, n) in enumerate(zip("xy",
+                                                                     grid))
+                for j in range(1, n) if a >= symmetric or 2 * j >= n]
+    if values.get("Discretization/Shape", "").strip() != "mesh file":
+        return []
+    joints = []
+    for tag in values.get("Boundary conditions/Mesh tags", "").split(","):
+        name, _, condition = tag.partition(":")
+        if condition.strip() == "joint":
+            joints.append(name.strip())
+    return joints
+
+
 class SceneRuns:
     """liftoff runs of the scene, each in output/runs/runNNN, with the
     slab's thickness and Poisson ratio, the sensors' offsets and the fitted
-    values set."""
+    values set; the warnings of the runs that ended `completed with
+    warnings`, by run number."""
 
     def __init__(self, args, offsets):
         self.args = args
@@ -61,31 +124,94 @@ class SceneRuns:
             "Output/VTU interval=0",
             DEFLECTOMETER + "/Sensor offsets="
             + ", ".join("%r" % float(r) for r in offsets)]
+        self.warnings = {}
+        self.lock = threading.Lock()
 
     def run(self, overrides, number):
         """The run's output folder, after the run."""
         folder = os.path.join(self.args.output, "runs", "run%03d" % number)
-        text = scene_with_overrides(self.args.scene,
-                                    self.fixed + list(overrides), folder)
-        # A second try: on a loaded machine a run has once failed where the
-        # same run succeeded again; a scene liftoff refuses fails twice.
+        try:
+            # The template by reference: its includes and mesh file stay
+            # relative to its own folder, as when liftoff runs it.
+            text = scene_including(self.args.scene,
+                                   self.fixed + list(overrides), folder)
+        except ValueError as e:
+            raise BackcalcError("--scene: %s" % e)
+        # liftoff's own verdict on the scene (exit 1 with its "liftoff:
+        # error in" line) repeats if run again; anything else (a signal,
+        # an MPI start-up that aborted on a loaded machine, a crash) may
+        # not, and is run once more.
         for attempt in (1, 2):
             try:
-                run_scene(self.args.executable, text, folder)
+                code = run_scene(self.args.executable, text, folder,
+                                 check=False)
+            except OSError as e:
+                raise BackcalcError("--executable %s cannot be run: %s"
+                                    % (self.args.executable, e))
+            if code == 0:
+                self.note_warning(folder, number)
                 return folder
-            except (RuntimeError, OSError) as e:
-                failure = "%s: %s" % (e, last_line(folder))
-            if attempt == 1:
-                print("liftoff run %d failed (%s); running it again"
-                      % (number, failure), flush=True)
-        raise BackcalcError(failure)
+            verdict = code == 1 and is_verdict(folder)
+            cause = ("exit %d" % code if code > 0 else
+                     "killed by signal %d" % -code)
+            if verdict or attempt == 2:
+                break
+            print("liftoff run %d failed (%s, not liftoff's verdict on the "
+                  "scene: %s); running it again"
+                  % (number, cause, last_line(folder)), flush=True)
+        raise BackcalcError("liftoff run %d failed (%s): %s (%s)"
+                            % (number, cause, last_line(folder),
+                               os.path.join(folder, "log.txt")))
+
+    def note_warning(self, folder, number):
+        # The lines themselves: a warning's text holds ": " too, which
+        # parse_summary splits at.
+        try:
+            with open(os.path.join(folder, "summary.txt"),
+                      errors="replace") as f:
+                lines = {key: value.strip() for key, _, value in
+                         (line.partition(": ") for line in f)}
+        except OSError:
+            lines = {}
+        if lines.get("status") == "completed with warnings":
+            with self.lock:
+                self.warnings[number] = lines.get("warning", "(no text)")
+
+    def table(self, folder, name, needed):
+        """A CSV file the run wrote, as {column: list of floats}; a file
+        without the needed columns (or without rows) names the run: an
+        --executable that is not liftoff, a scene without the output."""
+        path = os.path.join(folder, name)
+        try:
+            rows = read_csv(path)
+            columns = {c: [row[c] for row in rows] for c in rows[0]}
+        except (OSError, ValueError, KeyError, TypeError, IndexError) as e:
+            raise BackcalcError("%s cannot be read (%s: %s): is --executable "
+                                "%s liftoff?" % (path, type(e).__name__, e,
+                                                 self.args.executable))
+        missing = [c for c in needed if c not in columns]
+        if missing:
+            raise BackcalcError("%s has no column %s" % (path,
+                                                         ", ".join(missing)))
+        return columns
+
+
+def log_lines(folder):
+    try:
+        with open(os.path.join(folder, "log.txt"), errors="replace") as f:
+            return [line.strip() for line in f if line.strip()]
+    except OSError:
+        return []
+
+
+def is_verdict(folder):
+    """Whether the failed run's log holds liftoff's message on the scene
+    (main.cc's report_failure)."""
+    return any(line.startswith("liftoff: error in ")
+               for line in log_lines(folder))
 
 
 def last_line(folder):
     """The last line of a failed run's log: liftoff's one-line error."""
-    try:
-        with open(os.path.join(folder, "log.txt")) as f:
-            lines = [line.strip() for line in f if line.strip()]
-    except OSError:
-        lines = []
+    lines = log_lines(folder)
     return lines[-1] if lines else "no log"

@@ -27,7 +27,8 @@ UNITS = {"m": 1.0, "um": 1e-6}
 
 
 class HistoryError(Exception):
-    """What is wrong with a histories file, in one line."""
+    """What is wrong with a measured file (histories or a basin), in one
+    line."""
 
 
 def sensor_columns(header, path):
@@ -53,15 +54,22 @@ def sensor_columns(header, path):
 
 
 def read_rows(path):
+    """The header and [(line number, row)] of a measured CSV file (a
+    basin or histories), every row as long as the header."""
     try:
         with open(path, newline="") as f:
             rows = list(csv.reader(f))
     except (OSError, UnicodeDecodeError, csv.Error) as e:
         raise HistoryError("cannot read %s: %s" % (path, e))
-    rows = [row for row in rows if row]
+    rows = [(line, row) for line, row in enumerate(rows, start=1) if row]
     if len(rows) < 2:
         raise HistoryError("%s holds no rows below its header" % path)
-    return rows[0], rows[1:]
+    (_, header), rows = rows[0], rows[1:]
+    for line, row in rows:
+        if len(row) != len(header):
+            raise HistoryError("%s, line %d: %d values, the header names %d"
+                               % (path, line, len(row), len(header)))
+    return header, rows
 
 
 def number(text, path, line, name):
@@ -85,20 +93,17 @@ def read_histories(path):
     time_column = names.index("t [s]")
     columns = sensor_columns(names, path)
     times, values = [], []
-    for line, row in enumerate(rows, start=2):
-        if len(row) != len(header):
-            raise HistoryError("%s, line %d: %d values, the header names %d"
-                               % (path, line, len(row), len(header)))
+    for line, row in rows:
         times.append(number(row[time_column], path, line, "t [s]"))
         values.append([factor * number(row[i], path, line, names[i])
                        for i, _, factor in columns])
     times = np.array(times)
     steps = np.diff(times)
     if np.any(steps <= 0):
-        line = int(np.argmax(steps <= 0)) + 3
+        i = int(np.argmax(steps <= 0)) + 1
         raise HistoryError("%s, line %d: the time %g s does not follow %g s "
                            "(times must increase)"
-                           % (path, line, times[line - 2], times[line - 3]))
+                           % (path, rows[i][0], times[i], times[i - 1]))
     offsets = np.array([offset for _, offset, _ in columns])
     if len(set(offsets)) != len(offsets):
         raise HistoryError("%s names a sensor offset twice" % path)

@@ -39,6 +39,21 @@ def scene_with_overrides(scene_file, overrides, directory):
                                 + ["Output/Directory=" + directory])
 
 
+def scene_including(scene_file, overrides, directory):
+    """A scene that includes the scene file by its absolute path, then the
+    overrides and the output directory: liftoff resolves the file's own
+    relative includes and mesh file against the file's folder, as when it
+    is run directly, wherever this text is written."""
+    path = os.path.abspath(scene_file)
+    if "#" in path or "\n" in path:
+        # An include line ends at a comment sign; such a path cannot be
+        # included.
+        raise ValueError("the scene's path %s holds a '#' or a line break, "
+                         "which an include line cannot carry" % path)
+    return "include %s\n" % path + override_text(
+        list(overrides) + ["Output/Directory=" + directory])
+
+
 def run_scene(executable, text, directory, ranks=1, log_name="log.txt",
               check=True):
     """Run liftoff on the scene text (written to directory/scene.prm) in its

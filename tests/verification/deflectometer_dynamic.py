@@ -21,7 +21,16 @@ samples).
 - bad input is refused in one line naming the cause (exit 1, no output
   folder): no time column, a sensor column missing in a row, NaN, time
   not increasing, times after the pulse or beyond the scene's End time,
-  a negative thickness, an unknown option, a static scene.
+  a negative thickness, an unknown option, a static scene, histories of
+  one time with a deflection (the first two rows of the truth: k and c
+  act as one stiffness there; before, fitted to k = 1.5e8 +- 0.00037 %
+  and c = 0, exit 0);
+- two times suffice: the first three rows (0, 2, 4 ms) fitted back to
+  1e-6, the scaled Jacobian's condition number below 1e3 (50.6);
+- the conditioning's judgement against a hand calculation: the Jacobian
+  [[1, 1], [0, 1e-4]] has the condition number 2e4 once its columns are
+  scaled (sigma = sqrt 2 and 1e-4 / sqrt 2), and the judgement names both
+  values as not separated.
 
     deflectometer_dynamic.py LIFTOFF
 """
@@ -34,6 +43,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..",
+                                "scripts"))
 from checks import check, finish  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -105,7 +116,8 @@ def backcalc(measured, output, *options):
 
 def sensor_residuals(stdout):
     table = stdout.split("rms residual over time [um]\n", 1)[1]
-    return [float(line.split()[3]) for line in table.splitlines()]
+    return [float(line.split()[3]) for line in table.splitlines()
+            if line.startswith("  ")]
 
 
 def noisy_histories(seed):
@@ -164,6 +176,40 @@ def write(name, text):
     return name
 
 
+def first_rows(n):
+    """The first n rows of the truth's histories."""
+    with open("truth/history.csv") as f:
+        return write(f"first{n}.csv", "".join(f.readlines()[:n + 1]))
+
+
+def two_times():
+    done, fit = backcalc(first_rows(3), "two_times", "--tolerance", "1e-9",
+                         "--no-plot")
+    condition = re.search(r"condition number (\S+);", done.stdout)
+    if fit is None or not condition:
+        check(False, "two times: the fit runs")
+        return
+    e, _, k, _, c, _ = fit
+    check(max(abs(e / E - 1), abs(k / K - 1), abs(c / C - 1)) < 1e-6
+          and float(condition.group(1)) < 1e3,
+          f"two times: E, k, c back to {e / E - 1:.1e}, {k / K - 1:.1e}, "
+          f"{c / C - 1:.1e}; condition number {condition.group(1)}")
+
+
+def conditioning():
+    import backcalc_fit
+    parameters = [backcalc_fit.Parameter("E", "Pa", 1.0),
+                  backcalc_fit.Parameter("k", "N/m^3", 1.0)]
+    result = backcalc_fit.FitResult([1.0, 1.0], [0.0, 0.0], None, "", 1)
+    result.singular, result.weak = backcalc_fit.scaled_singular(
+        [[1.0, 1.0], [0.0, 1e-4]])
+    _, error = backcalc_fit.judgement(parameters, result)
+    check(abs(result.condition() / 2e4 - 1) < 1e-6 and error is not None
+          and "do not separate E and k" in error,
+          f"[[1, 1], [0, 1e-4]]: condition number {result.condition():.6g} "
+          f"(2e4 by hand), refused: {error}")
+
+
 def refusals():
     good = "t [s],d(0) [um],d(0.305) [um],d(0.61) [um],d(0.914) [um]\n"
     rows = "0,0,0,0,0\n0.016,141,131,113,95\n0.03,20,19,17,15\n"
@@ -191,7 +237,9 @@ def refusals():
          "--thickness = -0.25 must be > 0"),
         ("an unknown option", "g.csv", ["--dampnig-start", "0.1"],
          "unrecognized arguments: --dampnig-start"),
-        ("a static scene", "g.csv", ["--scene", static], "is static")]
+        ("a static scene", "g.csv", ["--scene", static], "is static"),
+        ("one time with a deflection", first_rows(2), [],
+         "holds 1 time with a deflection (0.002 s); k and c need 2")]
     for what, measured, options, cause in cases:
         done, _ = backcalc(measured, "refused", *options)
         lines = done.stderr.strip().splitlines()
@@ -206,5 +254,7 @@ with tempfile.TemporaryDirectory() as folder:
     subprocess.run([LIFTOFF, "--quiet", "scene.prm"], check=True,
                    stdout=subprocess.DEVNULL)
     refusals()
+    two_times()
     round_trip()
+conditioning()
 finish()

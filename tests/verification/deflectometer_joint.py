@@ -16,11 +16,25 @@ d(0), the sensors 150 and 155 mm either side of the joint.
 - refused in one line (exit 1): a sensor of --lte-sensors missing from
   the basin, a scene without a joint, a basin whose LTE is above 100 %.
 
+One joint of several: three slabs along y (3 m x 9 m, half model, 6 x 18
+cells), `Shear stiffness = 2e8, 0` (y1 stiff, y2 free), the test at y1.
+`--joint-name y1` fits y1's AGG back within 1e-6 and every run keeps y2 at
+0 (its used_parameters.prm); without --joint-name, or with a joint the
+scene has not, refused naming the joints (the tool wrote one value for
+every joint before: AGG 2.1188e8, y2 made stiff, exit 0).
+
+A mesh file's joint: tests/meshes/two_slabs.msh (1 m x 1 m, the curve
+Joint at x = 0, `Mesh tags = Joint: joint`) in a folder of its own with a
+template beside it that names it relatively (run from elsewhere); the
+load tangent to the joint, AGG = 2e8 fitted back within 1e-6 (refused
+before: "needs a scene with a joint (Slabs along x or y >= 2)").
+
     deflectometer_joint.py LIFTOFF
 """
 
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -76,6 +90,59 @@ subsection Loads
 end
 subsection Output
   set Directory = truth
+  set Write energies = false
+end
+"""
+
+
+THREE_SLABS = SCENE.replace("Width = 6", "Width = 9").replace(
+    "Cells along y = 12", "Cells along y = 18").replace(
+    "Slabs along y = 2", "Slabs along y = 3").replace(
+    f"Shear stiffness = {AGG}", f"Shear stiffness = {AGG}, 0").replace(
+    "Position = 0, -0.15", "Position = 0, -1.65").replace(
+    "Directory = truth", "Directory = three")
+
+MESH_SCENE = f"""
+subsection Analysis
+  set Type = static
+end
+subsection Units
+  set System = SI
+  set Length = 1
+  set Thickness = 0.25
+  set Young's modulus = 30e9
+  set Density = 2400
+  set Gravity = 0
+  set Subgrade modulus = 50e6
+end
+subsection Plate
+  set Poisson ratio = 0.15
+end
+subsection Foundation
+  set Model = bilateral
+end
+subsection Discretization
+  set Shape = mesh file
+  set Mesh file = two_slabs.msh
+  set Polynomial degree = 2
+end
+subsection Boundary conditions
+  set Mesh tags = Joint: joint
+end
+subsection Slabs
+  set Shear stiffness = {AGG}
+end
+subsection Loads
+  subsection Deflectometer 1
+    set Peak force = 40e3
+    set Pulse shape = constant
+    set Position = -0.15, 0
+    set Sensor offsets = 0, 0.305, 0.4
+    set Sensor direction = 1, 0
+  end
+end
+subsection Output
+  set Directory = mesh_truth
   set Write energies = false
 end
 """
@@ -138,6 +205,67 @@ def refusals():
               f"{what}: refused in one line ({lines[-1] if lines else ''})")
 
 
+def fitted(done, what):
+    """AGG as the fit printed it, or None (a failed check)."""
+    print(done.stdout + done.stderr)
+    found = re.search(r"fitted: +AGG = (\S+) N/m\^2", done.stdout)
+    if done.returncode != 0 or not found:
+        check(False, f"{what}: the fit runs")
+        return None
+    return float(found.group(1))
+
+
+def one_of_several():
+    """Three slabs, y1 stiff and y2 free; the test at y1."""
+    with open("three.prm", "w") as f:
+        f.write(THREE_SLABS)
+    subprocess.run([LIFTOFF, "--quiet", "three.prm"], check=True,
+                   stdout=subprocess.DEVNULL)
+    for what, options, cause in [
+            ("no --joint-name", [], "has the joints y1, y2: name the one"),
+            ("--joint-name y3", ["--joint-name", "y3"],
+             "--joint-name y3: the scene three.prm has the joints y1, y2")]:
+        done = backcalc("three/basin.csv", "refused", *options,
+                        scene="three.prm")
+        lines = done.stderr.strip().splitlines()
+        check(done.returncode == 1 and len(lines) == 1 and cause in lines[0]
+              and not os.path.exists("refused"),
+              f"three slabs, {what}: refused in one line "
+              f"({lines[-1] if lines else ''})")
+    agg = fitted(backcalc("three/basin.csv", "three_fit", "--tolerance",
+                          "1e-10", "--joint-name", "y1", scene="three.prm"),
+                 "three slabs, --joint-name y1")
+    if agg is None:
+        return
+    kept = []
+    for run in sorted(os.listdir("three_fit/runs")):
+        with open(os.path.join("three_fit/runs", run,
+                               "used_parameters.prm")) as f:
+            entry = re.search(r"set Shear stiffness += (.*)", f.read())
+        kept.append([float(v) for v in entry.group(1).split(",")][1:])
+    check(abs(agg / AGG - 1) < 1e-6 and kept
+          and all(values == [0.0] for values in kept),
+          f"three slabs, --joint-name y1: AGG back to {agg / AGG - 1:.1e}, "
+          f"y2 kept at 0 in all {len(kept)} runs")
+
+
+def mesh_joint():
+    """A mesh file's joint, the template beside its mesh, run from
+    elsewhere."""
+    os.mkdir("mesh")
+    shutil.copy(os.path.join(HERE, "..", "meshes", "two_slabs.msh"), "mesh")
+    with open("mesh/joint.prm", "w") as f:
+        f.write(MESH_SCENE)
+    subprocess.run([LIFTOFF, "--quiet", "mesh/joint.prm"], check=True,
+                   stdout=subprocess.DEVNULL)
+    agg = fitted(backcalc("mesh_truth/basin.csv", "mesh_fit", "--tolerance",
+                          "1e-10", scene="mesh/joint.prm"),
+                 "a mesh file's joint")
+    if agg is not None:
+        check(abs(agg / AGG - 1) < 1e-6,
+              f"a mesh file's joint: AGG back to {agg / AGG - 1:.1e}")
+
+
 fits()
 with tempfile.TemporaryDirectory() as folder:
     os.chdir(folder)
@@ -147,4 +275,6 @@ with tempfile.TemporaryDirectory() as folder:
                    stdout=subprocess.DEVNULL)
     refusals()
     round_trip()
+    one_of_several()
+    mesh_joint()
 finish()
