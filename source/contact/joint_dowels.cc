@@ -42,6 +42,24 @@ namespace liftoff
     }
 
 
+    /// Two dowels at one place would be one dowel of twice the stiffness,
+    /// with two force columns that each show half: refused.
+    void
+    require_distinct(const std::vector<double> &at,
+                     const std::string         &joint,
+                     const double               length)
+    {
+      for (unsigned int k = 0; k < at.size(); ++k)
+        for (unsigned int j = 0; j < k; ++j)
+          AssertThrow(std::abs(at[k] - at[j]) > 1e-10 * length,
+                      ExcMessage("Slabs/Dowels/Positions: two dowels at "
+                                 + format_number(at[k]) + " on the joint "
+                                 + joint
+                                 + "; give each position once (a stiffer "
+                                   "dowel there: Stiffness)."));
+    }
+
+
     // Trilinos' first add after an insert assembles the object, a
     // collective call, on the rank that adds: a rank that holds no dowel
     // must take that step too, or the ranks wait for each other for ever
@@ -349,6 +367,7 @@ namespace liftoff
                                "no dowel on the joint "
                                + name + ", which is " + format_number(length)
                                + " long."));
+        require_distinct(at, name, length);
         for (unsigned int k = 0; k < at.size(); ++k)
           {
             AssertThrow(at[k] > 0 && at[k] < length,

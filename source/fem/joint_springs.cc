@@ -50,8 +50,10 @@ namespace liftoff
       "AGG, the aggregate interlock of the joints that are not tied: the "
       "shear force per unit length of joint per unit jump of w across it "
       "(N/m^2 in an SI scene; AGG L^3 / D dimensionless). One value for "
-      "every joint, or one per joint in the order x1, x2, ..., y1, y2, ...; "
-      "0: the joint passes no shear (free)."
+      "every joint, or one per joint of the whole plate in the order x1, x2, "
+      "..., y1, y2, ... (a mesh file's in its order; also on a half or "
+      "quarter model, which takes its joints' values), or one per modelled "
+      "joint; 0: the joint passes no shear (free)."
         + quantity("pressure"));
     prm.declare_entry(
       "Rotational stiffness",
@@ -81,17 +83,24 @@ namespace liftoff
   void
   JointSprings::check_against(const SlabLayout &slabs) const
   {
-    const std::size_t n = slabs.joints().size();
+    const std::size_t n = slabs.n_joints_of_plate();
+    std::string       modelled;
+    for (const Joint &joint : slabs.joints())
+      modelled += (modelled.empty() ? "" : ", ") + joint.name;
     for (const auto &[values, entry] :
          {std::make_pair(&shear_stiffness, "Shear stiffness"),
           std::make_pair(&rotational_stiffness, "Rotational stiffness")})
-      AssertThrow(values->size() == 1 || values->size() == n,
+      AssertThrow(values->size() == 1 || values->size() == n
+                    || values->size() == slabs.joints().size(),
                   ExcMessage("Slabs/" + std::string(entry) + " has "
                              + std::to_string(values->size())
-                             + " values; the modelled plate has "
-                             + std::to_string(n)
-                             + " joints: give one value, or one per "
-                               "joint."));
+                             + " values; the plate has " + std::to_string(n)
+                             + " joints (x1, x2, ..., y1, ...), the "
+                               "modelled part "
+                             + std::to_string(slabs.joints().size()) + " ("
+                             + modelled
+                             + "): give one value, one per joint of the "
+                               "plate, or one per modelled joint."));
   }
 
 
@@ -99,7 +108,14 @@ namespace liftoff
   JointSprings::stiffness_of(const std::vector<double> &values,
                              const unsigned int         joint) const
   {
-    return values.size() == 1 ? values[0] : values[joint];
+    // A list per joint of the whole plate (as Thicknesses counts slabs),
+    // or, as the modelled part has them, per modelled joint.
+    const SlabLayout &slabs = discretization->geometry().slabs();
+    if (values.size() == 1)
+      return values[0];
+    return values.size() == slabs.n_joints_of_plate()
+             ? values[slabs.joints()[joint].number]
+             : values[joint];
   }
 
 

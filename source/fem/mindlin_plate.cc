@@ -72,7 +72,8 @@ namespace liftoff
       "file its physical surfaces by their numbers); empty: "
       "the plate's. In m in an SI scene, in units of L (as Plate/Thickness "
       "ratio) in a dimensionless one; within [1e-5, 1] L. The slabs share "
-      "the plate's density and Poisson ratio; not with a temperature load."
+      "the plate's density and Poisson ratio; a temperature load curls each "
+      "slab by alpha dT / H_s with its own D_s."
         + quantity("length"));
     prm.declare_entry(
       "Modulus ratios",

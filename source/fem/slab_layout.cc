@@ -149,6 +149,7 @@ namespace liftoff
                   joint.end   = std::max(joint.end, face->vertex(v)[along]);
                 }
             }
+        joint.number = joint_list.size();
         joint_list.push_back(joint);
         joint_tag_ids.insert(tag);
         id += 2;
@@ -201,7 +202,8 @@ namespace liftoff
                                   false,
                                   low[1 - axis],
                                   high[1 - axis],
-                                  on_plane});
+                                  on_plane,
+                                  axis * (slab_grid[0] - 1) + j - 1});
           }
       }
   }
@@ -213,6 +215,15 @@ namespace liftoff
     return mesh != nullptr && slab_grid[0] * slab_grid[1] == 1
              ? std::max<unsigned int>(1, slab_numbers.size())
              : slab_grid[0] * slab_grid[1];
+  }
+
+
+  unsigned int
+  SlabLayout::n_joints_of_plate() const
+  {
+    return mesh != nullptr && slab_grid[0] * slab_grid[1] == 1
+             ? joint_list.size()
+             : slab_grid[0] + slab_grid[1] - 2;
   }
 
 

@@ -20,8 +20,12 @@ namespace liftoff
                        const bool     verbose,
                        const bool     show_progress)
       : mpi_communicator(comm)
-      , pcout(std::cout, verbose && Utilities::MPI::this_mpi_process(comm) == 0)
-      , is_quiet(!show_progress)
+      , pcout(std::cout,
+              verbose && show_progress
+                && Utilities::MPI::this_mpi_process(comm) == 0)
+      , status_out(std::cout,
+                   verbose && !show_progress
+                     && Utilities::MPI::this_mpi_process(comm) == 0)
       , parts(comm, timer)
       , progress_line(comm, std::cout)
   {
@@ -205,8 +209,7 @@ namespace liftoff
                     ExcMessage("--resume reads the checkpoint in "
                                "Output/Directory, which is empty."));
       }
-    // Checks that need the mesh and the matrices come before the folder is
-    // touched.
+    // Checks that need the mesh and matrices precede touching the folder.
     setup();
     check_before_run();
 
@@ -246,8 +249,7 @@ namespace liftoff
                            + ", beyond Time integration/End time = "
                            + format_number(clock.end_time()) + " ("
                            + std::to_string(clock.n_steps()) + " steps)."));
-    // A killed run may have left temporary files (and checkpoint.new,
-    // which the next checkpoint replaces).
+    // A killed run may leave temporary files (and checkpoint.new).
     output_folder->remove_temporary_files();
     return step;
   }
@@ -582,14 +584,12 @@ namespace liftoff
   Simulator::write_summary(const std::string &status) const
   {
     const RunSummary summary = summary_of_run(status);
-    if (is_quiet)
-      pcout << "status: " << status
-            << (writes_files()
-                  ? "; summary in " + output_directory + "/summary.txt"
-                  : std::string())
-            << std::endl;
-    else
-      pcout << summary.text();
+    status_out << "status: " << status
+               << (writes_files()
+                     ? "; summary in " + output_directory + "/summary.txt"
+                     : std::string())
+               << std::endl;
+    pcout << summary.text();
     if (writes_files())
       {
         if (output_folder)

@@ -68,4 +68,32 @@ check $? "--resume --overwrite: exit $status, the reason and the usage on stderr
 status=$?
 [ "$status" -eq 2 ] && grep -q '^liftoff: one scene file at a time, not 2' stderr.txt
 check $? "two scene files: exit $status, the reason on stderr"
+
+# --quiet: one line on the terminal, also for an SI scene (its groups) and
+# a static analysis (its iterations), where it printed 3 and 4.
+cat > quiet.prm <<'EOF2'
+subsection Units
+  set System           = SI
+  set Length           = 4
+  set Width            = 4
+  set Thickness        = 0.25
+  set Young's modulus  = 30e9
+  set Density          = 2400
+  set Subgrade modulus = 50e6
+end
+subsection Analysis
+  set Type = static
+end
+subsection Discretization
+  set Cells along x = 4
+  set Cells along y = 4
+end
+subsection Output
+  set Directory = quiet
+end
+EOF2
+"$liftoff" -q quiet.prm >stdout.txt 2>stderr.txt
+status=$?
+[ "$status" -eq 0 ] && [ "$(wc -l < stdout.txt)" -eq 1 ] && grep -q '^status: completed; summary in quiet/summary.txt$' stdout.txt && [ ! -s stderr.txt ]
+check $? "-q: exit $status, one status line ($(wc -l < stdout.txt) lines)"
 finish

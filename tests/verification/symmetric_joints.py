@@ -11,6 +11,8 @@ line load along joints against the plate without them:
   side of a joint is the mirror image: [w] = 0 and [psi . n] = 2 psi . n,
   so the joint passes no shear and its rotational springs act with 2 R
   on the modelled side;
+- the same with lists of stiffnesses per joint of the whole plate (the
+  half and quarter models take their joints' values from them);
 - the same with x2 and y1 tied (a tied joint on a plane is the plane);
 - a line load along the joints of four slabs, all tied and all stiff,
   against the same line on the plate without joints: each slab carries
@@ -124,6 +126,11 @@ with tempfile.TemporaryDirectory() as work:
     check(np.max(np.abs(full["shear_x1"])) > 1e-3,
           f"x1, off the planes, passes shear (largest "
           f"{np.max(np.abs(full['shear_x1'])):.3e})")
+    # Lists per joint of the whole plate (x1, x2, x3, y1), as Thicknesses
+    # counts slabs, on every model: x1 and x3 mirror each other.
+    symmetric_parts(work, "lists", {"Slabs": {
+        "Shear stiffness": "40, 70, 40, 20",
+        "Rotational stiffness": "2, 5, 2, 1"}})
     symmetric_parts(work, "tied", {"Slabs": {"Tied joints": "x2, y1"},
                                    "Output": {"Joint probe points":
                                               "0.25, 0.2"}})

@@ -122,9 +122,6 @@ namespace liftoff
     add_force(const TermState &state, LA::MPI::Vector &force) const override;
     double
     energy(const TermState &state) const override;
-    /// The dowels' C, every dowel engaged.
-    std::vector<Coupling>
-    couplings() const override;
 
     unsigned long
     update_status(const LA::MPI::Vector &ghosted_u,
@@ -172,6 +169,11 @@ namespace liftoff
     load(InputArchive &archive) override;
 
   private:
+    /// The dowels' C, every dowel engaged; reached through SystemTerm
+    /// (StiffnessLimit) only.
+    std::vector<Coupling>
+    couplings() const override;
+
     /// The statuses: engaged with the lower slab's w ahead by more than
     /// g, or the upper's; `both`, a spring without looseness (g = 0, or
     /// the union of a cycle).

@@ -34,8 +34,9 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
-    /// Refuse a list of stiffnesses that gives neither one value nor one
-    /// per joint of `slabs`.
+    /// Refuse a list of stiffnesses that gives neither one value, nor one
+    /// per joint of the whole plate, nor one per joint of the modelled
+    /// part of `slabs`.
     void
     check_against(const SlabLayout &slabs) const;
 

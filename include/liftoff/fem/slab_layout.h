@@ -41,6 +41,10 @@ namespace liftoff
     double             start;
     double             end;
     bool               on_plane = false;
+    /// Its place among the whole plate's joints (x1, x2, ..., y1, ...; a
+    /// mesh file's in its order), which lists per joint follow also on a
+    /// half or quarter model.
+    unsigned int number = 0;
   };
 
   /**
@@ -85,6 +89,9 @@ namespace liftoff
     /// The joints inside the modelled part of the plate.
     const std::vector<Joint> &
     joints() const;
+    /// The number of joints of the whole plate, modelled or not.
+    unsigned int
+    n_joints_of_plate() const;
     /// The joint a boundary id belongs to, or nullptr (an edge, a plane).
     const Joint *
     joint_of(const types::boundary_id id) const;

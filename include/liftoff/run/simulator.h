@@ -119,13 +119,13 @@ namespace liftoff
     get_plate() const;
 
   private:
-    MPI_Comm           mpi_communicator;
-    ConditionalOStream pcout;
-    /// `liftoff --quiet`: no progress line and the summary only in
-    /// summary.txt, one line on the terminal.
-    const bool   is_quiet;
-    SectionTimer timer;
-    Timer        wall_clock;
+    MPI_Comm mpi_communicator;
+    /// Rank 0's terminal, each stream on or off: `liftoff --quiet` writes
+    /// the one status line alone (the summary only in summary.txt), else
+    /// the start-up lines, the progress line and the summary.
+    ConditionalOStream pcout, status_out;
+    SectionTimer       timer;
+    Timer              wall_clock;
 
     /// The scene's unit system; converts an SI scene before the parts
     /// read it, and gives the outputs their units.
