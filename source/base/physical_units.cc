@@ -25,6 +25,27 @@ namespace liftoff
 {
   namespace
   {
+    /// `message` with each "tau = X" of the twin's time as "t = X t0 s",
+    /// the scene's time (a step's, an expression's).
+    std::string
+    with_seconds(const std::string &message, const double t0)
+    {
+      static const std::regex tau(
+        R"(\btau = ([-+]?[0-9]+(?:\.[0-9]+)?(?:[eE][-+]?[0-9]+)?))");
+      std::string timed;
+      auto        from = message.cbegin();
+      for (std::sregex_iterator m(message.cbegin(), message.cend(), tau), end;
+           m != end;
+           ++m)
+        {
+          timed.append(from, (*m)[0].first);
+          timed += "t = " + format_number(t0 * std::stod((*m)[1].str())) + " s";
+          from = (*m)[0].second;
+        }
+      return timed.append(from, message.cend());
+    }
+
+
     using System                         = PhysicalUnits::System;
     const Selection<System> system_names = {{"dimensionless",
                                              System::dimensionless},
@@ -705,6 +726,7 @@ namespace liftoff
         replace("<" + abbreviated(entry.twin) + ">",
                 "<" + abbreviated(entry.si) + ">");
       }
+    message = with_seconds(message, t0);
     // A group the message names is an entry the scene cannot set.
     for (const auto &[path, group] : group_entries)
       if (const auto at = message.find(path); at != std::string::npos)
@@ -756,6 +778,8 @@ namespace liftoff
         || quantity == "force per length")
       return "F0 = D / L = " + format_number(f0) + " N from " + plate
              + " and Units/Length = " + format_number(length) + " m";
+    if (quantity == "temperature difference")
+      return "the scene's own (K, not converted)";
     return "L = Units/Length = " + format_number(length) + " m";
   }
 
