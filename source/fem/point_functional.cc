@@ -169,24 +169,63 @@ namespace liftoff
 
   PointFunctional::PointFunctional(const Discretization &discretization,
                                    const Point<2>       &point,
-                                   const unsigned int    component)
+                                   const unsigned int    component,
+                                   const bool            shared_by_slabs)
   {
-    const auto &fe                = discretization.dof_handler.get_fe();
-    const auto [cell, unit_point] = holder_cell(discretization, point);
-    if (cell.state() != IteratorState::valid)
-      return;
-
-    FEValues<2> fe_values(discretization.mapping(),
-                          fe,
-                          Quadrature<2>(unit_point),
-                          update_values);
-    fe_values.reinit(cell);
-    dof_indices.resize(fe.n_dofs_per_cell());
-    cell->get_dof_indices(dof_indices);
-    weights.reinit(fe.n_dofs_per_cell());
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (fe.system_to_component_index(i).first == component)
-        weights[i] = fe_values.shape_value(i, 0);
+    // The first cell, and with `shared_by_slabs` one of every other slab
+    // (material id) at the point: the mesh is cut along the joints, so the
+    // slabs beyond one are reached across its faces, not by the vertices.
+    PointCells chosen = holder_cells(discretization, point);
+    chosen.resize(std::min<std::size_t>(chosen.size(), 1));
+    const SlabLayout &slabs = discretization.geometry().slabs();
+    for (unsigned int k = 0; shared_by_slabs && k < chosen.size(); ++k)
+      for (const unsigned int f : GeometryInfo<2>::face_indices())
+        {
+          const auto cell = chosen[k].first;
+          const auto unit = chosen[k].second;
+          if (!cell->face(f)->at_boundary()
+              || slabs.joint_of(cell->face(f)->boundary_id()) == nullptr
+              || std::abs(unit[f / 2] - f % 2) > tolerance)
+            continue;
+          // The neighbour may be refined: its child at the point, the one
+          // whose centre is nearest (the point lies on their edges).
+          auto across = slabs.across(cell, f);
+          while (across->has_children())
+            {
+              unsigned int nearest = 0;
+              for (unsigned int c = 1; c < across->n_children(); ++c)
+                if (across->child(c)->center().distance(point)
+                    < across->child(nearest)->center().distance(point))
+                  nearest = c;
+              across = across->child(nearest);
+            }
+          if (std::none_of(chosen.begin(), chosen.end(), [&](const auto &c) {
+                return c.first->material_id() == across->material_id();
+              }))
+            chosen.emplace_back(
+              dof_cell(discretization, across),
+              GeometryInfo<2>::project_to_unit_cell(
+                discretization.mapping().transform_real_to_unit_cell(across,
+                                                                     point)));
+        }
+    const auto        &fe = discretization.dof_handler.get_fe();
+    const unsigned int n  = fe.n_dofs_per_cell();
+    weights.reinit(n * chosen.size());
+    for (unsigned int k = 0; k < chosen.size(); ++k)
+      {
+        const auto &[cell, unit_point] = chosen[k];
+        FEValues<2> fe_values(discretization.mapping(),
+                              fe,
+                              Quadrature<2>(unit_point),
+                              update_values);
+        fe_values.reinit(cell);
+        std::vector<types::global_dof_index> dofs(n);
+        cell->get_dof_indices(dofs);
+        dof_indices.insert(dof_indices.end(), dofs.begin(), dofs.end());
+        for (unsigned int i = 0; i < n; ++i)
+          if (fe.system_to_component_index(i).first == component)
+            weights[k * n + i] = fe_values.shape_value(i, 0) / chosen.size();
+      }
   }
 
 

@@ -94,7 +94,7 @@ namespace liftoff
     const Point<2> p = position_at(tau);
     if (!disc.geometry().is_on_modelled_part(p))
       return;
-    const PointFunctional functional(disc, p);
+    const PointFunctional functional(disc, p, 0, true);
     functional.add_to(vector,
                       magnitude * disc.geometry().share_of_point_load(p),
                       disc.constraints);

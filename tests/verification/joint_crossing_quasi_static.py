@@ -10,8 +10,13 @@ x = -0.2, -0.05, 0.05 and 0.2, w at five probes (under those points and
 beside the joint) is compared with static runs of the same scene with the
 load at that point. The dynamic run lags the static one by the dashpots'
 force c v dw/dx and by inertia ~ v^2, so its difference must shrink
-with v: below 1 % of the largest |w| at v = 0.05, and about halve when v
-halves (ratio in [1.6, 2.6]).
+with v: below 1 % of the largest |w| at v = 0.0125, and about halve when
+v halves (ratio in [1.6, 2.6]). The stop 0.05 past the joint lies in the
+ringing of the load's jump from one slab to the other, which decays over a
+time, not a distance: at v = 0.1 it differed by 0.39 of the largest |w|
+where the other stops differ by 0.03, at v = 0.05 by 0.027 against 0.016,
+at 0.025 by 0.0094 against 0.0079 (the load on the joint at a step, half
+on each side). So the speeds are 0.025 and 0.0125.
 
     joint_crossing_quasi_static.py LIFTOFF
 """
@@ -74,10 +79,11 @@ def largest_difference(statics, history, v):
 with tempfile.TemporaryDirectory() as work:
     statics = [static_at(work, x) for x in STOPS]
     errors = {v: largest_difference(statics, moving(work, v), v)
-              for v in (0.1, 0.05)}
-    check(errors[0.05] < 1e-2, f"v = 0.05: w within {errors[0.05]:.2e} of "
-          "the static runs' largest |w| at the four stops")
-    ratio = errors[0.1] / errors[0.05]
-    check(1.6 < ratio < 2.6, f"v = 0.1: {errors[0.1]:.2e}, {ratio:.2f} times "
-          "v = 0.05's (the lag ~ v)")
+              for v in (0.025, 0.0125)}
+    check(errors[0.0125] < 1e-2, f"v = 0.0125: w within "
+          f"{errors[0.0125]:.2e} of the static runs' largest |w| at the "
+          "four stops")
+    ratio = errors[0.025] / errors[0.0125]
+    check(1.6 < ratio < 2.6, f"v = 0.025: {errors[0.025]:.2e}, {ratio:.2f} "
+          "times v = 0.0125's (the lag ~ v)")
 finish()

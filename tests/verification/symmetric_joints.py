@@ -11,6 +11,8 @@ line load along joints against the plate without them:
   side of a joint is the mirror image: [w] = 0 and [psi . n] = 2 psi . n,
   so the joint passes no shear and its rotational springs act with 2 R
   on the modelled side;
+- the same with point loads on the joints that lie on the planes (half
+  to each side);
 - the same with lists of stiffnesses per joint of the whole plate (the
   half and quarter models take their joints' values from them);
 - the same with x2 and y1 tied (a tied joint on a plane is the plane);
@@ -126,6 +128,13 @@ with tempfile.TemporaryDirectory() as work:
     check(np.max(np.abs(full["shear_x1"])) > 1e-3,
           f"x1, off the planes, passes shear (largest "
           f"{np.max(np.abs(full['shear_x1'])):.3e})")
+    # Point loads on the joints on the planes (x2 on x = 0, y1 on y = 0):
+    # half to each side, as the mirror image takes half on a plane (before,
+    # the full plate gave the whole load to the slab whose cell came first).
+    on_joints = {"Loads": {**LOADS["Loads"]}}
+    for k, (x, y) in enumerate([(0, 0.15), (0, -0.15), (0.3, 0), (-0.3, 0)]):
+        on_joints["Loads"].update(point_load(5 + k, x, y, 0.5)["Loads"])
+    symmetric_parts(work, "on-joints", {}, loads=on_joints)
     # Lists per joint of the whole plate (x1, x2, x3, y1), as Thicknesses
     # counts slabs, on every model: x1 and x3 mirror each other.
     symmetric_parts(work, "lists", {"Slabs": {

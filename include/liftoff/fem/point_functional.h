@@ -29,9 +29,14 @@ namespace liftoff
   class PointFunctional
   {
   public:
+    /// With `shared_by_slabs`, a concentrated force: shared equally by
+    /// the slabs that meet at `point`, each through its first cell there (a
+    /// load on a joint half to each side, as the mirror image takes half of
+    /// one on a symmetry plane); else the first cell's value.
     PointFunctional(const Discretization &discretization,
                     const Point<2>       &point,
-                    const unsigned int    component = 0);
+                    const unsigned int    component       = 0,
+                    const bool            shared_by_slabs = false);
 
     /// On the rank that holds `point`, every cell around it (a point on an
     /// edge or a vertex lies in several), this rank's own and its ghosts,
