@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <liftoff/contact/foundation_points.h>
+#include <liftoff/fem/plate_fields.h>
 
 #include <algorithm>
 
@@ -17,7 +18,7 @@ namespace liftoff
 
     w_dofs.clear();
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (fe.system_to_component_index(i).first == 0)
+      if (fe.system_to_component_index(i).first == PlateFields::bed_component)
         w_dofs.push_back(i);
 
     // Lagrange shape values at the Gauss points do not depend on the cell.

@@ -6,6 +6,7 @@
 #include <liftoff/base/number_text.h>
 #include <liftoff/contact/joint_dowels.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/plate_fields.h>
 
 #include <algorithm>
 #include <cmath>
@@ -454,7 +455,8 @@ namespace liftoff
                            update_values);
         values.reinit(side);
         for (unsigned int i = 0; i < n; ++i)
-          dowel.jump.push_back(factor * values.shape_value_component(i, 0, 0));
+          dowel.jump.push_back(
+            factor * values.shape_value_component(i, 0, PlateFields::w));
       }
     return dowel;
   }

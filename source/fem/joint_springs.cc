@@ -8,6 +8,7 @@
 #include <liftoff/base/number_text.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/joint_springs.h>
+#include <liftoff/fem/plate_fields.h>
 
 #include <cmath>
 #include <limits>
@@ -124,8 +125,7 @@ namespace liftoff
   {
     discretization = &disc;
     segments.clear();
-    w_dofs                  = DoFTools::extract_dofs(disc.dof_handler,
-                                    ComponentMask({true, false, false}));
+    w_dofs = DoFTools::extract_dofs(disc.dof_handler, PlateFields::w_mask());
     const SlabLayout &slabs = disc.geometry().slabs();
     has_springs             = false;
     for (unsigned int j = 0; j < slabs.joints().size(); ++j)
@@ -155,7 +155,7 @@ namespace liftoff
     const Mapping<2>       &mapping = discretization->mapping();
     const unsigned int      n       = fe.n_dofs_per_cell();
     const Joint       &j = discretization->geometry().slabs().joints()[joint];
-    const unsigned int rotation = 1 + j.normal_axis;
+    const unsigned int rotation = PlateFields::rotation(j.normal_axis);
 
     FEFaceValues<2> here(mapping,
                          fe,
@@ -195,9 +195,10 @@ namespace liftoff
         std::vector<double> w(2 * n), psi(2 * n);
         for (unsigned int i = 0; i < n; ++i)
           {
-            w[i]     = root * here.shape_value_component(i, q, 0);
-            w[n + i] = -root * other.shape_value_component(i, q, 0);
-            psi[i]   = root * here.shape_value_component(i, q, rotation);
+            w[i] = root * here.shape_value_component(i, q, PlateFields::w);
+            w[n + i] =
+              -root * other.shape_value_component(i, q, PlateFields::w);
+            psi[i] = root * here.shape_value_component(i, q, rotation);
             psi[n + i] =
               -mirror * root * other.shape_value_component(i, q, rotation);
           }

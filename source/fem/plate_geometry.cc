@@ -9,6 +9,7 @@
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/fem/plate_geometry.h>
 
 #include <algorithm>
@@ -59,15 +60,15 @@ namespace liftoff
       switch (condition)
         {
         case EdgeCondition::soft_simply_supported:
-          return ComponentMask(std::vector<bool>{true, false, false});
+          return PlateFields::mask(true, false, false);
         case EdgeCondition::hard_simply_supported:
-          return ComponentMask(std::vector<bool>{true, along_x, along_y});
+          return PlateFields::mask(true, along_x, along_y);
         case EdgeCondition::clamped:
-          return ComponentMask(std::vector<bool>{true, true, true});
+          return PlateFields::mask(true, true, true);
         case EdgeCondition::symmetry_plane:
-          return ComponentMask(std::vector<bool>{false, along_y, along_x});
+          return PlateFields::mask(false, along_y, along_x);
         default:
-          return ComponentMask(std::vector<bool>{false, false, false});
+          return PlateFields::mask(false, false, false);
         }
     }
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/fem/plate_matrices.h>
 #include <liftoff/fem/transverse_shear_strain.h>
 
@@ -22,11 +23,15 @@ namespace liftoff
                             FullMatrix<double>        &cell_stiffness,
                             FullMatrix<double>        &cell_mass)
     {
-      const FEValuesExtractors::Scalar w(0), psi_x(1), psi_y(2);
-      const double                     nu       = plate.poisson_ratio;
-      const double                     twisting = plate.twisting_stiffness();
-      const double                     rotary   = section.rotary;
-      const unsigned int               n_dofs   = cell_stiffness.m();
+      const FEValuesExtractors::Scalar w = PlateFields::w_extractor(),
+                                       psi_x =
+                                         PlateFields::rotation_extractor(0),
+                                       psi_y =
+                                         PlateFields::rotation_extractor(1);
+      const double       nu       = plate.poisson_ratio;
+      const double       twisting = plate.twisting_stiffness();
+      const double       rotary   = section.rotary;
+      const unsigned int n_dofs   = cell_stiffness.m();
       for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
         {
           const double dx      = fe_values.JxW(q);

@@ -2,6 +2,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/fem/transverse_shear_strain.h>
 
 namespace liftoff
@@ -94,7 +95,9 @@ namespace liftoff
                                           const unsigned int i,
                                           const unsigned int q)
   {
-    const FEValuesExtractors::Scalar w(0), psi_x(1), psi_y(2);
+    const FEValuesExtractors::Scalar w     = PlateFields::w_extractor(),
+                                     psi_x = PlateFields::rotation_extractor(0),
+                                     psi_y = PlateFields::rotation_extractor(1);
     return values[w].gradient(i, q)
            - Tensor<1, 2>(
              {values[psi_x].value(i, q), values[psi_y].value(i, q)});

@@ -3,6 +3,7 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/fem/patch_integrator.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/loads/load_kinds.h>
 #include <liftoff/loads/load_set.h>
 #include <liftoff/loads/pressure.h>
@@ -402,8 +403,9 @@ namespace liftoff
   void
   LoadSet::set_body_force(Function<2> *force)
   {
-    Assert(force == nullptr || force->n_components == 3,
-           ExcDimensionMismatch(force->n_components, 3));
+    Assert(force == nullptr || force->n_components == PlateFields::n_components,
+           ExcDimensionMismatch(force->n_components,
+                                PlateFields::n_components));
     body_force = force;
   }
 
@@ -413,7 +415,7 @@ namespace liftoff
   {
     body_force->set_time(tau);
     // Functions may implement only vector_value(); ask for all components.
-    Vector<double> values(3);
+    Vector<double> values(PlateFields::n_components);
     PatchIntegrator(*discretization)
       .add(
         [&](const Point<2> &x) {

@@ -4,6 +4,7 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/loads/temperature_load.h>
 
 #include <cmath>
@@ -166,14 +167,15 @@ namespace liftoff
   {
     // The thermal moment D (1 + nu) kappa_T (D = 1) against div psi_i, on
     // the rule PatchIntegrator uses on a whole cell.
-    const auto                          &fe = disc.dof_handler.get_fe();
-    const QGauss<2>                      rule(fe.degree + 2);
-    FEValues<2>                          values(disc.mapping(),
+    const auto                      &fe = disc.dof_handler.get_fe();
+    const QGauss<2>                  rule(fe.degree + 2);
+    FEValues<2>                      values(disc.mapping(),
                        fe,
                        rule,
                        update_gradients | update_quadrature_points
                          | update_JxW_values);
-    const FEValuesExtractors::Scalar     psi_x(1), psi_y(2);
+    const FEValuesExtractors::Scalar psi_x = PlateFields::rotation_extractor(0),
+                                     psi_y = PlateFields::rotation_extractor(1);
     Vector<double>                       cell_rhs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : disc.locally_owned_cells())

@@ -5,6 +5,7 @@
 
 #include <liftoff/base/archives.h>
 #include <liftoff/base/output_files.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/field_output.h>
 #include <liftoff/output/resultant_sweep.h>
@@ -58,7 +59,8 @@ namespace liftoff
           {
             const double g =
               (law.has_gap() ? law.gap_at(input.evaluation_points[q]) : 0.0);
-            const double w = input.solution_values[q][0] - g;
+            const double w =
+              input.solution_values[q][PlateFields::bed_component] - g;
             computed[q][0] = law.spring_pressure(w);
             computed[q][1] = std::max(-w, 0.0);
           }
@@ -76,10 +78,10 @@ namespace liftoff
     /// output to have two components, so (0, 0, w) needs the third
     /// dimension. The scalar fields stay as they are, so that old ParaView
     /// states keep working.
-    class PlateFields : public DataOutInterface<2, 3>
+    class WarpableFields : public DataOutInterface<2, 3>
     {
     public:
-      explicit PlateFields(const FieldDataOut &plane)
+      explicit WarpableFields(const FieldDataOut &plane)
           : names(plane.get_dataset_names())
           , ranges(plane.get_nonscalar_data_ranges())
       {
@@ -168,7 +170,7 @@ namespace liftoff
 
     /// What each field is, for its unit and scale: the state's and the
     /// foundation's here, the moments' in StressResultants; rotation and
-    /// displacement are PlateFields' vectors.
+    /// displacement are WarpableFields' vectors.
     std::map<std::string, PhysicalUnits::Quantity>
     all_field_quantities()
     {
@@ -524,7 +526,7 @@ namespace liftoff
       plane.put_in_units_of(units, field_quantities);
     for (const std::string vector : {"rotation", "displacement"})
       symbols[vector] = units.unit_symbol(field_quantities.at(vector));
-    PlateFields data_out(plane);
+    WarpableFields data_out(plane);
 
     data_out.set_flags(vtk_flags(time, step, higher_order_cells, symbols));
 

@@ -7,6 +7,7 @@
 #include <liftoff/base/number_text.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/joint_springs.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/fem/plate_geometry.h>
 #include <liftoff/output/joint_probes.h>
 #include <liftoff/output/resultant_sweep.h>
@@ -196,10 +197,11 @@ namespace liftoff
                                   update_values | update_gradients
                                     | update_quadrature_points);
             fe_values.reinit(cell);
-            std::vector<Vector<double>> computed, u(1, Vector<double>(3));
+            std::vector<Vector<double>> computed,
+              u(1, Vector<double>(PlateFields::n_components));
             resultants.evaluate(cell, fe_values, computed);
             fe_values.get_function_values(ghosted_u, u);
-            out[side]     = u[0][0];
+            out[side]     = u[0][PlateFields::w];
             out[3 + side] = computed[0][sigma];
           }
       }

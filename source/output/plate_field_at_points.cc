@@ -1,5 +1,6 @@
 #include <deal.II/fe/fe.h>
 
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/output/plate_field_at_points.h>
 
 namespace liftoff
@@ -18,7 +19,8 @@ namespace liftoff
   {
     for (auto &sum : sums)
       sum.resize(points.size());
-    AssertThrow(system.n_base_elements() == 1 && system.n_components() == 3,
+    AssertThrow(system.n_base_elements() == 1
+                  && system.n_components() == PlateFields::n_components,
                 ExcInternalError());
     for (unsigned int i = 0; i < system.n_dofs_per_cell(); ++i)
       {
@@ -70,13 +72,20 @@ namespace liftoff
               }
           }
       }
+    // sums[3 c + k]: the value (k = 0), d/dx (1) and d/dy (2) of
+    // component c.
+    const auto sum = [&](const unsigned int c, const unsigned int k) {
+      return sums[3 * c + k].data();
+    };
+    const unsigned int x = PlateFields::psi_x, y = PlateFields::psi_y;
     for (unsigned int q = 0; q < n; ++q)
       {
-        w[q]      = sums[0][q];
-        grad_w[q] = Tensor<1, 2>({sums[1][q], sums[2][q]});
-        psi[q]    = Tensor<1, 2>({sums[3][q], sums[6][q]});
-        grad_psi[q] =
-          Tensor<2, 2>({{sums[4][q], sums[5][q]}, {sums[7][q], sums[8][q]}});
+        w[q] = sum(PlateFields::w, 0)[q];
+        grad_w[q] =
+          Tensor<1, 2>({sum(PlateFields::w, 1)[q], sum(PlateFields::w, 2)[q]});
+        psi[q]      = Tensor<1, 2>({sum(x, 0)[q], sum(y, 0)[q]});
+        grad_psi[q] = Tensor<2, 2>(
+          {{sum(x, 1)[q], sum(x, 2)[q]}, {sum(y, 1)[q], sum(y, 2)[q]}});
       }
   }
 

@@ -4,6 +4,7 @@
 
 #include <liftoff/base/number_text.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/output/small_deflection_check.h>
 #include <liftoff/time/plate_state.h>
@@ -41,8 +42,7 @@ namespace liftoff
     if (!is_checked)
       return;
     const IndexSet w_dofs =
-      DoFTools::extract_dofs(discretization.dof_handler,
-                             ComponentMask({true, false, false}));
+      DoFTools::extract_dofs(discretization.dof_handler, PlateFields::w_mask());
     for (const types::global_dof_index i : w_dofs)
       w_entries.push_back(
         discretization.locally_owned_dofs.index_within_set(i));

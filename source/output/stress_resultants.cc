@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/output/stress_resultants.h>
 
 #include <algorithm>
@@ -230,7 +231,8 @@ namespace liftoff
     else
       for (unsigned int q = 0; q < unit_points.size(); ++q)
         for (unsigned int d = 0; d < 2; ++d)
-          gamma[q][d] = gradient[q][0][d] - value[q][1 + d];
+          gamma[q][d] =
+            gradient[q][PlateFields::w][d] - value[q][PlateFields::rotation(d)];
 
     const double              nu      = plate.poisson_ratio;
     const SectionCoefficients section = plate.section(cell->material_id());
@@ -242,8 +244,10 @@ namespace liftoff
     const double bending = -section.bending;
     for (unsigned int q = 0; q < unit_points.size(); ++q)
       {
-        // Components: 0 w, 1 psi_x, 2 psi_y.
-        const PlaneMoments m(bending, nu, gradient[q][1], gradient[q][2]);
+        const PlaneMoments m(bending,
+                             nu,
+                             gradient[q][PlateFields::psi_x],
+                             gradient[q][PlateFields::psi_y]);
         Vector<double>    &out = computed[q];
         out[0]                 = m.xx;
         out[1]                 = m.yy;
@@ -323,10 +327,11 @@ namespace liftoff
                              const FEValues<2>                  &values,
                              std::vector<Vector<double>>        &computed) const
   {
-    const unsigned int                     n = values.n_quadrature_points;
-    std::vector<Vector<double>>            point_values(n, Vector<double>(3));
+    const unsigned int          n = values.n_quadrature_points;
+    std::vector<Vector<double>> point_values(
+      n, Vector<double>(PlateFields::n_components));
     std::vector<std::vector<Tensor<1, 2>>> gradients(
-      n, std::vector<Tensor<1, 2>>(3));
+      n, std::vector<Tensor<1, 2>>(PlateFields::n_components));
     values.get_function_values(solution, point_values);
     values.get_function_gradients(solution, gradients);
     computed.resize(n, Vector<double>(names.size()));

@@ -8,6 +8,7 @@
 #include <liftoff/base/number_text.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/joint_springs.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/time/plate_state.h>
 
 #include <liftoff/output/resultant_sweep.h>
@@ -190,8 +191,8 @@ namespace liftoff
       if (quantity == "w")
         {
           std::vector<double> w(1);
-          fe_values[FEValuesExtractors::Scalar(0)].get_function_values(
-            ghosted_u, w);
+          fe_values[PlateFields::w_extractor()].get_function_values(ghosted_u,
+                                                                    w);
           return w[0];
         }
       std::vector<Vector<double>> fields;
@@ -685,9 +686,7 @@ namespace liftoff
         // the sign the reflection gives the field.
         probe.sign = mirror_sign(probe.quantity, probe.point, image);
       }
-    w_dofs = DoFTools::extract_dofs(disc.dof_handler,
-                                    disc.dof_handler.get_fe().component_mask(
-                                      FEValuesExtractors::Scalar(0)));
+    w_dofs = DoFTools::extract_dofs(disc.dof_handler, PlateFields::w_mask());
     gap_at_w_dofs.clear();
     if (write_resultant)
       disc.reinit_ghosted_vector(ghosted_velocity);
@@ -701,11 +700,10 @@ namespace liftoff
       return;
     const Discretization                       &disc = step.discretization;
     std::map<types::global_dof_index, Point<2>> points;
-    DoFTools::map_dofs_to_support_points(
-      disc.mapping(),
-      disc.dof_handler,
-      points,
-      disc.dof_handler.get_fe().component_mask(FEValuesExtractors::Scalar(0)));
+    DoFTools::map_dofs_to_support_points(disc.mapping(),
+                                         disc.dof_handler,
+                                         points,
+                                         PlateFields::w_mask());
     for (const auto i : w_dofs)
       gap_at_w_dofs.push_back(step.foundation.law().gap_at(points.at(i)));
   }

@@ -8,6 +8,7 @@
 #include <liftoff/fem/initial_conditions.h>
 #include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/fem/mindlin_plate.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/fem/plate_matrices.h>
 #include <liftoff/fem/point_functional.h>
 #include <liftoff/fem/stiffness_limit.h>
@@ -135,7 +136,7 @@ namespace liftoff
     largest_eigenvalue  = 0;
     if (controller.is_enabled())
       w_entries = DoFTools::extract_dofs(discretization.dof_handler,
-                                         ComponentMask({true, false, false}));
+                                         PlateFields::w_mask());
   }
 
 

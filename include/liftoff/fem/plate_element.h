@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/fe/fe_system.h>
 
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/fem/transverse_shear_strain.h>
 
 #include <memory>
@@ -21,7 +22,7 @@ namespace liftoff
   class PlateElement
   {
   public:
-    static constexpr unsigned int n_components = 3;
+    static constexpr unsigned int n_components = PlateFields::n_components;
 
     /// Entries in "Discretization": Polynomial degree, Element, Shear
     /// integration.

@@ -20,10 +20,10 @@ namespace liftoff
   struct PlateFields
   {
     /// The components, in the element's order.
-    static constexpr unsigned int w             = 0;
-    static constexpr unsigned int psi_x         = 1;
-    static constexpr unsigned int psi_y         = 2;
-    static constexpr unsigned int n_components  = 3;
+    static constexpr unsigned int w            = 0;
+    static constexpr unsigned int psi_x        = 1;
+    static constexpr unsigned int psi_y        = 2;
+    static constexpr unsigned int n_components = 3;
     /// The deflection the bed's springs act on.
     static constexpr unsigned int bed_component = w;
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/plate_fields.h>
 
 #include <vector>
 
@@ -35,7 +36,7 @@ namespace liftoff
     /// one on a symmetry plane); else the first cell's value.
     PointFunctional(const Discretization &discretization,
                     const Point<2>       &point,
-                    const unsigned int    component       = 0,
+                    const unsigned int    component       = PlateFields::w,
                     const bool            shared_by_slabs = false);
 
     /// On the rank that holds `point`, every cell around it (a point on an
