@@ -25,13 +25,13 @@ namespace liftoff
 {
   namespace
   {
-    /// `message` with each "tau = X" of the twin's time as "t = X t0 s",
-    /// the scene's time (a step's, an expression's).
+    /// `message` with each "tau = X" (a time) and "dtau = X" (a step) of
+    /// the twin's as "t = X t0 s" and "dt = X t0 s", the scene's.
     std::string
     with_seconds(const std::string &message, const double t0)
     {
       static const std::regex tau(
-        R"(\btau = ([-+]?[0-9]+(?:\.[0-9]+)?(?:[eE][-+]?[0-9]+)?))");
+        R"(\b(d?)tau = ([-+]?[0-9]+(?:\.[0-9]+)?(?:[eE][-+]?[0-9]+)?))");
       std::string timed;
       auto        from = message.cbegin();
       for (std::sregex_iterator m(message.cbegin(), message.cend(), tau), end;
@@ -39,7 +39,8 @@ namespace liftoff
            ++m)
         {
           timed.append(from, (*m)[0].first);
-          timed += "t = " + format_number(t0 * std::stod((*m)[1].str())) + " s";
+          timed += (*m)[1].str() + "t = "
+                   + format_number(t0 * std::stod((*m)[2].str())) + " s";
           from = (*m)[0].second;
         }
       return timed.append(from, message.cend());
@@ -713,6 +714,38 @@ namespace liftoff
 
 
   std::string
+  PhysicalUnits::with_written_numbers(const std::string &message) const
+  {
+    // A number an owner quotes as <value> in its own format (fewer digits
+    // than the twin's text) is the entry whose twin value it rounds, if
+    // one does.
+    static const std::regex quoted(R"(<([-+0-9.eE]+)>)");
+    std::string             result;
+    auto                    from = message.cbegin();
+    for (std::sregex_iterator m(message.cbegin(), message.cend(), quoted), end;
+         m != end;
+         ++m)
+      {
+        result.append(from, (*m)[0].first);
+        std::string token = (*m)[0].str();
+        if (Patterns::Double().match((*m)[1].str()))
+          for (const auto &[path, entry] : twin_values)
+            if (Patterns::Double().match(entry.twin))
+              {
+                const double quoted_value = std::stod((*m)[1].str());
+                const double twin         = std::stod(entry.twin);
+                if (twin != 0
+                    && std::abs(quoted_value - twin) <= 1e-7 * std::abs(twin))
+                  token = "<" + entry.si + ">";
+              }
+        result += token;
+        from = (*m)[0].second;
+      }
+    return result.append(from, message.cend());
+  }
+
+
+  std::string
   PhysicalUnits::in_scene_terms(std::string message) const
   {
     const auto replace = [&](const std::string &from, const std::string &to) {
@@ -726,6 +759,7 @@ namespace liftoff
         replace("<" + abbreviated(entry.twin) + ">",
                 "<" + abbreviated(entry.si) + ">");
       }
+    message = with_written_numbers(message);
     message = with_seconds(message, t0);
     // A group the message names is an entry the scene cannot set.
     for (const auto &[path, group] : group_entries)

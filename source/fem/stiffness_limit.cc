@@ -49,12 +49,14 @@ namespace liftoff
               + " times the plate's own stiffness to the diagonal of the "
                 "rows they join, which drowns the plate's digits in double "
                 "precision. The largest value that works for this scene is "
-              + format_number(largest) + " (" + format_number(largest_ratio)
-              + " times the plate's entry); from about "
-              + format_number(largest / 10)
-              + " on, the joint is as stiff as it gets to about 1e-6 of "
-                "the answer, so a larger value changes only the "
-                "round-off."));
+                "the given one divided by "
+              + format_number(coupling.value / largest) + " ("
+              + format_number(largest)
+              + " in the dimensionless units the solver runs in, "
+              + format_number(largest_ratio)
+              + " times the plate's entry); from a tenth of that on, the "
+                "joint is as stiff as it gets to about 1e-6 of the answer, "
+                "so a larger value changes only the round-off."));
         }
   }
 } // namespace liftoff

@@ -210,8 +210,7 @@ namespace liftoff
                                "Output/Directory, which is empty."));
       }
     // Checks that need the mesh and matrices precede touching the folder.
-    setup();
-    check_before_run();
+    units.explain_run_errors_of([this]() { setup(), check_before_run(); });
 
     // The folder is this run's from here until run() returns or throws.
     output_folder = prepare_output_directory(start);

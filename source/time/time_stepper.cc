@@ -156,10 +156,10 @@ namespace liftoff
     const double limit = stable_time_step();
     AssertThrow(state_.clock.time_step() <= limit,
                 ExcMessage(
-                  "Time integration/Time step = "
+                  "Time integration/Time step = <"
                   + format_number(state_.clock.time_step())
-                  + " exceeds the stability limit " + format_number(limit)
-                  + " of Newmark's method with Beta = "
+                  + "> exceeds the stability limit dtau = "
+                  + format_number(limit) + " of Newmark's method with Beta = "
                   + format_number(newmark.beta)
                   + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
                   + " (omega_max^2 of M^-1 (K + K_f) estimated as "

@@ -181,6 +181,10 @@ namespace liftoff
     /// the solver integrates named.
     std::string
     in_scene_terms(std::string message) const;
+    /// `message` with each number quoted as <value> that rounds an
+    /// entry's twin value replaced by the value the scene wrote.
+    std::string
+    with_written_numbers(const std::string &message) const;
 
     /// How the SI entries give `group` (a name of entry_quantity.h), with
     /// their values.
