@@ -27,8 +27,9 @@ full ladder is then run by the study tool into the same folder with
 --reuse (the climb's runs are kept).
 
 Hostile input: a target <= 0, NaN, infinite or not a number, a bad assumed
-order, --target with --sweep zip, a ladder of one run, --absolute without
---target, an unknown quantity, a ladder that runs out before the target
+order, --target with --sweep zip, --time-steps or --target with automatic
+steps (Time step control = error, from --set or the scene), a ladder of
+one run, --absolute without --target, an unknown quantity, a ladder that runs out before the target
 (the best estimate named), a run that fails: each one line on stderr, a
 non-zero exit, and no target.md or target.csv written.
 """
@@ -172,6 +173,25 @@ def hostile(tool, liftoff, work, scene):
     refused(tool, liftoff, scene, fresh, "--absolute alone",
             "--absolute applies to --target", "--absolute",
             *BOUNCE_LADDER)
+    # Automatic steps: Time step is then the row interval, not the step.
+    refused(tool, liftoff, scene, fresh, "--target in Time step with "
+            "automatic steps", "--time-steps with Time integration/Time "
+            "step control = error: Time step is then only the row interval",
+            "--target", "1e-2", "--set",
+            "Time integration/Time step control=error", *BOUNCE_LADDER)
+    refused(tool, liftoff, scene, fresh, "a full study in Time step with "
+            "automatic steps", "--time-steps with Time integration/Time "
+            "step control = error", "--set",
+            "Time integration/Time step control = error", *BOUNCE_LADDER)
+    automatic = os.path.join(work, "automatic.prm")
+    with open(automatic, "w") as f:
+        f.write(BOUNCE + "subsection Time integration\n  set Time step "
+                "control = error\nend\n")
+    refused(tool, liftoff, automatic, fresh, "--target on a mesh ladder of "
+            "a scene with automatic steps", "--target with Time "
+            "integration/Time step control = error: the climb cannot "
+            "estimate the time error", "--target", "1e-2",
+            *BOUNCE_LADDER[2:])
     check(not os.path.exists(fresh), "no folder made for a refused option")
     # On the bounce's folder, whose runs --reuse takes.
     bounce = os.path.join(work, "bounce")
