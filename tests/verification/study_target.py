@@ -30,7 +30,8 @@ same folder with --reuse (the climb's runs are kept).
 
 Hostile input: a target <= 0, NaN, infinite or not a number, a bad assumed
 order, --target with --sweep zip, --time-steps or --target without
---tolerances on a scene with automatic steps (from --set or the scene),
+--tolerances on a scene with automatic steps (from --set, the scene or a
+file it includes),
 --tolerances on fixed steps or without --target, rungs of --tolerances
 whose steps the largest step or the finest level sets instead, a ladder
 of one run, --absolute without --target, an unknown quantity, a ladder
@@ -208,6 +209,15 @@ def hostile(tool, liftoff, work, scene):
             "a scene with automatic steps", "--target with Time "
             "integration/Time step control = error needs --tolerances",
             "--target", "1e-2", *BOUNCE_LADDER[2:])
+    # Automatic steps set in an included file: seen in the first run's
+    # used parameters, before a second run.
+    included = os.path.join(work, "included.prm")
+    with open(included, "w") as f:
+        f.write("include %s\n" % automatic)
+    refused(tool, liftoff, included, os.path.join(work, "included"),
+            "--target on a scene that includes automatic steps", "--time-"
+            "steps with Time integration/Time step control = error",
+            "--target", "1e-2", *BOUNCE_LADDER)
     refused(tool, liftoff, scene, fresh, "--tolerances on fixed steps",
             "--tolerances ladders Time integration/Error tolerance in a "
             "climb to --target, on a scene with Time integration/Time step "
