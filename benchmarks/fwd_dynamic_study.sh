@@ -8,16 +8,24 @@
 # self-weight; no dashpots in either). About 30 runs of 1 s per fit; the
 # static fits of the same tests are in doc/studies.md's tables above.
 #
-#     benchmarks/fwd_dynamic_study.sh build/liftoff FOLDER
+#     benchmarks/fwd_dynamic_study.sh build/liftoff FOLDER [NX NY DT]
+#
+# With NX NY DT every scene, tests and model alike, runs on NX x NY cells
+# with the time step DT (the scene's: 9 8 5e-4), for the fits'
+# discretisation error.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 liftoff=$(realpath "$1")
 mkdir -p "$2" && cd "$2"
 centre="$root/prm/fwd-centre.prm"
 
+resolution=""
+if [ $# -ge 5 ]; then
+  resolution=$(printf 'subsection Discretization\n  set Cells along x = %s\n  set Cells along y = %s\nend\nsubsection Time integration\n  set Time step = %s\nend' "$3" "$4" "$5")
+fi
 scene() {  # scene NAME TEXT: fwd-centre.prm without its voids, and TEXT
-  printf 'include %s\nsubsection Foundation\n  set Initial gap = 0\nend\n%s\nsubsection Output\n  set Directory = out-%s\nend\n' \
-    "$centre" "$2" "$1" > "$1.prm"
+  printf 'include %s\nsubsection Foundation\n  set Initial gap = 0\nend\n%s\n%s\nsubsection Output\n  set Directory = out-%s\nend\n' \
+    "$centre" "$2" "$resolution" "$1" > "$1.prm"
 }
 curling() {
   printf 'subsection Loads\n  subsection Temperature load 1\n    set Magnitude = %s\n    set Expansion coefficient = 1e-5\n    set Permanent = true\n  end\nend\n' "$1"

@@ -5,10 +5,14 @@ speeds, on a tensionless and on a bilateral bed, with loose dowels (g =
 interlock AGG = C / s (doc/studies.md, "A truck crossing a doweled joint").
 
     /usr/bin/python3 benchmarks/joint_speed_study.py build/liftoff [DT]
+        [--speeds 5,20,40] [--beds tensionless,bilateral]
+        [--time-step-divisor K] [--mesh-factor M]
 
 With DT (K, top minus bottom; -15 for a night) the slabs are curled by a
 permanent temperature difference (alpha = 1e-5 / K) before the truck comes,
-and only the dowelled joints are run.
+and only the dowelled joints are run. The scene's 1 ms step is divided by
+K and its 36 x 15 cells multiplied by M along each side, for the figures'
+discretisation error.
 
 prints one row per run: the LTE as the rear axle's outer wheel reaches the
 joint (w at both faces in its path, from the settled state, w_unloaded /
@@ -16,6 +20,7 @@ w_loaded), the largest dowel force, the largest principal moment as a
 stress 6 M / h^2 and the smallest contact fraction.
 """
 
+import argparse
 import os
 import re
 import sys
@@ -27,8 +32,16 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests",
                                 "common"))
 from scenes import read_history, run_scene_or_fail  # noqa: E402
 
-LIFTOFF = os.path.abspath(sys.argv[1])
-CURL = float(sys.argv[2]) if len(sys.argv) > 2 else 0.0
+parser = argparse.ArgumentParser()
+parser.add_argument("liftoff")
+parser.add_argument("curl", nargs="?", type=float, default=0.0)
+parser.add_argument("--speeds", default="5,20,40")
+parser.add_argument("--beds", default="tensionless,bilateral")
+parser.add_argument("--time-step-divisor", type=int, default=1)
+parser.add_argument("--mesh-factor", type=int, default=1)
+ARGS = parser.parse_args()
+LIFTOFF = os.path.abspath(ARGS.liftoff)
+CURL = ARGS.curl
 SCENE = os.path.join(os.path.dirname(__file__), "..", "prm",
                      "doweled-joint-truck.prm")
 H = 0.25
@@ -42,6 +55,12 @@ def variant(text, speed, bed, joint):
     text = re.sub(r"set End time  = \S+", f"set End time  = {8.0 / speed:g}",
                   text)
     text = text.replace("set Model = tensionless", f"set Model = {bed}")
+    text = text.replace("set Time step = 1e-3",
+                        f"set Time step = {1e-3 / ARGS.time_step_divisor!r}")
+    text = text.replace("set Cells along x     = 36",
+                        f"set Cells along x     = {36 * ARGS.mesh_factor}")
+    text = text.replace("set Cells along y     = 15",
+                        f"set Cells along y     = {15 * ARGS.mesh_factor}")
     text = text.replace("  set VTU interval = 25",
                         "  set VTU interval = 0\n"
                         "  set Write moment extremes = true")
@@ -79,8 +98,8 @@ with open(SCENE) as f:
 print("speed  bed          joint       LTE    max dowel [kN]  "
       "max stress [MPa]  min contact")
 with tempfile.TemporaryDirectory() as work:
-    for speed in [5, 20, 40]:
-        for bed in ["tensionless", "bilateral"]:
+    for speed in [int(v) for v in ARGS.speeds.split(",")]:
+        for bed in ARGS.beds.split(","):
             for joint in (["loose", "tight"] if CURL else
                           ["loose", "tight", "interlock"]):
                 name = f"v{speed}_{bed}_{joint}"

@@ -5,10 +5,12 @@ a force crossing the strip on a damped bilateral bed against the infinite
 beam's steady state (Kenney), from 0.2 to 2 v_cr.
 
     /usr/bin/python3 benchmarks/moving_speed_sweep.py build/liftoff \\
-        doc/figures/moving-loads/speed-sweep.png
+        doc/figures/moving-loads/speed-sweep.png [FACTOR]
 
 prints a table (v / v_cr, w under the load by liftoff and by the closed
 form, both over the static closed form, the basin's error) and draws it.
+FACTOR (default 1) multiplies the cells and so divides h and the step
+h / (2 v), the patch kept: the figures' discretisation error.
 """
 
 import os
@@ -28,12 +30,16 @@ import moving_beam_winkler as strip  # noqa: E402
 
 strip.LIFTOFF = sys.argv[1]
 figure = sys.argv[2]
+factor = int(sys.argv[3]) if len(sys.argv) > 3 else 1
+strip.CELLS *= factor
+strip.H /= factor
 static = strip.SteadyState(1e-9, strip.DAMPING).patch(0)[0]
 ratios = np.round(np.arange(0.2, 2.01, 0.15), 2)
 rows = []
 with tempfile.TemporaryDirectory() as work:
     for ratio in ratios:
-        under, exact, basin, scale = strip.measure(ratio * strip.V_CR, work)
+        under, exact, basin, scale = strip.measure(ratio * strip.V_CR,
+                                                   work)[:4]
         rows.append((ratio, under / static, exact / static, basin,
                      scale / static))
         print("v/v_cr %.2f  w/w_static liftoff %8.5f  closed form %8.5f  "

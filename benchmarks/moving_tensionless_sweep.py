@@ -7,11 +7,13 @@ speeds, in profiles taken every 0.025 of the load's travel from X = -0.1
 to 0.25 (after 16 l to 31 l of travel).
 
     /usr/bin/python3 benchmarks/moving_tensionless_sweep.py build/liftoff \\
-        doc/figures/moving-loads
+        doc/figures/moving-loads [FACTOR]
 
 prints the reference's ends and w under the load against speed, the fold,
 and liftoff's ends (mean and range over the profiles) at each speed, and
 draws tensionless-ends.png and tensionless-basin.png into the folder.
+FACTOR (default 1) multiplies the cells and so divides h and the step
+h / (2 v), the patch kept: the figures' discretisation error.
 """
 
 import os
@@ -33,6 +35,9 @@ import moving_beam_tensionless as test  # noqa: E402
 strip = test.strip
 strip.LIFTOFF = sys.argv[1]
 folder = sys.argv[2]
+factor = int(sys.argv[3]) if len(sys.argv) > 3 else 1
+strip.CELLS *= factor
+strip.H /= factor
 ELL = test.ELL
 SPEEDS = (0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.6)
 LOAD_AT = tuple(np.round(np.arange(-0.1, 0.2501, 0.025), 3))

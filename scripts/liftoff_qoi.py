@@ -1,6 +1,6 @@
 """A study's quantities of interest: a column of a run's history.csv or
-its profiles, sampled at given times, and the relative max-norm difference
-between two runs' values. Shared by scripts/liftoff-study's full ladder and
+its profiles, sampled at given times, or a column's peak over the run's own
+steps, and the relative max-norm difference between two runs' values. Shared by scripts/liftoff-study's full ladder and
 its target-driven climb (scripts/liftoff_target.py).
 """
 
@@ -51,9 +51,36 @@ def split_qoi(qoi):
         return qoi, None
 
 
+PEAK = "peak:"
+
+
+def is_peak(qoi):
+    return qoi.startswith(PEAK)
+
+
+def peak(run, qoi, times):
+    """"peak:name" as (value, time): the value of largest magnitude, with
+    its sign, over the run's own history rows from the first to the last
+    of times. Sampled at a coarser run's times instead, a peak between
+    them would be cut off by an amount that depends on where the coarse
+    steps fall, not on the run's error."""
+    name = qoi[len(PEAK):]
+    history = run["history"]
+    if name not in history.columns:
+        raise StudyError("quantity of interest '%s' is not a column of "
+                         "history.csv; the columns are: %s"
+                         % (name, ", ".join(history.columns)))
+    taus = history["tau"].to_numpy()
+    keep = ((taus >= times[0] - tolerance(times[0]))
+            & (taus <= times[-1] + tolerance(times[-1])))
+    taus, values = taus[keep], history[name].to_numpy()[keep]
+    k = int(np.argmax(np.abs(values)))
+    return float(values[k]), float(taus[k])
+
+
 def qoi_values(run, qoi, times):
     """The quantity as one array, comparable between runs. "name@T" is the
-    quantity from tau = T on."""
+    quantity from tau = T on; "peak:name" is a one-value array."""
     qoi, start = split_qoi(qoi)
     times = np.asarray(times)
     if start is not None:
@@ -61,6 +88,8 @@ def qoi_values(run, qoi, times):
         if not len(times):
             raise StudyError("'%s@%g' starts after the end time" % (qoi,
                                                                    start))
+    if is_peak(qoi):
+        return np.array([peak(run, qoi, times)[0]])
     if qoi == "profiles":
         profiles = run["profiles"]
         if profiles is None or profiles.empty:

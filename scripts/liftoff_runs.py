@@ -140,15 +140,21 @@ def parse_parameters(path):
     """A ParameterHandler file such as used_parameters.prm as a dict that
     maps "Section/.../Entry" to the value's text (the last set wins, as in
     ParameterHandler)."""
-    values, sections = {}, []
     with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if line.startswith("subsection "):
-                sections.append(line[len("subsection "):].strip())
-            elif line == "end":
-                sections.pop()
-            elif line.startswith("set "):
-                entry, _, value = line[len("set "):].partition("=")
-                values["/".join(sections + [entry.strip()])] = value.strip()
+        return parameter_values(f.read())
+
+
+def parameter_values(text):
+    """ParameterHandler text (a scene with its overrides) as the dict of
+    parse_parameters; an entry the text does not set is absent."""
+    values, sections = {}, []
+    for line in text.splitlines():
+        line = line.split("#", 1)[0].strip()
+        if line.startswith("subsection "):
+            sections.append(line[len("subsection "):].strip())
+        elif line == "end" and sections:
+            sections.pop()
+        elif line.startswith("set "):
+            entry, _, value = line[len("set "):].partition("=")
+            values["/".join(sections + [entry.strip()])] = value.strip()
     return values

@@ -66,6 +66,11 @@ class Climb:
         self.target = options["target"]
         self.absolute = options["absolute"]
         self.assumed = options["assumed_order"]
+        # With automatic steps the time axis is Error tolerance, its step
+        # tol^(1/3) (scripts/liftoff-study, time_axis).
+        self.tolerances = options.get("tolerances", False)
+        self.names = dict(NAMES, dtau="tolerance") if self.tolerances \
+            else NAMES
         self.bring = bring
         self.made = []
         self.times = None
@@ -238,7 +243,8 @@ class Climb:
         return fine
 
     def parts_text(self, qoi):
-        return ", ".join("%s %s" % (NAMES[a], part_text(self.parts[a][qoi]))
+        return ", ".join("%s %s" % (self.names[a],
+                                    part_text(self.parts[a][qoi]))
                          for a in self.ladder if a in self.parts)
 
 
@@ -280,7 +286,7 @@ def progress_line(run, climb):
 def definitions(climb):
     return ("Estimated error: the sum over the ladder's axes of Richardson's "
             "estimate d / (r^k - 1) along each axis (d the difference of its "
-            "last two rungs, %s; r their ratio of dtau, h or 1/p; k the "
+            "last two rungs, %s; r their ratio of %s, h or 1/p; k the "
             "order observed on the axis's last two steps, else the assumed "
             "%g). Agreement: the estimate with the observed order over the "
             "same estimate with the order seen a step earlier on the axis, "
@@ -290,6 +296,7 @@ def definitions(climb):
                "coarsest time step" if climb.absolute else
                "the largest difference over the times of the coarsest time "
                "step relative to the finer rung's largest magnitude",
+               "Error tolerance^(1/3)" if climb.tolerances else "dtau",
                climb.assumed))
 
 
