@@ -74,7 +74,11 @@ def peak(run, qoi, times):
     keep = ((taus >= times[0] - tolerance(times[0]))
             & (taus <= times[-1] + tolerance(times[-1])))
     taus, values = taus[keep], history[name].to_numpy()[keep]
-    k = int(np.argmax(np.abs(values)))
+    if np.all(np.isnan(values)):
+        raise StudyError("'%s' is empty in every row of run %s (a load "
+                         "transfer whose load stays far from its joint)"
+                         % (name, run["label"]))
+    k = int(np.nanargmax(np.abs(values)))
     return float(values[k]), float(taus[k])
 
 
@@ -110,10 +114,16 @@ def difference(a, b, scale):
     if len(a) != len(b):
         raise StudyError("quantities of different length (%d, %d): do the "
                          "runs write the same profiles?" % (len(a), len(b)))
-    return float(np.max(np.abs(a - b))) / scale
+    # An empty cell (a load transfer with the load far from its joint) is
+    # compared where both runs have a value.
+    both = ~(np.isnan(a) | np.isnan(b))
+    if not np.any(both):
+        raise StudyError("no row where both runs give the quantity (empty "
+                         "cells: a load transfer with the load far)")
+    return float(np.max(np.abs(a[both] - b[both]))) / scale
 
 
 def magnitude(values):
     """The largest magnitude, or 1 where all are zero (a relative error
     then is an absolute one)."""
-    return float(np.max(np.abs(values))) or 1.0
+    return float(np.nanmax(np.abs(values), initial=0.0)) or 1.0
