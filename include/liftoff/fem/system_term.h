@@ -33,7 +33,8 @@ namespace liftoff
   /**
    * A term of the plate's system: the plate itself (stiffness and mass,
    * PlateTerm), the foundation (TensionlessWinklerFoundation), and the
-   * couplings to come (springs between two slabs' edges). The system
+   * couplings between slabs (JointSprings along the joints, JointDowels at
+   * points). The system
    * matrix, the internal force, the stored energy and the checkpoint are
    * the sums of its terms' (SceneParts::system_terms(), the plate first).
    *
