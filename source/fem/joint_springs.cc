@@ -177,7 +177,6 @@ namespace liftoff
     // The mirror's values are this side's, so that [w] is exactly 0.
     const FEValuesBase<2> &other =
       j.on_plane ? static_cast<const FEValuesBase<2> &>(here) : there;
-
     Segment segment;
     segment.joint = joint;
     segment.sign  = cell->face(face)->boundary_id() == j.lower_side ? 1 : -1;
@@ -193,12 +192,12 @@ namespace liftoff
       {
         const double        root = std::sqrt(share * here.JxW(q));
         std::vector<double> w(2 * n), psi(2 * n);
+        const unsigned int  of_w = PlateFields::w;
         for (unsigned int i = 0; i < n; ++i)
           {
-            w[i] = root * here.shape_value_component(i, q, PlateFields::w);
-            w[n + i] =
-              -root * other.shape_value_component(i, q, PlateFields::w);
-            psi[i] = root * here.shape_value_component(i, q, rotation);
+            w[i]     = root * here.shape_value_component(i, q, of_w);
+            w[n + i] = -root * other.shape_value_component(i, q, of_w);
+            psi[i]   = root * here.shape_value_component(i, q, rotation);
             psi[n + i] =
               -mirror * root * other.shape_value_component(i, q, rotation);
           }

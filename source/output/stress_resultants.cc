@@ -233,7 +233,6 @@ namespace liftoff
         for (unsigned int d = 0; d < 2; ++d)
           gamma[q][d] =
             gradient[q][PlateFields::w][d] - value[q][PlateFields::rotation(d)];
-
     const double              nu      = plate.poisson_ratio;
     const SectionCoefficients section = plate.section(cell->material_id());
     // 6 / Delta_s^2: the face stress 6 M / H_s^2 in units of F0 / L^2.
