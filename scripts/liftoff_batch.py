@@ -65,11 +65,26 @@ def make(run, args):
         code, elapsed, cpu = run_scene_timed(args.executable, run["scene"],
                                              directory, ranks=args.ranks)
     if code != 0:
-        raise StudyError("run %s failed (exit %d); see %s"
-                         % (run["label"], code,
+        raise StudyError("run %s failed (exit %d)%s; see %s"
+                         % (run["label"], code, reason(directory),
                             os.path.join(directory, "log.txt")))
     write_atomic(os.path.join(directory, TIMING),
                  "process: %r\ncpu: %r\n" % (elapsed, cpu))
+
+
+def reason(directory):
+    """liftoff's own message on the scene, from a failed run's log (the
+    lines after "liftoff: error in SCENE:"), as ": message", or ""."""
+    try:
+        with open(os.path.join(directory, "log.txt"), errors="replace") as f:
+            lines = f.read().splitlines()
+    except OSError:
+        return ""
+    for k, line in enumerate(lines):
+        if line.startswith("liftoff: error in "):
+            message = " ".join(v.strip() for v in lines[k + 1:k + 3])
+            return ": " + message[:300] if message else ""
+    return ""
 
 
 def failed_to_start(directory):
