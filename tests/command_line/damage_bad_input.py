@@ -120,6 +120,11 @@ CASES = [
      ["run single-80kN-dT+0-w1-v50 failed", "log.txt"], []),
     ("--reuse with --overwrite", GOOD, ["--reuse", "--overwrite"],
      ["--reuse", "--overwrite"]),
+    ("--set of an entry the tool sets", GOOD,
+     ["--set Time integration/Time step", "from the description"],
+     ["--set", "Time integration/Time step=1"]),
+    ("--set without a value", GOOD, ["--set wants 'Section/Entry=value'"],
+     ["--set", "Foundation"]),
 ]
 
 
