@@ -64,6 +64,11 @@ def make(run, args):
         # runs on the shared 2-core machine at load 6): once more.
         code, elapsed, cpu = run_scene_timed(args.executable, run["scene"],
                                              directory, ranks=args.ranks)
+    if code in (128 + signal.SIGINT, 128 + signal.SIGTERM):
+        # The run was stopped as the tool was (Ctrl-C reaches the whole
+        # process group): the tool's interruption, not the run's failure,
+        # whichever of the two the tool notices first.
+        raise KeyboardInterrupt
     if code != 0:
         raise StudyError("run %s failed (exit %d)%s; see %s"
                          % (run["label"], code, reason(directory),

@@ -7,14 +7,18 @@ written (no damage.csv, damage.md, passes.csv in --output).
 
 Each case is a good description with one thing spoiled; the good one runs
 (a single slab, one axle load, one bin, one wander position: one run).
+Then SIGINT to the tool's process group midway through 5 runs: exit 130,
+one line, nothing written but runs/; --reuse finishes.
 """
 
 import copy
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "common"))
@@ -140,6 +144,40 @@ def run(work, name, description, options):
     return done, output
 
 
+def interrupt_check(work):
+    """SIGINT to the tool's process group (as Ctrl-C sends it, to the tool
+    and its liftoff runs) once its second run has started: exit 130, one
+    line, nothing but runs/ in --output; --reuse then finishes."""
+    description = spoiled(setter("wander", {"sd": 0.2, "positions": 5}))
+    path = os.path.join(work, "interrupted.json")
+    with open(path, "w") as f:
+        f.write(json.dumps(description))
+    output = os.path.join(work, "interrupted")
+    command = [sys.executable, TOOL, path, "--executable", LIFTOFF,
+               "--output", output, "--no-plot"]
+    tool = subprocess.Popen(command, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    runs = os.path.join(output, "runs")
+    for _ in range(600):
+        if os.path.isdir(runs) and len(os.listdir(runs)) >= 2:
+            break
+        time.sleep(0.05)
+    os.killpg(tool.pid, signal.SIGINT)
+    lines = tool.communicate()[1].strip().splitlines()
+    check(tool.returncode == 130 and len(lines) == 1
+          and "interrupted; nothing written" in lines[0]
+          and os.listdir(output) == ["runs"],
+          "SIGINT midway: exit %d, %s, the folder holds %s"
+          % (tool.returncode, lines, os.listdir(output)))
+    done = subprocess.run(command + ["--reuse"], capture_output=True,
+                          text=True)
+    check(done.returncode == 0 and os.path.exists(
+        os.path.join(output, "damage.csv")),
+        "--reuse finishes the interrupted run set (exit %d)"
+        % done.returncode)
+
+
 def main():
     with tempfile.TemporaryDirectory() as work:
         for name, text in (("si.prm", SI_SCENE), ("plain.prm", PLAIN_SCENE)):
@@ -163,6 +201,7 @@ def main():
                                          " | ".join(lines) or "no message",
                                          ", wrote %s" % written
                                          if written else ""))
+        interrupt_check(work)
     finish()
 
 
