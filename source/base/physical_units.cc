@@ -25,6 +25,27 @@ namespace liftoff
 {
   namespace
   {
+    /// `text` with each match of `pattern` replaced by `replacement` of it.
+    std::string
+    replace_matches(
+      const std::string                                     &text,
+      const std::regex                                      &pattern,
+      const std::function<std::string(const std::smatch &)> &replacement)
+    {
+      std::string result;
+      auto        from = text.cbegin();
+      for (std::sregex_iterator m(text.cbegin(), text.cend(), pattern), end;
+           m != end;
+           ++m)
+        {
+          result.append(from, (*m)[0].first);
+          result += replacement(*m);
+          from = (*m)[0].second;
+        }
+      return result.append(from, text.cend());
+    }
+
+
     /// `message` with each "tau = X" (a time) and "dtau = X" (a step) of
     /// the twin's as "t = X t0 s" and "dt = X t0 s", the scene's.
     std::string
@@ -32,18 +53,10 @@ namespace liftoff
     {
       static const std::regex tau(
         R"(\b(d?)tau = ([-+]?[0-9]+(?:\.[0-9]+)?(?:[eE][-+]?[0-9]+)?))");
-      std::string timed;
-      auto        from = message.cbegin();
-      for (std::sregex_iterator m(message.cbegin(), message.cend(), tau), end;
-           m != end;
-           ++m)
-        {
-          timed.append(from, (*m)[0].first);
-          timed += (*m)[1].str() + "t = "
-                   + format_number(t0 * std::stod((*m)[2].str())) + " s";
-          from = (*m)[0].second;
-        }
-      return timed.append(from, message.cend());
+      return replace_matches(message, tau, [&](const std::smatch &m) {
+        return m[1].str() + "t = " + format_number(t0 * std::stod(m[2].str()))
+               + " s";
+      });
     }
 
 
@@ -720,28 +733,20 @@ namespace liftoff
     // than the twin's text) is the entry whose twin value it rounds, if
     // one does.
     static const std::regex quoted(R"(<([-+0-9.eE]+)>)");
-    std::string             result;
-    auto                    from = message.cbegin();
-    for (std::sregex_iterator m(message.cbegin(), message.cend(), quoted), end;
-         m != end;
-         ++m)
-      {
-        result.append(from, (*m)[0].first);
-        std::string token = (*m)[0].str();
-        if (Patterns::Double().match((*m)[1].str()))
-          for (const auto &[path, entry] : twin_values)
-            if (Patterns::Double().match(entry.twin))
-              {
-                const double quoted_value = std::stod((*m)[1].str());
-                const double twin         = std::stod(entry.twin);
-                if (twin != 0
-                    && std::abs(quoted_value - twin) <= 1e-7 * std::abs(twin))
-                  token = "<" + entry.si + ">";
-              }
-        result += token;
-        from = (*m)[0].second;
-      }
-    return result.append(from, message.cend());
+    return replace_matches(message, quoted, [&](const std::smatch &m) {
+      std::string token = m[0].str();
+      if (Patterns::Double().match(m[1].str()))
+        for (const auto &[path, entry] : twin_values)
+          if (Patterns::Double().match(entry.twin))
+            {
+              const double quoted_value = std::stod(m[1].str());
+              const double twin         = std::stod(entry.twin);
+              if (twin != 0
+                  && std::abs(quoted_value - twin) <= 1e-7 * std::abs(twin))
+                token = "<" + entry.si + ">";
+            }
+      return token;
+    });
   }
 
 
