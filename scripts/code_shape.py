@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The limits of the code's shape: no function of more than 60 lines in
 source/, no class with more than 25 public members in include/, and
-source/run/simulator.cc at most 600 lines (a ctest test, `code_shape`).
+source/run/simulator.cc at most 450 lines (a ctest test, `code_shape`).
 
     /usr/bin/python3 scripts/code_shape.py [SOURCE_DIR]
 
@@ -19,7 +19,7 @@ import sys
 
 MAX_FUNCTION = 60
 MAX_PUBLIC = 25
-MAX_SIMULATOR = 600
+MAX_SIMULATOR = 450
 
 DEFINITION = re.compile(r"^(\s*)(?:[\w:~<>,*& ]+::)?~?[\w]+(?:::[\w~]+)*\(")
 

@@ -80,23 +80,22 @@ namespace liftoff
   }
 
 
-  ActiveSetIteration::ActiveSetIteration(
-    const Discretization         &discretization,
-    TensionlessWinklerFoundation &foundation,
-    SectionTimer                 &timer)
+  ActiveSetIteration::ActiveSetIteration(const Discretization &discretization,
+                                         SectionTimer         &timer)
       : discretization(discretization)
-      , foundation(foundation)
-      , terms{&foundation}
       , timer(timer)
       , solver(timer)
   {}
 
 
   void
-  ActiveSetIteration::drive_also(const std::vector<StatusTerm *> &others)
+  ActiveSetIteration::use_terms(const std::vector<SystemTerm *> &system_terms)
   {
-    terms = {&foundation};
-    terms.insert(terms.end(), others.begin(), others.end());
+    bed = &Bed::of(system_terms);
+    terms.clear();
+    for (SystemTerm *term : system_terms)
+      if (term->has_status())
+        terms.push_back(&dynamic_cast<StatusTerm &>(*term));
   }
 
 
@@ -359,7 +358,7 @@ namespace liftoff
     // on a line): decide that from S. A residual test against ||b|| cannot:
     // a soft foundation (Gamma = 1e-8) gives a regular system so
     // ill-conditioned that no solver meets it.
-    if (foundation.diagnostics().rigid_body_restraint() < 1e-10)
+    if (bed->diagnostics().rigid_body_restraint() < 1e-10)
       return false;
     if (accuracy == LinearSolver::Accuracy::trial)
       return true;
@@ -590,7 +589,7 @@ namespace liftoff
             return result;
           }
         if (system.requires_contact
-            && foundation.diagnostics().contact_area_fraction() == 0.0)
+            && bed->diagnostics().contact_area_fraction() == 0.0)
           {
             result.lost_contact = true;
             return result;

@@ -6,6 +6,7 @@
 #include <liftoff/loads/load_set.h>
 #include <liftoff/output/deflectometer_sensors.h>
 #include <liftoff/output/run_summary.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/output/time_history.h>
 #include <liftoff/time/clock.h>
 #include <liftoff/time/plate_state.h>
@@ -24,16 +25,20 @@ namespace liftoff
 
 
   void
-  DeflectometerSensors::parse_parameters(ParameterHandler &scene)
+  DeflectometerSensors::parse_parameters(ParameterHandler &prm,
+                                         const SceneView &)
   {
+    // The sensors are the Loads' deflectometer test's: read outside
+    // `Output`.
+    prm.leave_subsection();
     test.reset();
-    scene.enter_subsection("Loads");
+    prm.enter_subsection("Loads");
     for (unsigned int i = 1; i <= LoadSet::max_loads_per_kind; ++i)
       {
         const std::string section = "Deflectometer " + std::to_string(i);
-        scene.enter_subsection(section);
-        const Deflectometer read = Deflectometer::parse(scene, section);
-        scene.leave_subsection();
+        prm.enter_subsection(section);
+        const Deflectometer read = Deflectometer::parse(prm, section);
+        prm.leave_subsection();
         if (!read.is_on())
           continue;
         AssertThrow(!test,
@@ -43,7 +48,8 @@ namespace liftoff
                                + test->name + " is on already."));
         test = read;
       }
-    scene.leave_subsection();
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
   }
 
 
@@ -74,9 +80,10 @@ namespace liftoff
 
 
   void
-  DeflectometerSensors::check_against(const Discretization &disc) const
+  DeflectometerSensors::check(const SceneView &scene) const
   {
-    const double length = units.scale(PhysicalUnits::Quantity::length);
+    const Discretization &disc   = scene.discretization;
+    const double          length = units.scale(PhysicalUnits::Quantity::length);
     // The loading plate rests on the slab: one that overhangs its edge
     // would press on air, and the patch would drop that part of the force
     // (a plate of radius 0.15 m centred 0.05 m from the edge: 29 % of it).
@@ -134,18 +141,18 @@ namespace liftoff
 
 
   void
-  DeflectometerSensors::setup(const Discretization &disc,
-                              const std::string    &folder)
+  DeflectometerSensors::setup(const SceneView &scene, const std::string &folder)
   {
     directory = folder;
-    mesh_changed(disc);
+    mesh_changed(scene);
   }
 
 
   void
-  DeflectometerSensors::mesh_changed(const Discretization &disc)
+  DeflectometerSensors::mesh_changed(const SceneView &scene)
   {
-    discretization = &disc;
+    const Discretization &disc = scene.discretization;
+    discretization             = &disc;
     probes.clear();
     for (const Point<2> &p : points)
       probes.emplace_back(disc, disc.geometry().to_modelled_part(p));

@@ -2,6 +2,7 @@
 #include <liftoff/contact/joint_dowels.h>
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/run_summary.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/output/time_history.h>
 #include <liftoff/time/plate_state.h>
 
@@ -79,9 +80,11 @@ namespace liftoff
   }
 
 
-  DowelForces::DowelForces(const JointDowels &dowels)
-      : dowels(dowels)
-  {}
+  void
+  DowelForces::parse_parameters(ParameterHandler &, const SceneView &scene)
+  {
+    dowels = &scene.dowels;
+  }
 
 
   void
@@ -95,16 +98,16 @@ namespace liftoff
   DowelForces::add_columns_to(TimeHistory &history) const
   {
     std::vector<HistoryColumns::Column> group;
-    for (const DowelSite &site : dowels.sites())
+    for (const DowelSite &site : dowels->sites())
       group.push_back({site.name, PhysicalUnits::Quantity::force});
     history.add_columns(group, [this](const StepData &step) {
-      return dowels.forces(step.state.ghosted_u);
+      return dowels->forces(step.state.ghosted_u);
     });
   }
 
 
   void
-  DowelForces::setup(const Discretization &, const std::string &)
+  DowelForces::setup(const SceneView &, const std::string &)
   {
     largest      = 0;
     largest_of   = 0;
@@ -115,9 +118,9 @@ namespace liftoff
   void
   DowelForces::execute(const StepData &step)
   {
-    if (dowels.sites().empty())
+    if (dowels->sites().empty())
       return;
-    const std::vector<double> force = dowels.forces(step.state.ghosted_u);
+    const std::vector<double> force = dowels->forces(step.state.ghosted_u);
     for (unsigned int d = 0; d < force.size(); ++d)
       if (std::abs(force[d]) > largest)
         {
@@ -145,25 +148,25 @@ namespace liftoff
   void
   DowelForces::add_to(RunSummary &summary) const
   {
-    if (dowels.sites().empty())
+    if (dowels->sites().empty())
       return;
     using Quantity = PhysicalUnits::Quantity;
     // C is a force per unit deflection.
     const double stiffness_scale =
       units.scale(Quantity::force) / units.scale(Quantity::deflection);
     RunSummary::Section section{
-      {"dowels", double(dowels.sites().size())},
+      {"dowels", double(dowels->sites().size())},
       {"stiffness C" + (units.is_physical() ? std::string(" [N/m]") : ""),
-       dowels.stiffness() * stiffness_scale},
-      {"largest force, " + dowels.sites()[largest_of].name
+       dowels->stiffness() * stiffness_scale},
+      {"largest force, " + dowels->sites()[largest_of].name
          + units.unit(Quantity::force),
        largest * units.scale(Quantity::force)},
       {"its time" + units.unit(Quantity::time),
        largest_time * units.scale(Quantity::time)}};
-    if (dowels.bar() != nullptr)
+    if (dowels->bar() != nullptr)
       section.emplace_back("largest bearing stress"
                              + units.unit(Quantity::pressure),
-                           dowels.bar()->bearing_stress(largest)
+                           dowels->bar()->bearing_stress(largest)
                              * units.scale(Quantity::pressure));
     summary.add("dowels", section);
   }

@@ -9,6 +9,7 @@
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/output/vtu_pieces.h>
 #include <liftoff/time/plate_state.h>
 
@@ -69,7 +70,7 @@ namespace liftoff
 
 
   void
-  Envelopes::parse_parameters(ParameterHandler &prm)
+  Envelopes::parse_parameters(ParameterHandler &prm, const SceneView &)
   {
     enabled = prm.get_bool("Write envelopes");
     envelopes.clear();
@@ -79,9 +80,9 @@ namespace liftoff
 
 
   void
-  Envelopes::check_against(const MeshRefinement &mesh_refinement) const
+  Envelopes::check(const SceneView &scene) const
   {
-    AssertThrow(!enabled || !mesh_refinement.is_enabled(),
+    AssertThrow(!enabled || !scene.mesh_refinement.is_enabled(),
                 ExcMessage("Output/Write envelopes = true keeps one value per "
                            "output point of a mesh that does not change: it "
                            "cannot be used with Mesh refinement/Adaptive "
@@ -97,17 +98,18 @@ namespace liftoff
 
 
   void
-  Envelopes::setup(const Discretization &disc, const std::string &folder)
+  Envelopes::setup(const SceneView &scene, const std::string &folder)
   {
     directory = folder;
-    mesh_changed(disc);
+    mesh_changed(scene);
   }
 
 
   void
-  Envelopes::mesh_changed(const Discretization &disc)
+  Envelopes::mesh_changed(const SceneView &scene)
   {
-    discretization = &disc;
+    const Discretization &disc = scene.discretization;
+    discretization             = &disc;
   }
 
 

@@ -9,6 +9,7 @@
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/field_output.h>
 #include <liftoff/output/resultant_sweep.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/output/stress_resultants.h>
 #include <liftoff/output/vtu_pieces.h>
 #include <liftoff/time/plate_state.h>
@@ -400,12 +401,10 @@ namespace liftoff
 
 
   void
-  FieldOutput::parse_parameters(ParameterHandler   &prm,
-                                const MindlinPlate &scene_plate,
-                                const JointDowels  &scene_dowels)
+  FieldOutput::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
-    plate              = scene_plate;
-    dowels             = &scene_dowels;
+    plate              = scene.plate;
+    dowels             = &scene.dowels;
     writes_moments     = prm.get_bool("Moment fields");
     interval           = prm.get_integer("VTU interval");
     higher_order_cells = prm.get("Field cells") == "higher order";
@@ -470,21 +469,19 @@ namespace liftoff
 
 
   void
-  FieldOutput::build_patches(FieldDataOut                       &plane,
-                             const Discretization               &disc,
-                             const TensionlessWinklerFoundation &foundation,
-                             const LA::MPI::Vector              &solution,
-                             const LA::MPI::Vector              &velocity) const
+  FieldOutput::build_patches(FieldDataOut          &plane,
+                             const Discretization  &disc,
+                             const Bed             &foundation,
+                             const LA::MPI::Vector &solution,
+                             const LA::MPI::Vector &velocity) const
   {
     plane.attach_dof_handler(disc.dof_handler);
-    plane.add_data_vector(solution,
-                          std::vector<std::string>{"w", "psi_x", "psi_y"});
+    plane.add_data_vector(solution, PlateFields::names());
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      scalar(3, DataComponentInterpretation::component_is_scalar);
+      scalar(PlateFields::n_components,
+             DataComponentInterpretation::component_is_scalar);
     plane.add_data_vector(velocity,
-                          std::vector<std::string>{"w_dot",
-                                                   "psi_x_dot",
-                                                   "psi_y_dot"},
+                          PlateFields::names("_dot"),
                           DataOut<2>::type_dof_data,
                           scalar);
     const FoundationPressure pressure(foundation.law());
@@ -512,13 +509,13 @@ namespace liftoff
 
 
   void
-  FieldOutput::write(const std::string                  &directory,
-                     const Discretization               &disc,
-                     const TensionlessWinklerFoundation &foundation,
-                     const LA::MPI::Vector              &solution,
-                     const LA::MPI::Vector              &velocity,
-                     const double                        time,
-                     const unsigned int                  step)
+  FieldOutput::write(const std::string     &directory,
+                     const Discretization  &disc,
+                     const Bed             &foundation,
+                     const LA::MPI::Vector &solution,
+                     const LA::MPI::Vector &velocity,
+                     const double           time,
+                     const unsigned int     step)
   {
     FieldDataOut plane;
     build_patches(plane, disc, foundation, solution, velocity);
@@ -597,17 +594,18 @@ namespace liftoff
 
 
   void
-  FieldOutput::setup(const Discretization &disc, const std::string &folder)
+  FieldOutput::setup(const SceneView &scene, const std::string &folder)
   {
     directory = folder;
-    mesh_changed(disc);
+    mesh_changed(scene);
   }
 
 
   void
-  FieldOutput::mesh_changed(const Discretization &disc)
+  FieldOutput::mesh_changed(const SceneView &scene)
   {
-    discretization = &disc;
+    const Discretization &disc = scene.discretization;
+    discretization             = &disc;
     disc.reinit_ghosted_vector(ghosted_velocity);
   }
 
@@ -622,7 +620,7 @@ namespace liftoff
     free_bending     = step.resultants.free_bending();
     write(directory,
           *discretization,
-          step.foundation,
+          step.scene.bed,
           step.state.ghosted_u,
           ghosted_velocity,
           units.scale(PhysicalUnits::Quantity::time) * step.state.clock.tau(),

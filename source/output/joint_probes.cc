@@ -11,6 +11,7 @@
 #include <liftoff/fem/plate_geometry.h>
 #include <liftoff/output/joint_probes.h>
 #include <liftoff/output/resultant_sweep.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/output/stress_resultants.h>
 #include <liftoff/output/time_history.h>
 #include <liftoff/time/plate_state.h>
@@ -49,11 +50,10 @@ namespace liftoff
 
 
   void
-  JointProbes::parse_parameters(ParameterHandler    &prm,
-                                const PlateGeometry &geometry,
-                                const MindlinPlate  &scene_plate)
+  JointProbes::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
-    plate = &scene_plate;
+    const PlateGeometry &geometry = scene.discretization.geometry();
+    plate                         = &scene.plate;
     probes.clear();
     const auto &joints = geometry.slabs().joints();
     for (const auto &entry :
@@ -120,17 +120,18 @@ namespace liftoff
 
 
   void
-  JointProbes::setup(const Discretization &disc, const std::string &)
+  JointProbes::setup(const SceneView &scene, const std::string &)
   {
     rest.clear();
-    mesh_changed(disc);
+    mesh_changed(scene);
   }
 
 
   void
-  JointProbes::mesh_changed(const Discretization &disc)
+  JointProbes::mesh_changed(const SceneView &scene)
   {
-    discretization = &disc;
+    const Discretization &disc = scene.discretization;
+    discretization             = &disc;
     located.clear();
     if (probes.empty())
       return;
@@ -218,8 +219,8 @@ namespace liftoff
       rest = sides_at(step.state.ghosted_rest, step);
     rest.resize(result.size(), 0.0);
     const double reference =
-      step.joints.largest_load_deflection(step.state.ghosted_u,
-                                          step.state.ghosted_rest);
+      step.scene.joints.largest_load_deflection(step.state.ghosted_u,
+                                                step.state.ghosted_rest);
     for (unsigned int k = 0; k < result.size(); k += 6)
       {
         result[k + 2] = JointSprings::load_transfer(result[k] - rest[k],

@@ -5,6 +5,7 @@
 #include <liftoff/fem/joint_springs.h>
 #include <liftoff/fem/plate_geometry.h>
 #include <liftoff/output/joint_profiles.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/time/plate_state.h>
 
 #include <algorithm>
@@ -36,10 +37,10 @@ namespace liftoff
 
 
   void
-  JointProfiles::parse_parameters(ParameterHandler    &prm,
-                                  const PlateGeometry &geometry)
+  JointProfiles::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
-    is_on = prm.get_bool("Joint profiles");
+    const PlateGeometry &geometry = scene.discretization.geometry();
+    is_on                         = prm.get_bool("Joint profiles");
     times.parse(prm.get("Profile times"));
     if (!is_on)
       return;
@@ -60,8 +61,9 @@ namespace liftoff
 
 
   void
-  JointProfiles::setup(const Discretization &disc, const std::string &directory)
+  JointProfiles::setup(const SceneView &scene, const std::string &directory)
   {
+    const Discretization &disc = scene.discretization;
     times.reset();
     discretization = &disc;
     if (!is_on)
@@ -81,9 +83,10 @@ namespace liftoff
 
 
   void
-  JointProfiles::mesh_changed(const Discretization &disc)
+  JointProfiles::mesh_changed(const SceneView &scene)
   {
-    discretization = &disc;
+    const Discretization &disc = scene.discretization;
+    discretization             = &disc;
   }
 
 
@@ -96,8 +99,9 @@ namespace liftoff
     // Rank 0 writes every rank's points: joint, x, y, w_lower, w_upper,
     // lte, shear.
     std::vector<double> mine;
-    for (const auto &p : step.joints.points_along(step.state.ghosted_u,
-                                                  step.state.ghosted_rest))
+    for (const auto &p :
+         step.scene.joints.points_along(step.state.ghosted_u,
+                                        step.state.ghosted_rest))
       mine.insert(mine.end(),
                   {double(p.joint),
                    p.x[0],

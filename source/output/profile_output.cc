@@ -4,6 +4,7 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/output/profile_output.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/time/plate_state.h>
 
 #include <algorithm>
@@ -58,7 +59,7 @@ namespace liftoff
 
 
   void
-  ProfileOutput::parse_parameters(ParameterHandler &prm)
+  ProfileOutput::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
     const auto a = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Profile start")));
@@ -72,6 +73,10 @@ namespace liftoff
     AssertThrow(n_points != 1,
                 ExcMessage("Output/Profile points must be 0 (no profile) or "
                            "at least 2."));
+    const LoadSet &loads = scene.loads;
+    follow(loads.moving_load_names(), [&loads](const double tau) {
+      return loads.moving_load_positions(tau);
+    });
   }
 
 
@@ -126,10 +131,15 @@ namespace liftoff
 
 
   void
-  ProfileOutput::check_against(const Discretization &disc) const
+  ProfileOutput::check(const SceneView &scene) const
   {
+    if (scene.dynamic)
+      warn_of_times_not_reached(scene.clock.end_time(),
+                                scene.clock.time_step(),
+                                scene.discretization.mpi_communicator);
     // A riding line is placed anew at each profile time and keeps the
     // points on the plate at that time.
+    const Discretization &disc = scene.discretization;
     if (n_points == 0 || !rider.empty())
       return;
     for (const auto &p : {start, end})
@@ -180,10 +190,11 @@ namespace liftoff
 
 
   void
-  ProfileOutput::setup(const Discretization &disc, const std::string &directory)
+  ProfileOutput::setup(const SceneView &scene, const std::string &directory)
   {
+    const Discretization &disc = scene.discretization;
     times.reset();
-    mesh_changed(disc);
+    mesh_changed(scene);
     if (n_points == 0)
       return;
 
@@ -202,9 +213,10 @@ namespace liftoff
 
 
   void
-  ProfileOutput::mesh_changed(const Discretization &disc)
+  ProfileOutput::mesh_changed(const SceneView &scene)
   {
-    discretization = &disc;
+    const Discretization &disc = scene.discretization;
+    discretization             = &disc;
     points.clear();
     located.clear();
     if (rider.empty())

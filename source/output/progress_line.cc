@@ -1,5 +1,6 @@
 #include <liftoff/base/archives.h>
 #include <liftoff/output/progress_line.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/time/plate_state.h>
 
 #include <unistd.h>
@@ -48,7 +49,7 @@ namespace liftoff
 
 
   void
-  ProgressLine::setup(const Discretization &, const std::string &)
+  ProgressLine::setup(const SceneView &, const std::string &)
   {
     start       = Clock::now();
     last_shown  = start;
@@ -64,7 +65,7 @@ namespace liftoff
 
 
   void
-  ProgressLine::mesh_changed(const Discretization &)
+  ProgressLine::mesh_changed(const SceneView &)
   {}
 
 

@@ -6,6 +6,7 @@
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/plate_fields.h>
 #include <liftoff/output/run_summary.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/output/small_deflection_check.h>
 #include <liftoff/time/plate_state.h>
 
@@ -28,16 +29,16 @@ namespace liftoff
 
 
   void
-  SmallDeflectionCheck::setup(const Discretization &discretization,
-                              const std::string &)
+  SmallDeflectionCheck::setup(const SceneView &scene, const std::string &)
   {
-    mesh_changed(discretization);
+    mesh_changed(scene);
   }
 
 
   void
-  SmallDeflectionCheck::mesh_changed(const Discretization &discretization)
+  SmallDeflectionCheck::mesh_changed(const SceneView &scene)
   {
+    const Discretization &discretization = scene.discretization;
     w_entries.clear();
     if (!is_checked)
       return;
@@ -60,7 +61,7 @@ namespace liftoff
     for (const unsigned int k : w_entries)
       local = std::max(local, std::abs(u[k]));
     const double largest =
-      Utilities::MPI::max(local, step.discretization.mpi_communicator);
+      Utilities::MPI::max(local, step.scene.discretization.mpi_communicator);
     if (largest > largest_w || !std::isfinite(largest))
       {
         largest_w       = largest;
@@ -70,7 +71,7 @@ namespace liftoff
       {
         has_warned = true;
         if (Utilities::MPI::this_mpi_process(
-              step.discretization.mpi_communicator)
+              step.scene.discretization.mpi_communicator)
             == 0)
           std::cerr << "liftoff: warning: " << warning() << std::endl;
       }

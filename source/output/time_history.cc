@@ -13,6 +13,7 @@
 
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/output/stress_resultants.h>
 #include <liftoff/output/time_history.h>
 
@@ -293,11 +294,10 @@ namespace liftoff
 
 
   void
-  TimeHistory::parse_parameters(ParameterHandler   &prm,
-                                const MindlinPlate &plate_)
+  TimeHistory::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
     other_columns.clear();
-    plate        = plate_;
+    plate        = scene.plate;
     probe_points = parse_points(prm.get("Probe points"));
     for (unsigned int i = 0; i < probe_points.size(); ++i)
       for (unsigned int j = 0; j < i; ++j)
@@ -317,13 +317,21 @@ namespace liftoff
     for (const auto &[quantity, load] :
          parse_riding_probes(prm.get("Riding probes")))
       riding_probes.push_back({quantity + "@" + load, quantity, load});
-    make_columns();
+    if (drop_default_probe_off(scene.discretization.geometry()))
+      scene.notes << "liftoff: no probe: 0, 0 lies in the annulus's hole.\n";
+    // Only a scene with dashpots dissipates.
+    write_dissipated     = scene.bed.law().has_damping();
+    const LoadSet &loads = scene.loads;
+    follow(loads.moving_load_names(), [&loads](const double tau) {
+      return loads.moving_load_positions(tau);
+    });
   }
 
 
   void
-  TimeHistory::check_against(const Discretization &disc) const
+  TimeHistory::check(const SceneView &scene) const
   {
+    const Discretization &disc = scene.discretization;
     for (const auto &p : probe_points)
       AssertThrow(disc.geometry().is_on_plate(p),
                   ExcMessage("Output/Probe points: the point "
@@ -345,7 +353,6 @@ namespace liftoff
         || geometry.is_on_plate(Point<2>()))
       return false;
     probe_points.clear();
-    make_columns();
     return true;
   }
 
@@ -401,7 +408,6 @@ namespace liftoff
                                + joined(names, ", ") + ">."));
         probe.index = found - names.begin();
       }
-    make_columns();
   }
 
 
@@ -412,7 +418,6 @@ namespace liftoff
     if (group.empty())
       return;
     other_columns.emplace_back(group, std::move(values));
-    make_columns();
   }
 
 
@@ -424,14 +429,6 @@ namespace liftoff
                  {"substeps", PhysicalUnits::Quantity::number},
                  {"local_error", PhysicalUnits::Quantity::deflection}},
                 [values](const StepData &) { return values(); });
-  }
-
-
-  void
-  TimeHistory::show_dissipated_energy(const bool show)
-  {
-    write_dissipated = show;
-    make_columns();
   }
 
 
@@ -461,10 +458,10 @@ namespace liftoff
                   return step.iteration.cycle_length;
                 });
     columns.add("cells", Quantity::number, [](const StepData &step) -> double {
-      return step.discretization.triangulation.n_global_active_cells();
+      return step.scene.discretization.triangulation.n_global_active_cells();
     });
     columns.add("dofs", Quantity::number, [](const StepData &step) -> double {
-      return step.discretization.dof_handler.n_dofs();
+      return step.scene.discretization.dof_handler.n_dofs();
     });
     if (write_energies)
       add_energy_columns();
@@ -549,8 +546,8 @@ namespace liftoff
         group.push_back({"lte_" + name, PhysicalUnits::Quantity::number});
       }
     columns.add(group, [this](const StepData &step) {
-      const auto transfer =
-        step.joints.transfer(step.state.ghosted_u, step.state.ghosted_rest);
+      const auto transfer = step.scene.joints.transfer(step.state.ghosted_u,
+                                                       step.state.ghosted_rest);
       std::vector<double> values;
       for (const auto &joint : joints)
         {
@@ -574,8 +571,9 @@ namespace liftoff
                  {"max_pressure_x", Quantity::length},
                  {"max_pressure_y", Quantity::length}},
                 [this](const StepData &step) {
-                  const auto r = step.foundation.diagnostics().resultant(
-                    step.state.ghosted_u, ghosted_velocity);
+                  const auto r =
+                    step.scene.bed.diagnostics().resultant(step.state.ghosted_u,
+                                                           ghosted_velocity);
                   return std::vector<double>{r.force,
                                              r.centre[0],
                                              r.centre[1],
@@ -646,20 +644,20 @@ namespace liftoff
   TimeHistory::write_in_units_of(const PhysicalUnits &scene_units)
   {
     units = scene_units;
-    make_columns();
   }
 
 
   void
-  TimeHistory::setup(const Discretization &disc, const std::string &directory)
+  TimeHistory::setup(const SceneView &scene, const std::string &directory)
   {
+    const Discretization &disc = scene.discretization;
     joints.clear();
     for (unsigned int j = 0; j < disc.geometry().slabs().joints().size(); ++j)
       if (!disc.geometry().slabs().joints()[j].tied)
         joints.emplace_back(j, disc.geometry().slabs().joints()[j].name);
-    if (!joints.empty())
-      make_columns();
-    mesh_changed(disc);
+    // Every part has told its columns by now; they are fixed for the run.
+    make_columns();
+    mesh_changed(scene);
     history.clear();
 
     // No directory: keep the rows in memory only (tests). The file
@@ -672,9 +670,10 @@ namespace liftoff
 
 
   void
-  TimeHistory::mesh_changed(const Discretization &disc)
+  TimeHistory::mesh_changed(const SceneView &scene)
   {
-    discretization = &disc;
+    const Discretization &disc = scene.discretization;
+    discretization             = &disc;
     probes.clear();
     for (const auto &p : probe_points)
       probes.emplace_back(disc, disc.geometry().to_modelled_part(p));
@@ -696,16 +695,16 @@ namespace liftoff
   void
   TimeHistory::find_gap_at_w_dofs(const StepData &step)
   {
-    if (!step.foundation.law().has_initial_gap() || !gap_at_w_dofs.empty())
+    if (!step.scene.bed.law().has_initial_gap() || !gap_at_w_dofs.empty())
       return;
-    const Discretization                       &disc = step.discretization;
+    const Discretization &disc = step.scene.discretization;
     std::map<types::global_dof_index, Point<2>> points;
     DoFTools::map_dofs_to_support_points(disc.mapping(),
                                          disc.dof_handler,
                                          points,
                                          PlateFields::w_mask());
     for (const auto i : w_dofs)
-      gap_at_w_dofs.push_back(step.foundation.law().gap_at(points.at(i)));
+      gap_at_w_dofs.push_back(step.scene.bed.law().gap_at(points.at(i)));
   }
 
 
@@ -830,7 +829,7 @@ namespace liftoff
   TimeHistory::execute(const StepData &step)
   {
     find_gap_at_w_dofs(step);
-    if (write_resultant && step.foundation.law().has_damping())
+    if (write_resultant && step.scene.bed.law().has_damping())
       ghosted_velocity = step.state.v;
     history.push_back(columns.row_at(step));
     write_row(history.back());

@@ -12,7 +12,7 @@ namespace liftoff
 
   SceneParts::SceneParts(const MPI_Comm comm, SectionTimer &timer)
       : discretization(comm)
-      , active_set(discretization, foundation, timer)
+      , active_set(discretization, timer)
   {}
 
 
@@ -69,8 +69,7 @@ namespace liftoff
     joint_springs.parse_parameters(prm);
     joint_dowels.parse_parameters(prm);
     joint_dowels.place_on(discretization.geometry());
-    if (!joint_dowels.sites().empty())
-      active_set.drive_also({&joint_dowels});
+    active_set.use_terms(system_terms());
     loads.parse_parameters(prm);
     loads.use_plate(plate);
     newmark.parse_parameters(prm);
@@ -163,6 +162,24 @@ namespace liftoff
   }
 
 
+  SceneView
+  SceneParts::view(const PhysicalUnits      &units,
+                   const ConditionalOStream &notes) const
+  {
+    return {plate,
+            discretization,
+            foundation,
+            joint_springs,
+            joint_dowels,
+            loads,
+            mesh_refinement,
+            units,
+            clock(),
+            dynamic,
+            notes};
+  }
+
+
   TimeStepper::Parts
   SceneParts::for_stepper()
   {
@@ -170,7 +187,6 @@ namespace liftoff
             discretization,
             matrices,
             system_terms(),
-            foundation,
             loads,
             newmark,
             energy_check,

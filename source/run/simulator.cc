@@ -2,13 +2,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <liftoff/base/archives.h>
 #include <liftoff/base/number_text.h>
+#include <liftoff/output/envelopes.h>
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/run/simulator.h>
 #include <liftoff/run/stop_signal.h>
-#include <liftoff/version.h>
 
 #include <cmath>
 #include <functional>
@@ -27,11 +26,8 @@ namespace liftoff
                    verbose && !show_progress
                      && Utilities::MPI::this_mpi_process(comm) == 0)
       , parts(comm, timer)
-      , progress_line(comm, std::cout)
-  {
-    if (verbose && show_progress)
-      outputs.push_back(&progress_line);
-  }
+      , outputs(comm, verbose && show_progress)
+  {}
 
 
   void
@@ -40,12 +36,7 @@ namespace liftoff
     SceneParts::declare_parameters(prm);
     prm.enter_subsection("Output");
     OutputDirectory::declare_parameters(prm);
-    TimeHistory::declare_parameters(prm);
-    ProfileOutput::declare_parameters(prm);
-    JointProfiles::declare_parameters(prm);
-    JointProbes::declare_parameters(prm);
-    FieldOutput::declare_parameters(prm);
-    Envelopes::declare_parameters(prm);
+    OutputList::declare_parameters(prm);
     prm.leave_subsection();
     Checkpoint::declare_parameters(prm);
     PhysicalUnits::declare_parameters(prm);
@@ -61,29 +52,10 @@ namespace liftoff
       parts.parse_parameters(scene, units);
       scene.enter_subsection("Output");
       output_directory = scene.get("Directory");
-      time_history.parse_parameters(scene, parts.plate);
-      profile_output.parse_parameters(scene);
-      const PlateGeometry &geometry = parts.discretization.geometry();
-      joint_probes.parse_parameters(scene, geometry, parts.plate);
-      joint_profiles.parse_parameters(scene, geometry);
-      field_output.parse_parameters(scene, parts.plate, parts.joint_dowels);
-      envelopes.parse_parameters(scene);
       scene.leave_subsection();
-      deflectometer_sensors.parse_parameters(scene);
-      if (time_history.drop_default_probe_off(geometry))
-        pcout << "liftoff: no probe: 0, 0 lies in the annulus's hole.\n";
-      time_history.show_dissipated_energy(parts.foundation.law().has_damping());
-      const auto load_positions = [this](const double tau) {
-        return parts.loads.moving_load_positions(tau);
-      };
-      time_history.follow(parts.loads.moving_load_names(), load_positions);
-      profile_output.follow(parts.loads.moving_load_names(), load_positions);
-      for (Output *output : outputs)
-        output->write_in_units_of(units);
-      for (const Output *output : outputs)
-        output->add_columns_to(time_history);
+      outputs.parse_parameters(scene, scene_view());
       if (parts.newmark.step_control.is_enabled())
-        time_history.add_step_sizes(
+        outputs.history().add_step_sizes(
           [this]() { return stepper->step_control().interval_columns(); });
       checkpoint.parse_parameters(scene);
       check_scene();
@@ -95,14 +67,21 @@ namespace liftoff
   Simulator::check_scene() const
   {
     parts.check();
-    time_history.check_against(parts.discretization);
-    profile_output.check_against(parts.discretization);
-    envelopes.check_against(parts.mesh_refinement);
-    deflectometer_sensors.check_against(parts.discretization);
-    if (parts.is_dynamic())
-      profile_output.warn_of_times_not_reached(parts.clock().end_time(),
-                                               parts.clock().time_step(),
-                                               mpi_communicator);
+    outputs.check(scene_view());
+  }
+
+
+  SceneView
+  Simulator::scene_view() const
+  {
+    return parts.view(units, pcout);
+  }
+
+
+  const Envelopes &
+  Simulator::get_envelopes() const
+  {
+    return outputs.get<Envelopes>();
   }
 
 
@@ -141,8 +120,7 @@ namespace liftoff
     // go last, once the PVD no longer lists them.
     output_folder->remove_summary();
     output_folder->write_used_parameters(used_parameters);
-    for (Output *output : outputs)
-      output->flush();
+    outputs.flush();
     output_folder->remove_fields_after(step);
   }
 
@@ -154,7 +132,7 @@ namespace liftoff
     stepper = std::make_unique<TimeStepper>(
       parts.for_stepper(),
       TimeStepper::Options{parts.is_dynamic(),
-                           time_history.wants_energies(),
+                           outputs.history().wants_energies(),
                            parts.clock()},
       timer);
     stepper->setup();
@@ -226,31 +204,10 @@ namespace liftoff
     if (start == Start::resume)
       resume_step = open_checkpoint();
     has_taken_over_output = (start != Start::resume);
-    for (Output *output : outputs)
-      output->setup(parts.discretization, output_directory);
+    outputs.setup(scene_view(), output_directory);
     // Every point of the scene has found its cell.
     parts.discretization.release_grid_cache();
     units.explain_run_errors_of([this]() { run_analysis(); });
-  }
-
-
-  unsigned int
-  Simulator::open_checkpoint()
-  {
-    // Everything is checked before a file is touched: a refused resume
-    // leaves the output of the earlier run as it was.
-    const unsigned int step =
-      checkpoint.open(output_directory, mpi_communicator, scene);
-    const Clock &clock = stepper->state().clock;
-    AssertThrow(step <= clock.n_steps(),
-                ExcMessage("Cannot resume: the checkpoint is of step "
-                           + std::to_string(step)
-                           + ", beyond Time integration/End time = "
-                           + format_number(clock.end_time()) + " ("
-                           + std::to_string(clock.n_steps()) + " steps)."));
-    // A killed run may leave temporary files (and checkpoint.new).
-    output_folder->remove_temporary_files();
-    return step;
   }
 
 
@@ -265,8 +222,7 @@ namespace liftoff
           run_dynamic();
         if (!has_taken_over_output)
           take_over_output(resume_step);
-        for (Output *output : outputs)
-          output->flush();
+        outputs.flush();
       }
     catch (...)
       {
@@ -284,8 +240,7 @@ namespace liftoff
         };
         if (has_taken_over_output)
           {
-            for (Output *output : outputs)
-              attempt([&]() { output->flush(); });
+            outputs.flush(true);
             attempt([&]() {
               write_summary(stopped_by_signal != 0 ? "interrupted" : "failed");
             });
@@ -307,16 +262,13 @@ namespace liftoff
                                     state.ghosted_u,
                                     parts.loads.free_bending(
                                       state.clock.tau()));
+    const SceneView      scene = scene_view();
     const StepData       step{state,
-                        parts.discretization,
-                        parts.foundation,
-                        parts.joint_springs,
-                        parts.joint_dowels,
+                        scene,
                         iteration,
                         resultants,
                         parts.foundation.diagnostics().contact_area_fraction()};
-    for (Output *output : outputs)
-      output->execute(step);
+    outputs.execute(step);
     if (!has_taken_over_output)
       take_over_output(state.clock.step());
   }
@@ -396,8 +348,7 @@ namespace liftoff
   {
     // Timed with the rest of a new mesh's set-up.
     SectionTimer::Scope t(timer, "setup");
-    for (Output *output : outputs)
-      output->mesh_changed(parts.discretization);
+    outputs.mesh_changed(scene_view());
     parts.discretization.release_grid_cache();
   }
 
@@ -453,57 +404,6 @@ namespace liftoff
 
 
   void
-  Simulator::resume_from_checkpoint()
-  {
-    SectionTimer::Scope t(timer, "checkpoint");
-    if (parts.mesh_refinement.is_enabled())
-      {
-        // The run's mesh is the checkpoint's; everything on it is rebuilt
-        // before the state is read into it.
-        parts.discretization.load_mesh(checkpoint.mesh_file());
-        stepper->setup();
-        find_points_on_new_mesh();
-      }
-    checkpoint.read(mpi_communicator, [&](InputArchive &archive) {
-      serialize(archive, Checkpoint::format);
-    });
-    const unsigned int step = stepper->state().clock.step();
-    AssertThrow(
-      step == resume_step && time_history.rows().size() == resume_step + 1,
-      ExcMessage("The checkpoint of step " + std::to_string(resume_step)
-                 + " holds step " + std::to_string(step) + " and "
-                 + std::to_string(time_history.rows().size()) + " rows."));
-    pcout << "resumed after step " << resume_step << std::endl;
-  }
-
-
-  void
-  Simulator::write_checkpoint_if_due(const bool is_stopping)
-  {
-    const Clock &clock = stepper->state().clock;
-    if (!writes_files()
-        || !(is_stopping
-             || checkpoint.is_due(clock.step(),
-                                  clock.is_at_end(),
-                                  mpi_communicator)))
-      return;
-    SectionTimer::Scope t(timer, "checkpoint");
-    // An adaptive run's mesh cannot be rebuilt from the scene.
-    const Checkpoint::SharedFiles save_mesh =
-      parts.mesh_refinement.is_enabled()
-        ? Checkpoint::mesh_writer(parts.discretization.triangulation)
-        : Checkpoint::SharedFiles();
-    checkpoint.write(
-      output_directory,
-      mpi_communicator,
-      clock.step(),
-      scene,
-      [&](OutputArchive &archive) { serialize(archive, Checkpoint::format); },
-      save_mesh);
-  }
-
-
-  void
   Simulator::stop_if_signalled(const int signal)
   {
     if (signal != 0)
@@ -516,84 +416,5 @@ namespace liftoff
                         + (writes_files() ? " and `liftoff --resume` continues "
                                             "from the checkpoint of this step."
                                           : "."));
-  }
-
-
-  template <class Archive>
-  void
-  Simulator::serialize(Archive &archive, const unsigned int version)
-  {
-    // The time loop's whole state, bit for bit: the next step's right-hand
-    // side needs the state, its active-set iteration starts from the
-    // contact status and the matrix and factor as they are; the outputs
-    // keep what they have written.
-    stepper->serialize_state(archive);
-    archive &adaptation_pending;
-    stepper->serialize_contact(archive);
-    for (Output *output : outputs)
-      transfer(archive, *output);
-    (void)version;
-  }
-
-
-  std::string
-  Simulator::warnings() const
-  {
-    const std::string a = stepper->warnings(), b = small_deflection.warning();
-    return a.empty() || b.empty() ? a + b : a + " " + b;
-  }
-
-
-  RunSummary
-  Simulator::summary_of_run(const std::string &status) const
-  {
-    const auto &rows = time_history.rows();
-    RunSummary  summary;
-    summary.add("status", status);
-    if (!warnings().empty())
-      summary.add("warning", warnings());
-    summary.add("liftoff",
-                std::string(LIFTOFF_VERSION) + " (git " + LIFTOFF_GIT_COMMIT
-                  + ")");
-    if (resume_step > 0)
-      summary.add("resumed after step", double(resume_step));
-    summary.add("analysis", parts.is_dynamic() ? "dynamic" : "static");
-    summary.add_units(units);
-    summary.add_mesh(parts.discretization);
-    if (parts.mesh_refinement.is_enabled())
-      {
-        summary.add("mesh adaptations", double(stepper->n_adaptations()));
-        summary.add("largest relative energy change of a transfer",
-                    largest_energy_jump);
-      }
-    summary.add("steps", double(rows.empty() ? 0 : rows.size() - 1));
-    summary.add_checks(*stepper,
-                       parts.energy_check,
-                       parts.is_dynamic(),
-                       parts.newmark.beta);
-    for (const Output *output : outputs)
-      output->add_to(summary);
-    summary.add_linear_solver(parts.active_set.linear_solver());
-    summary.add_resources(timer, wall_clock.wall_time(), mpi_communicator);
-    return summary;
-  }
-
-
-  void
-  Simulator::write_summary(const std::string &status) const
-  {
-    const RunSummary summary = summary_of_run(status);
-    status_out << "status: " << status
-               << (writes_files()
-                     ? "; summary in " + output_directory + "/summary.txt"
-                     : std::string())
-               << std::endl;
-    pcout << summary.text();
-    if (writes_files())
-      {
-        if (output_folder)
-          output_folder->release_space_for_summary();
-        summary.write(output_directory, mpi_communicator);
-      }
   }
 } // namespace liftoff

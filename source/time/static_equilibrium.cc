@@ -2,7 +2,7 @@
 #include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/contact/bed.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/time/static_equilibrium.h>
 
@@ -91,11 +91,11 @@ namespace liftoff
 
 
   StaticEquilibrium::Result
-  StaticEquilibrium::check(const Discretization               &disc,
-                           const TensionlessWinklerFoundation &foundation,
-                           const LA::MPI::Vector              &u,
-                           const LA::MPI::Vector              &load,
-                           const LA::MPI::SparseMatrix        &matrix)
+  StaticEquilibrium::check(const Discretization        &disc,
+                           const Bed                   &foundation,
+                           const LA::MPI::Vector       &u,
+                           const LA::MPI::Vector       &load,
+                           const LA::MPI::SparseMatrix &matrix)
   {
     const double copies = disc.geometry().n_symmetry_copies();
     const double scale  = copies * load.l1_norm();

@@ -3,7 +3,6 @@
 #include <liftoff/base/archives.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
-#include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/initial_conditions.h>
 #include <liftoff/fem/mesh_refinement.h>
@@ -60,7 +59,7 @@ namespace liftoff
       , discretization(parts.discretization)
       , matrices(parts.matrices)
       , terms(parts.terms)
-      , foundation(parts.foundation)
+      , bed(Bed::of(parts.terms))
       , loads(parts.loads)
       , scene_newmark(parts.newmark)
       , newmark(parts.newmark)
@@ -296,11 +295,8 @@ namespace liftoff
   void
   TimeStepper::check_static_equilibrium(const LA::MPI::Vector &load)
   {
-    equilibrium = StaticEquilibrium::check(discretization,
-                                           foundation,
-                                           state_.ghosted_u,
-                                           load,
-                                           active_set.system_matrix());
+    equilibrium = StaticEquilibrium::check(
+      discretization, bed, state_.ghosted_u, load, active_set.system_matrix());
     if (equilibrium.holds())
       return;
     warning =
@@ -330,7 +326,7 @@ namespace liftoff
     std::vector<std::string> causes;
     // The plate on its springs swings at sqrt(Gamma) (unit mass): a step
     // longer than a radian of that swing lets contact switch within it.
-    const double omega = foundation.law().rigid_body_frequency();
+    const double omega = bed.law().rigid_body_frequency();
     if (state_.clock.time_step() * omega > 1)
       causes.push_back(
         "Time integration/Time step = "
@@ -394,7 +390,7 @@ namespace liftoff
     if (slabs.n_slabs() < 2)
       return "";
     const Vector<float> fraction =
-      foundation.diagnostics().contact_fraction_per_cell();
+      bed.diagnostics().contact_fraction_per_cell();
     // Each slab's area and area in contact; the cut mesh numbers a cell's
     // material by its slab.
     std::vector<double> area(2 * slabs.n_slabs(), 0.0);
@@ -441,10 +437,10 @@ namespace liftoff
                             const StopCheck       &stop_if_requested)
   {
     // The plate at rest: the springs' Gamma (w - g), no dashpot force.
-    const SpringPressure             pressure = foundation.law().pressure();
+    const SpringPressure             pressure = bed.law().pressure();
     const ActiveSetIteration::System system{
       load, pressure, !discretization.geometry().has_kinematic_support()};
-    foundation.activate_all();
+    bed.activate_all();
     active_set.set_base_matrix(base_matrix({0.0, 0.0}), 0.0);
 
     const auto result = active_set.solve(system, state_.u, state_.ghosted_u);
@@ -598,7 +594,7 @@ namespace liftoff
       SectionTimer::Scope t(timer, "mesh refinement");
       if (!mesh_refinement.mark_cells(
             discretization,
-            foundation.diagnostics().contact_fraction_per_cell(),
+            bed.diagnostics().contact_fraction_per_cell(),
             // A static analysis's cycles look ahead at the scene's time
             // step too.
             loads.regions_in_windows(state_.clock.tau(),
@@ -707,7 +703,7 @@ namespace liftoff
     active_set.update_status(state_.ghosted_u, pressure);
     assemble_loads(step, tau, state_.load);
     force_balance(state_.load, pressure, state_.balance);
-    if (foundation.law().has_damping())
+    if (bed.law().has_damping())
       compute_dissipative_force();
     matrices.solve_with_mass(state_.a, state_.balance);
     discretization.constraints.distribute(state_.a);
@@ -745,7 +741,7 @@ namespace liftoff
     if (std::exchange(first_step_pending, false))
       {
         // The first iterate is the bilateral problem.
-        foundation.activate_all();
+        bed.activate_all();
         active_set.set_base_matrix(effective_base_matrix(),
                                    newmark.velocity_factor(),
                                    level_in_use);
@@ -774,7 +770,7 @@ namespace liftoff
     controller.start_interval();
     // The contact area of the state, for the event rule: a repeated step
     // leaves the foundation with the set of its own solution.
-    double contact = foundation.diagnostics().contact_area_fraction();
+    double contact = bed.diagnostics().contact_area_fraction();
     for (unsigned int position = 0; position < units;)
       {
         use_level(controller.level());
@@ -791,8 +787,7 @@ namespace liftoff
         total.cycle_length =
           std::max(total.cycle_length, iteration.cycle_length);
         total.lost_contact = total.lost_contact || iteration.lost_contact;
-        const double contact_after =
-          foundation.diagnostics().contact_area_fraction();
+        const double contact_after = bed.diagnostics().contact_area_fraction();
         if (!controller.judge(relative_step_error(),
                               std::abs(contact_after - contact),
                               position))
@@ -869,12 +864,12 @@ namespace liftoff
   SpringPressure
   TimeStepper::pressure_at_state_velocity()
   {
-    if (!foundation.law().has_damping())
-      return foundation.law().pressure();
+    if (!bed.law().has_damping())
+      return bed.law().pressure();
     // At a given state v is given: kappa = 0, o = -v.
     scratch.equ(-1.0, state_.v);
     ghosted_scratch = scratch;
-    return foundation.law().pressure(0.0, ghosted_scratch);
+    return bed.law().pressure(0.0, ghosted_scratch);
   }
 
 
@@ -883,9 +878,9 @@ namespace liftoff
   {
     ghosted_scratch   = state_.v;
     dissipative_force = 0;
-    foundation.add_dissipative_force(state_.ghosted_u,
-                                     ghosted_scratch,
-                                     dissipative_force);
+    bed.add_dissipative_force(state_.ghosted_u,
+                              ghosted_scratch,
+                              dissipative_force);
   }
 
 
@@ -894,15 +889,15 @@ namespace liftoff
                                      const double       tau,
                                      const bool         from_prediction)
   {
-    SpringPressure pressure = foundation.law().pressure();
-    if (foundation.law().has_damping())
+    SpringPressure pressure = bed.law().pressure();
+    if (bed.law().has_damping())
       {
         // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
         // is affine in the new displacement, like a spring on a gap.
         newmark.velocity_offset(state_.u, state_.v, state_.a, scratch);
         ghosted_scratch = scratch;
         pressure =
-          foundation.law().pressure(newmark.velocity_factor(), ghosted_scratch);
+          bed.law().pressure(newmark.velocity_factor(), ghosted_scratch);
       }
     newmark.predict(state_.u, state_.v, state_.a, u_next);
     // The first step starts from the bilateral set: the predictor has no
@@ -943,7 +938,7 @@ namespace liftoff
     copy_values(next_load, state_.load);
     newmark.advance(u_next, state_.u, state_.v, state_.a);
     state_.clock.set_step(step);
-    if (foundation.law().has_damping())
+    if (bed.law().has_damping())
       add_dissipated_energy();
     if (newmark.needs_force_balance())
       {
@@ -1028,7 +1023,7 @@ namespace liftoff
     LA::MPI::Vector v;
     discretization.reinit_ghosted_vector(v);
     v = state_.v;
-    return foundation.diagnostics().pressure_range(state_.ghosted_u, v);
+    return bed.diagnostics().pressure_range(state_.ghosted_u, v);
   }
 
 
@@ -1098,7 +1093,7 @@ namespace liftoff
                         newmark.velocity_factor());
         // The dashpots' force of the saved state, for the next step's
         // dissipation.
-        if (foundation.law().has_damping())
+        if (bed.law().has_damping())
           compute_dissipative_force();
       }
     else

@@ -8,6 +8,7 @@
 
 #include <liftoff/base/archives.h>
 #include <liftoff/output/time_history.h>
+#include <liftoff/run/simulator.h>
 
 #include "test_tools.h"
 
@@ -15,18 +16,44 @@
 
 namespace
 {
-  std::unique_ptr<liftoff::TimeHistory>
+  // A time history of the default scene with the given probes and energy
+  // columns, set up on its mesh as a run sets it up (its columns are made
+  // then), with the parts it reads.
+  struct HistoryOfScene
+  {
+    liftoff::SectionTimer      timer;
+    liftoff::SceneParts        parts{MPI_COMM_WORLD, timer};
+    liftoff::PhysicalUnits     units;
+    dealii::ConditionalOStream quiet{std::cout, false};
+    dealii::ParameterHandler   prm;
+    liftoff::TimeHistory       history;
+
+    HistoryOfScene(const std::string &probes, const bool energies)
+    {
+      liftoff::Simulator::declare_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.set("Probe points", probes);
+      prm.set("Write energies", energies);
+      prm.leave_subsection();
+      units.parse_parameters(prm, liftoff::SceneParts::outline_for_units(prm));
+      dealii::ParameterHandler &scene =
+        units.solver_scene(prm, liftoff::Simulator::declare_parameters);
+      parts.parse_parameters(scene, units);
+      parts.setup_mesh();
+      const liftoff::SceneView view = parts.view(units, quiet);
+      scene.enter_subsection("Output");
+      history.parse_parameters(scene, view);
+      scene.leave_subsection();
+      history.write_in_units_of(units);
+      history.setup(view, "");
+    }
+  };
+
+
+  std::unique_ptr<HistoryOfScene>
   history_with(const std::string &probes, const bool energies)
   {
-    dealii::ParameterHandler prm;
-    prm.enter_subsection("Output");
-    liftoff::TimeHistory::declare_parameters(prm);
-    prm.set("Probe points", probes);
-    prm.set("Write energies", energies);
-    auto history = std::make_unique<liftoff::TimeHistory>();
-    history->parse_parameters(prm, liftoff::MindlinPlate());
-    prm.leave_subsection();
-    return history;
+    return std::make_unique<HistoryOfScene>(probes, energies);
   }
 
 
@@ -56,18 +83,18 @@ LIFTOFF_TEST_MAIN(argc, argv)
   std::ostringstream out;
   {
     liftoff::OutputArchive archive(out);
-    history_with("0, 0", true)->save(archive);
+    history_with("0, 0", true)->history.save(archive);
   }
   const std::string saved = out.str();
 
   const auto same = history_with("0, 0", true);
   checks.within("a history of the same columns loads",
-                load_message(saved, *same).empty(),
+                load_message(saved, same->history).empty(),
                 1,
                 1);
 
   const std::string other_probe =
-    load_message(saved, *history_with("0.25, 0", true));
+    load_message(saved, history_with("0.25, 0", true)->history);
   checks.within("another probe is refused, naming both columns (" + other_probe
                   + ")",
                 other_probe.find("w(0;0)") != std::string::npos
@@ -76,7 +103,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
                 1);
 
   const std::string no_energies =
-    load_message(saved, *history_with("0, 0", false));
+    load_message(saved, history_with("0, 0", false)->history);
   checks.within("a history without the energy columns is refused",
                 no_energies.find("balance_error") != std::string::npos,
                 1,

@@ -14,6 +14,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <liftoff/output/envelopes.h>
+
 #include "test_tools.h"
 
 #include <cstdlib>

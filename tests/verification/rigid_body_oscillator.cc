@@ -18,6 +18,8 @@
 //    into its bed, and V tau for a plate thrown off a tensionless bed with
 //    the upward velocity V (free flight, which Newmark integrates exactly).
 
+#include <liftoff/output/envelopes.h>
+
 #include "test_tools.h"
 
 #include <algorithm>

@@ -5,8 +5,8 @@
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/contact/active_set_result.h>
+#include <liftoff/contact/bed.h>
 #include <liftoff/contact/status_term.h>
-#include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/solver/factor_cache.h>
 #include <liftoff/solver/ghost_update.h>
@@ -56,14 +56,14 @@ namespace liftoff
     void
     parse_parameters(ParameterHandler &prm);
 
-    ActiveSetIteration(const Discretization         &discretization,
-                       TensionlessWinklerFoundation &foundation,
-                       SectionTimer                 &timer);
+    ActiveSetIteration(const Discretization &discretization,
+                       SectionTimer         &timer);
 
-    /// The terms with a status it drives besides the foundation (before
-    /// the first set_base_matrix()).
+    /// The terms of the plate's system (SceneParts::system_terms()): it
+    /// drives those with a status, in their order, and asks the bed
+    /// whether the plate is held (before the first set_base_matrix()).
     void
-    drive_also(const std::vector<StatusTerm *> &others);
+    use_terms(const std::vector<SystemTerm *> &system_terms);
 
     /// Every term's status from `ghosted_u` (a state, not a solve).
     void
@@ -173,9 +173,9 @@ namespace liftoff
   private:
     using Statuses = std::vector<StatusTerm::Status>;
 
-    const Discretization         &discretization;
-    TensionlessWinklerFoundation &foundation;
-    /// The foundation first.
+    const Discretization &discretization;
+    /// The term the plate rests on, and the terms with a status.
+    const Bed                *bed = nullptr;
     std::vector<StatusTerm *> terms;
     SectionTimer             &timer;
     /// B + K_f(S), kept in step with S.

@@ -4,6 +4,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
 
+#include <liftoff/contact/dowel_bar.h>
+#include <liftoff/contact/dowel_layout.h>
 #include <liftoff/contact/status_term.h>
 
 #include <map>
@@ -17,59 +19,6 @@ namespace liftoff
   class SlabLayout;
   class PlateGeometry;
   struct Joint;
-
-  /**
-   * A steel dowel bar across an open joint, embedded in the concrete of
-   * both slabs: Friberg's beam on an elastic foundation of modulus K (the
-   * modulus of dowel support) on each side, the bare bar across the
-   * opening z. A shear force P across the joint moves one slab against the
-   * other by Delta = P / C,
-   *
-   *   1 / C = (2 + beta z) / (2 beta^3 E I) + z (1 + beta z) / (2 beta^2 E I)
-   *           + z^3 / (12 E I) + z / (G A_s),
-   *
-   * beta = (K d / (4 E I))^(1/4): twice the bar's deflection at the face
-   * of the concrete, the rotation of the faces carried across the opening,
-   * the bar's bending and its shear (A_s = 0.9 A) across it
-   * (doc/model.md). The largest bearing stress on the concrete is K times
-   * the deflection at the face, K P (2 + beta z) / (4 beta^3 E I).
-   */
-  struct DowelBar
-  {
-    double diameter        = 0;
-    double modulus         = 0;
-    double poisson_ratio   = 0.3;
-    double support_modulus = 0;
-    double opening         = 0;
-
-    /// Its entries in the current subsection (`Slabs/Dowels`).
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-
-    /// C, the force per unit relative deflection of the two slabs.
-    double
-    stiffness() const;
-    /// The bearing stress on the concrete at the face of the joint under
-    /// a force P.
-    double
-    bearing_stress(const double force) const;
-  };
-
-
-  /// A dowel of the modelled part: its name dowel_<joint>_<k> (k from 1
-  /// along the joint, numbered on the full plate), its joint (index in the
-  /// layout's joints), its point, and the modelled part's share of it (1/2
-  /// per symmetry plane through it).
-  struct DowelSite
-  {
-    std::string  name;
-    unsigned int joint;
-    Point<2>     location;
-    double       share;
-  };
-
 
   /**
    * Dowels at points along the joints between slabs: each a spring of
@@ -185,14 +134,10 @@ namespace liftoff
       both  = 3
     };
 
-    std::vector<std::string> joint_names;
-    /// Slabs/Dowels/Positions by joint name ("": every joint).
-    std::map<std::string, std::vector<double>> positions;
-    double                                     spacing         = 0;
-    double                                     edge_distance   = 0;
-    double                                     given_stiffness = 0;
-    DowelBar                                   dowel_bar;
-    double                                     looseness = 0;
+    DowelLayout layout;
+    double      given_stiffness = 0;
+    DowelBar    dowel_bar;
+    double      looseness = 0;
 
     std::vector<DowelSite> dowel_sites;
 
@@ -210,13 +155,6 @@ namespace liftoff
     double                band           = 0;
     const Discretization *discretization = nullptr;
 
-    /// The modelled part's share of a dowel at p on `joint`, whose dowels
-    /// are at the distances `at` from its lower end: 0 on a mirror image.
-    double
-    modelled_share(const Point<2>            &p,
-                   const PlateGeometry       &geometry,
-                   const Joint               &joint,
-                   const std::vector<double> &at) const;
     /// Dowel d, on the piece `face` of `cell` (a piece of its joint).
     Local
     make_local(const DoFHandler<2>::active_cell_iterator &cell,
@@ -238,11 +176,5 @@ namespace liftoff
     add_vector(const unsigned int i,
                const double       factor,
                LA::MPI::Vector   &vector) const;
-    /// Slabs/Dowels/Positions into `positions`.
-    void
-    parse_positions(const std::string &text);
-    /// The dowel positions along the joint `joint` of length `length`.
-    std::vector<double>
-    positions_along(const std::string &joint, const double length) const;
   };
 } // namespace liftoff

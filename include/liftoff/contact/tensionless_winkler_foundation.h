@@ -5,6 +5,7 @@
 
 #include <liftoff/base/archive_types.h>
 #include <liftoff/base/linear_algebra.h>
+#include <liftoff/contact/bed.h>
 #include <liftoff/contact/contact_law.h>
 #include <liftoff/contact/foundation_diagnostics.h>
 #include <liftoff/contact/foundation_points.h>
@@ -66,7 +67,7 @@ namespace liftoff
    * It is a term of the plate's system with a status (StatusTerm): the
    * active-set iteration adds and updates its matrix entries.
    */
-  class TensionlessWinklerFoundation : public StatusTerm
+  class TensionlessWinklerFoundation : public Bed
   {
   public:
     TensionlessWinklerFoundation();
@@ -101,15 +102,15 @@ namespace liftoff
     /// The law: Gamma, c, G_p, g, and the pressure k (w - e) that the
     /// calls below take for the plate's velocity.
     const ContactLaw &
-    law() const;
+    law() const override;
     /// Resultant, pressure range, contact area, energies of the current
     /// status.
     const FoundationDiagnostics &
-    diagnostics() const;
+    diagnostics() const override;
 
     /// Every Gauss point in contact: the first iterate of eq. (3.9).
     void
-    activate_all();
+    activate_all() override;
 
     /// Status from w_h - e at the Gauss points, e the effective gap of
     /// `pressure`: a point comes into contact where w_h - e > delta and
@@ -185,7 +186,7 @@ namespace liftoff
     void
     add_dissipative_force(const LA::MPI::Vector &ghosted_solution,
                           const LA::MPI::Vector &ghosted_velocity,
-                          LA::MPI::Vector       &vector) const;
+                          LA::MPI::Vector       &vector) const override;
 
     /// The contact status and the status the system matrix holds: the next
     /// step starts from them, so a resumed run needs them exactly.

@@ -4,6 +4,8 @@
 #include <deal.II/fe/fe_values_extractors.h>
 
 #include <array>
+#include <string>
+#include <vector>
 
 namespace liftoff
 {
@@ -56,6 +58,15 @@ namespace liftoff
       selected[psi_y] = of_psi_y;
       return ComponentMask(selected);
     }
+    /// The fields' names in the element's order, as the field files and
+    /// their readers know them; `suffix` makes the names of a rate
+    /// ("_dot").
+    static std::vector<std::string>
+    names(const std::string &suffix = "")
+    {
+      return {"w" + suffix, "psi_x" + suffix, "psi_y" + suffix};
+    }
+
     /// The mask of w alone.
     static ComponentMask
     w_mask()

@@ -31,23 +31,22 @@ namespace liftoff
     /// Reads the deflectometer of the scene's Loads, if one is on; refuses
     /// two.
     void
-    parse_parameters(ParameterHandler &scene);
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
     /// The offsets: an SI scene's default is the SHRP set; a dimensionless
     /// scene must give them.
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
     /// Sensors on the plate (needs no mesh).
     void
-    check_against(const Discretization &discretization) const;
+    check(const SceneView &scene) const override;
     /// Adds the sensors' columns to `history`.
     void
     add_columns_to(TimeHistory &history) const override;
 
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     void
     execute(const StepData &step) override;
     void

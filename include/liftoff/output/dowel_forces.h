@@ -36,7 +36,9 @@ namespace liftoff
   class DowelForces : public Output
   {
   public:
-    explicit DowelForces(const JointDowels &dowels);
+    /// The scene's dowels (none: nothing is written).
+    void
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
 
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
@@ -44,10 +46,9 @@ namespace liftoff
     void
     add_columns_to(TimeHistory &history) const override;
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &) override
+    mesh_changed(const SceneView &) override
     {}
     void
     execute(const StepData &step) override;
@@ -62,7 +63,7 @@ namespace liftoff
     add_to(RunSummary &summary) const override;
 
   private:
-    const JointDowels &dowels;
+    const JointDowels *dowels = nullptr;
     PhysicalUnits      units;
     /// The largest |force| so far (solver's units), its dowel and time.
     double       largest      = 0;

@@ -14,6 +14,7 @@ namespace liftoff
 {
   using namespace dealii;
 
+  class Discretization;
   class MeshRefinement;
   class RunSummary;
 
@@ -37,21 +38,20 @@ namespace liftoff
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
 
     /// Refuses envelopes on a mesh that adapts.
     void
-    check_against(const MeshRefinement &mesh_refinement) const;
+    check(const SceneView &scene) const override;
 
     /// The summary's extremes and envelope.pvtu in the scene's units.
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     void
     execute(const StepData &step) override;
     void

@@ -6,8 +6,8 @@
 
 #include <liftoff/base/archive_types.h>
 #include <liftoff/base/physical_units.h>
+#include <liftoff/contact/bed.h>
 #include <liftoff/contact/joint_dowels.h>
-#include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/loads/free_bending.h>
@@ -40,12 +40,10 @@ namespace liftoff
     /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
-    /// `plate` is the scene's, whose section the moment fields need, and
-    /// `dowels` its dowels (none: no dowel files).
+    /// The moment fields need the scene's plate (its section); the
+    /// dowels' files its dowels (none: no dowel files).
     void
-    parse_parameters(ParameterHandler   &prm,
-                     const MindlinPlate &plate,
-                     const JointDowels  &dowels);
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
 
     /// Whether step `step` is written (the last step always is, unless the
     /// interval is 0).
@@ -55,13 +53,13 @@ namespace liftoff
     /// The fields of the state, in the scene's units (write_in_units_of())
     /// at `time`, given in them.
     void
-    write(const std::string                  &directory,
-          const Discretization               &discretization,
-          const TensionlessWinklerFoundation &foundation,
-          const LA::MPI::Vector              &ghosted_solution,
-          const LA::MPI::Vector              &ghosted_velocity,
-          const double                        time,
-          const unsigned int                  step);
+    write(const std::string     &directory,
+          const Discretization  &discretization,
+          const Bed             &foundation,
+          const LA::MPI::Vector &ghosted_solution,
+          const LA::MPI::Vector &ghosted_velocity,
+          const double           time,
+          const unsigned int     step);
 
     /// Write the PVD file with the records so far (none: no file), and
     /// solution.xdmf with HDF5 output, if `is_due` on rank 0. Collective, as
@@ -78,10 +76,9 @@ namespace liftoff
     write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     /// write() when the step is due and the run writes files.
     void
     execute(const StepData &step) override;
@@ -100,11 +97,11 @@ namespace liftoff
     /// in `plane`, with its patches built (the postprocessors and cell
     /// vectors it reads live here until then).
     void
-    build_patches(FieldDataOut                       &plane,
-                  const Discretization               &disc,
-                  const TensionlessWinklerFoundation &foundation,
-                  const LA::MPI::Vector              &solution,
-                  const LA::MPI::Vector              &velocity) const;
+    build_patches(FieldDataOut          &plane,
+                  const Discretization  &disc,
+                  const Bed             &foundation,
+                  const LA::MPI::Vector &solution,
+                  const LA::MPI::Vector &velocity) const;
 
     unsigned int                                interval           = 10;
     bool                                        higher_order_cells = false;

@@ -13,6 +13,7 @@ namespace liftoff
   using namespace dealii;
 
   class MindlinPlate;
+  class Discretization;
   class PlateGeometry;
   class TimeHistory;
 
@@ -40,18 +41,15 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     /// Refuses a point that lies on no joint that is not tied.
     void
-    parse_parameters(ParameterHandler    &prm,
-                     const PlateGeometry &geometry,
-                     const MindlinPlate  &plate);
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
     /// Adds its columns to `history`: w_lower, w_upper, lte, sigma_lower,
     /// sigma_upper, lte_sigma at each point.
     void
     add_columns_to(TimeHistory &history) const override;
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     void
     execute(const StepData &) override
     {}

@@ -13,6 +13,7 @@ namespace liftoff
 {
   using namespace dealii;
 
+  class Discretization;
   class PlateGeometry;
 
   /**
@@ -34,14 +35,13 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     /// Refuses profiles of a plate without joints that are not tied.
     void
-    parse_parameters(ParameterHandler &prm, const PlateGeometry &geometry);
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     void
     execute(const StepData &step) override;
     void

@@ -5,31 +5,31 @@
 
 #include <string>
 
+namespace dealii
+{
+  class ParameterHandler;
+}
+
 namespace liftoff
 {
+  using dealii::ParameterHandler;
 
   // StepData holds references only: the outputs include what they use.
-  class Discretization;
-  class JointSprings;
-  class JointDowels;
   class PhysicalUnits;
   class ResultantSweep;
   class TimeHistory;
   class RunSummary;
-  class TensionlessWinklerFoundation;
   struct PlateState;
+  struct SceneView;
 
   /// What an Output sees after a step (or the one solve of a static
   /// analysis): the state (with its clock: step, tau, dt, the last step)
   /// and the parts that give it meaning.
   struct StepData
   {
-    const PlateState                   &state;
-    const Discretization               &discretization;
-    const TensionlessWinklerFoundation &foundation;
-    /// What the joints between slabs pass (a plate of one slab has none).
-    const JointSprings    &joints;
-    const JointDowels     &dowels;
+    const PlateState &state;
+    /// The scene's parts by role (output/scene_view.h).
+    const SceneView       &scene;
     const ActiveSetResult &iteration;
     /// The resultants at the output points, computed by the first output
     /// that reads them.
@@ -41,16 +41,40 @@ namespace liftoff
 
   /**
    * One thing a run writes after its steps, in the spirit of ASPECT's
-   * postprocessors: the time history, profiles, fields. The Simulator
-   * calls every output the same way, so a new one is a new class and one
-   * line in the Simulator's list. Its parameters are entries of the
-   * `Output` subsection, which the Simulator enters around the output's
+   * postprocessors: the time history, profiles, fields. Every output is
+   * called the same way, so a new one is a new class with its own
+   * parameters and one line in OutputList's list (output_list.cc); the
+   * Simulator does not change. Its parameters are entries of the `Output`
+   * subsection, which OutputList enters around the output's
    * declare_parameters() and parse_parameters().
    */
   class Output
   {
   public:
     virtual ~Output() = default;
+
+    /// Its entries (none by default); each output declares its own.
+    static void
+    declare_parameters(ParameterHandler &)
+    {}
+    /// Read its entries (inside `Output`) and check them against the
+    /// scene's parts; throws naming the entry. May be called again with
+    /// other parameters before setup().
+    virtual void
+    parse_parameters(ParameterHandler &, const SceneView &)
+    {}
+    /// The checks against the scene that follow the parts' own (a probe
+    /// on the plate), after every output has read its entries.
+    virtual void
+    check(const SceneView &) const
+    {}
+    /// What the output found wrong with the run's answer (empty: nothing),
+    /// for the summary's status.
+    virtual std::string
+    warning() const
+    {
+      return {};
+    }
 
     /// Its columns of history.csv, if it has any (TimeHistory::add_columns).
     virtual void
@@ -71,14 +95,13 @@ namespace liftoff
     /// Before the first step: the mesh, and the folder to write to (empty:
     /// keep results in memory only).
     virtual void
-    setup(const Discretization &discretization,
-          const std::string    &directory) = 0;
+    setup(const SceneView &scene, const std::string &directory) = 0;
 
     /// The mesh has been refined or coarsened (Mesh refinement): whatever
     /// the output keeps per cell or point (probe cells, point searches,
-    /// vector layouts) must be found again on `discretization`.
+    /// vector layouts) must be found again on the scene's discretization.
     virtual void
-    mesh_changed(const Discretization &discretization) = 0;
+    mesh_changed(const SceneView &scene) = 0;
 
     /// After every step. Collective.
     virtual void

@@ -36,22 +36,19 @@ namespace liftoff
     /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
+    /// Also finds the moving load a riding profile follows, refusing a
+    /// `Profile follows` that names none of the scene's.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
 
     /// Write profiles.csv in the scene's units (TimeHistory's rule).
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
 
+    /// The line on the plate; a warning of the times a time integration
+    /// does not reach.
     void
-    check_against(const Discretization &discretization) const;
-
-    /// The moving loads' names and their points at tau (LoadSet's
-    /// moving_load_names() and moving_load_positions()), which a riding
-    /// profile needs; refuses a `Profile follows` that names none of them.
-    void
-    follow(const std::vector<std::string>                         &names,
-           const std::function<std::vector<double>(const double)> &positions);
+    check(const SceneView &scene) const override;
 
     /// The requested times that a time integration with step `dt` to
     /// `end_time` does not reach (nearer to no step than dt/2).
@@ -66,10 +63,9 @@ namespace liftoff
                               const MPI_Comm comm) const;
 
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
 
     /// Write the profiles requested for times within dt/2 of tau; in a
     /// static analysis (time step 0) write one profile unconditionally.
@@ -88,6 +84,12 @@ namespace liftoff
     flush() override;
 
   private:
+    /// The moving loads' names and their points at tau (LoadSet's
+    /// moving_load_names() and moving_load_positions()).
+    void
+    follow(const std::vector<std::string>                         &names,
+           const std::function<std::vector<double>(const double)> &positions);
+
     Point<2>     start, end;
     unsigned int n_points = 0;
     /// The moving load the line rides with ("": the line stands), its

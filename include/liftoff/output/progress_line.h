@@ -30,10 +30,9 @@ namespace liftoff
     write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     void
     execute(const StepData &step) override;
     /// Ends the line on a terminal, so that what follows starts on its own.

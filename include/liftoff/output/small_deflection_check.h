@@ -31,10 +31,9 @@ namespace liftoff
     void
     write_in_units_of(const PhysicalUnits &units) override;
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     void
     execute(const StepData &step) override;
     void
@@ -53,7 +52,7 @@ namespace liftoff
     /// Empty while the deflection is small or not checked, else a
     /// sentence naming the largest |w|, its time and the thickness.
     std::string
-    warning() const;
+    warning() const override;
 
     /// The largest |w| / H as an entry of the summary (SI scenes only).
     void

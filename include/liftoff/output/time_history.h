@@ -29,8 +29,9 @@ namespace liftoff
    * reader never sees a half-written row.
    *
    * A new column is one call of HistoryColumns::add() in make_columns():
-   * its name, its quantity and its value at a step. A checkpoint keeps the
-   * column names with the rows, so one of other columns is refused by name
+   * its name, its quantity and its value at a step; the columns are made
+   * once, at setup(), when every output has added its own. A checkpoint keeps
+   * the column names with the rows, so one of other columns is refused by name
    * instead of misread.
    */
   class RunSummary;
@@ -47,27 +48,18 @@ namespace liftoff
     /// Entries of the `Output` subsection.
     static void
     declare_parameters(ParameterHandler &prm);
+    /// Also follows the scene's moving loads (columns <name>_x, <name>_y,
+    /// <name>_on per load) and shows the dashpots' dissipated energy (a
+    /// column after `work`, with the energies) where the bed has dashpots.
     void
-    parse_parameters(ParameterHandler &prm, const MindlinPlate &plate);
-
-    /// The default probe is the plate's centre, which an annulus lacks
-    /// (it lies in the hole): there the default gives no probe. Returns
-    /// whether it was dropped.
-    bool
-    drop_default_probe_off(const PlateGeometry &geometry);
-
+    parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
 
     /// Probes inside the plate (full plate coordinates); needs no mesh.
     void
-    check_against(const Discretization &discretization) const;
+    check(const SceneView &scene) const override;
 
     bool
     wants_energies() const;
-    /// Columns <name>_x, <name>_y, <name>_on per moving load, their values
-    /// at tau in that order from `positions` (LoadSet's moving loads).
-    void
-    follow(const std::vector<std::string>                         &names,
-           const std::function<std::vector<double>(const double)> &positions);
 
     /// Columns another output computes (a deflectometer's sensors), after
     /// the others.
@@ -82,11 +74,6 @@ namespace liftoff
     void
     add_step_sizes(const std::function<std::vector<double>()> &values);
 
-    /// Write the dashpots' dissipated energy (a column `dissipated_energy`
-    /// after `work`, with the energies): only a scene with dashpots has it.
-    void
-    show_dissipated_energy(const bool show);
-
     /// Write the columns in the scene's units: an SI scene's names carry
     /// their unit ("t [s]", "w(2.5;0) [m]") and its values are in SI; a
     /// dimensionless scene's columns are as they were.
@@ -94,10 +81,9 @@ namespace liftoff
     write_in_units_of(const PhysicalUnits &scene_units) override;
 
     void
-    setup(const Discretization &discretization,
-          const std::string    &directory) override;
+    setup(const SceneView &scene, const std::string &directory) override;
     void
-    mesh_changed(const Discretization &discretization) override;
+    mesh_changed(const SceneView &scene) override;
     void
     execute(const StepData &step) override;
     void
@@ -123,6 +109,17 @@ namespace liftoff
                        const std::vector<Point<2>>    &points) const;
 
   private:
+    /// The default probe is the plate's centre, which an annulus lacks
+    /// (it lies in the hole): there the default gives no probe. Returns
+    /// whether it was dropped.
+    bool
+    drop_default_probe_off(const PlateGeometry &geometry);
+    /// The columns of the moving loads, their values at tau in that order
+    /// from `positions`.
+    void
+    follow(const std::vector<std::string>                         &names,
+           const std::function<std::vector<double>(const double)> &positions);
+
     /// A probe of a stress resultant: its field, its point and, on the
     /// rank that holds the point, the cells around it with the point's
     /// unit coordinates (PointFunctional::holder_cells()).

@@ -15,6 +15,7 @@
 #include <liftoff/fem/plate_matrices.h>
 #include <liftoff/fem/plate_term.h>
 #include <liftoff/loads/load_set.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/time/energy_check.h>
 #include <liftoff/time/newmark_integrator.h>
 #include <liftoff/time/time_stepper.h>
@@ -66,16 +67,15 @@ namespace liftoff
     /// default (no step, dt = 0) for a static analysis.
     Clock
     clock() const;
+    /// What the outputs read, by role; `units` the scene's, `notes` rank
+    /// 0's start-up lines.
+    SceneView
+    view(const PhysicalUnits &units, const ConditionalOStream &notes) const;
+
     /// What the TimeStepper works on.
     TimeStepper::Parts
     for_stepper();
-    /// The terms of the plate's system, the plate first: a coupling (a
-    /// joint's springs) is one more line here.
-    std::vector<SystemTerm *>
-    system_terms();
 
-    /// `Analysis/Type = dynamic` (else static).
-    bool                         dynamic = true;
     InitialConditions            initial_conditions;
     MindlinPlate                 plate;
     Discretization               discretization;
@@ -89,5 +89,13 @@ namespace liftoff
     EnergyCheck                  energy_check;
     MeshRefinement               mesh_refinement;
     ActiveSetIteration           active_set;
+
+  private:
+    /// `Analysis/Type = dynamic` (else static).
+    bool dynamic = true;
+    /// The terms of the plate's system, the plate first: a coupling (a
+    /// joint's springs) is one more line here.
+    std::vector<SystemTerm *>
+    system_terms();
   };
 } // namespace liftoff

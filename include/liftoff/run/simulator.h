@@ -8,18 +8,9 @@
 #include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 
-#include <liftoff/output/deflectometer_sensors.h>
-#include <liftoff/output/dowel_forces.h>
-#include <liftoff/output/envelopes.h>
-#include <liftoff/output/field_output.h>
-#include <liftoff/output/joint_probes.h>
-#include <liftoff/output/joint_profiles.h>
-#include <liftoff/output/output.h>
-#include <liftoff/output/profile_output.h>
-#include <liftoff/output/progress_line.h>
+#include <liftoff/output/output_list.h>
 #include <liftoff/output/run_summary.h>
-#include <liftoff/output/small_deflection_check.h>
-#include <liftoff/output/time_history.h>
+#include <liftoff/output/scene_view.h>
 #include <liftoff/run/checkpoint.h>
 #include <liftoff/run/output_directory.h>
 #include <liftoff/run/scene_parts.h>
@@ -33,6 +24,8 @@
 namespace liftoff
 {
   using namespace dealii;
+
+  class Envelopes;
 
   /**
    * One scene from start to end, the main loop in the sense of step-69:
@@ -129,29 +122,11 @@ namespace liftoff
 
     /// The scene's unit system; converts an SI scene before the parts
     /// read it, and gives the outputs their units.
-    PhysicalUnits        units;
-    SceneParts           parts;
-    TimeHistory          time_history;
-    ProfileOutput        profile_output;
-    JointProfiles        joint_profiles;
-    JointProbes          joint_probes;
-    FieldOutput          field_output;
-    Envelopes            envelopes;
-    SmallDeflectionCheck small_deflection;
-    DeflectometerSensors deflectometer_sensors;
-    DowelForces          dowel_forces{parts.joint_dowels};
-    ProgressLine         progress_line;
-    /// What is written after each step, in this order.
-    std::vector<Output *> outputs{&time_history,
-                                  &profile_output,
-                                  &joint_profiles,
-                                  &field_output,
-                                  &envelopes,
-                                  &deflectometer_sensors,
-                                  &dowel_forces,
-                                  &joint_probes,
-                                  &small_deflection};
-    Checkpoint            checkpoint;
+    PhysicalUnits units;
+    SceneParts    parts;
+    /// What is written after each step.
+    OutputList outputs;
+    Checkpoint checkpoint;
 
     int         stopped_by_signal = 0;
     std::string output_directory;
@@ -256,6 +231,10 @@ namespace liftoff
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int version);
+    /// The parts as the outputs see them.
+    SceneView
+    scene_view() const;
+
     /// How the run ended and what it cost.
     RunSummary
     summary_of_run(const std::string &status) const;
@@ -278,7 +257,7 @@ namespace liftoff
   inline const std::vector<HistoryRow> &
   Simulator::history() const
   {
-    return time_history.rows();
+    return outputs.history().rows();
   }
 
 
@@ -286,13 +265,6 @@ namespace liftoff
   Simulator::static_equilibrium_imbalance() const
   {
     return stepper->static_equilibrium().imbalance;
-  }
-
-
-  inline const Envelopes &
-  Simulator::get_envelopes() const
-  {
-    return envelopes;
   }
 
 

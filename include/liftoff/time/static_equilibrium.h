@@ -5,7 +5,7 @@
 namespace liftoff
 {
   class Discretization;
-  class TensionlessWinklerFoundation;
+  class Bed;
 
   /**
    * The check a static run makes of its own answer: a plate that no edge
@@ -52,11 +52,11 @@ namespace liftoff
 
     /// Collective.
     static Result
-    check(const Discretization               &discretization,
-          const TensionlessWinklerFoundation &foundation,
-          const LA::MPI::Vector              &ghosted_solution,
-          const LA::MPI::Vector              &load,
-          const LA::MPI::SparseMatrix        &system_matrix);
+    check(const Discretization        &discretization,
+          const Bed                   &foundation,
+          const LA::MPI::Vector       &ghosted_solution,
+          const LA::MPI::Vector       &load,
+          const LA::MPI::SparseMatrix &system_matrix);
 
     /// The largest imbalance a static run accepts without a warning where
     /// round-off allows it: the direct solves leave about 1e-12.

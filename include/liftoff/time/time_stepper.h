@@ -4,7 +4,7 @@
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/base/section_timer.h>
 #include <liftoff/contact/active_set_iteration.h>
-#include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/contact/bed.h>
 #include <liftoff/time/energy_balance.h>
 #include <liftoff/time/newmark_integrator.h>
 #include <liftoff/time/plate_state.h>
@@ -49,14 +49,13 @@ namespace liftoff
       Discretization     &discretization;
       PlateMatrices      &matrices;
       /// The terms of the plate's system, the plate first
-      /// (SceneParts::system_terms()); the foundation is one of them.
-      std::vector<SystemTerm *>     terms;
-      TensionlessWinklerFoundation &foundation;
-      LoadSet                      &loads;
-      const NewmarkIntegrator      &newmark;
-      EnergyCheck                  &energy_check;
-      const MeshRefinement         &mesh_refinement;
-      ActiveSetIteration           &active_set;
+      /// (SceneParts::system_terms()); the bed is one of them (Bed::of()).
+      std::vector<SystemTerm *> terms;
+      LoadSet                  &loads;
+      const NewmarkIntegrator  &newmark;
+      EnergyCheck              &energy_check;
+      const MeshRefinement     &mesh_refinement;
+      ActiveSetIteration       &active_set;
     };
 
     /// What the scene asks of the numerics beyond its parts.
@@ -168,8 +167,9 @@ namespace liftoff
     Discretization                 &discretization;
     PlateMatrices                  &matrices;
     const std::vector<SystemTerm *> terms;
-    TensionlessWinklerFoundation   &foundation;
-    LoadSet                        &loads;
+    /// The term the plate rests on, in its role.
+    Bed     &bed;
+    LoadSet &loads;
     /// The scene's scheme, and the one of the step being taken (its time
     /// step the controller's).
     const NewmarkIntegrator &scene_newmark;
@@ -313,7 +313,7 @@ namespace liftoff
     pressure_at_state_velocity();
     /// dissipative_force = c int_S v phi of the state, plus the springs'
     /// force the foundation energy does not hold
-    /// (TensionlessWinklerFoundation::add_dissipative_force()).
+    /// (Bed::add_dissipative_force()).
     void
     compute_dissipative_force();
     /// The system matrix of the time steps from the bilateral set.
