@@ -62,6 +62,25 @@ def westergaard():
             "corner": (corner_stress, corner_w)}
 
 
+def exact_interior():
+    """The infinite Kirchhoff plate under the disc, by the Hankel transform
+    (as tests/verification/westergaard_stress.py): the stress at the centre
+    [Pa] and the deflection there [m], to check the interior forms."""
+    import numpy as np
+    from scipy import integrate, special
+    d = E * H**3 / (12 * (1 - NU**2))
+    q = P / (math.pi * A * A)
+    zeros = np.concatenate([[0.0], special.jn_zeros(1, 4000) / A])
+
+    def integral(f):
+        return sum(integrate.quad(f, lo, hi)[0]
+                   for lo, hi in zip(zeros[:-1], zeros[1:]))
+    w = q * A * integral(lambda s: special.j1(s * A) / (d * s**4 + K))
+    m = (1 + NU) / 2 * q * A * integral(
+        lambda s: s**2 * special.j1(s * A) * d / (d * s**4 + K))
+    return 6 * m / H**2, w
+
+
 # Each case: the slab (m), the model, the load and the points read. The
 # slabs reach 6 m (6.3 l) from the load on every side but the loaded edges:
 # an 8 m slab (4.2 l) added 1.3 % to the thin twin's interior deflection
@@ -195,9 +214,22 @@ def main():
     parser.add_argument("--executable", required=True)
     parser.add_argument("--output", required=True)
     parser.add_argument("--figure")
+    parser.add_argument("--closed-forms-only", action="store_true",
+                        help="print the closed forms and make no run")
     args = parser.parse_args()
     closed = westergaard()
     print("l = %.4f m, a / l = %.4f, c = %.4f m" % (ELL, A / ELL, C_SQUARE))
+    stress, w = exact_interior()
+    print("interior, exact infinite Kirchhoff plate: %.5g MPa, %.5g mm; "
+          "ITB 1985: %.5g MPa (%+.3f %%), %.5g mm (%+.3f %%)" % (
+              stress * 1e-6, w * 1e3, closed["interior"][0] * 1e-6,
+              100 * (closed["interior"][0] / stress - 1),
+              closed["interior"][1] * 1e3,
+              100 * (closed["interior"][1] / w - 1)))
+    if args.closed_forms_only:
+        for case, (s_, w_) in closed.items():
+            print("%s: %.5g MPa, %.5g mm" % (case, s_ * 1e-6, w_ * 1e3))
+        return
     rows = {}
     for case in ("interior", "edge", "corner"):
         for n in MESHES:
