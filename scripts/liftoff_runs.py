@@ -32,11 +32,22 @@ def override_text(overrides):
 
 
 def scene_with_overrides(scene_file, overrides, directory):
-    """The scene file's text, the overrides, and the output directory."""
+    """The scene file's text, the overrides, and the output directory. The
+    text is run from another folder, so its relative include lines are
+    made absolute (against the scene file's folder, as liftoff resolves
+    them when it runs the file itself)."""
+    folder = os.path.dirname(os.path.abspath(scene_file))
+    lines = []
     with open(scene_file) as f:
-        text = f.read()
-    return text + override_text(list(overrides)
-                                + ["Output/Directory=" + directory])
+        for line in f:
+            stripped = line.strip()
+            if stripped.startswith("include "):
+                target = stripped[len("include "):].split("#", 1)[0].strip()
+                if target and not os.path.isabs(target):
+                    line = "include %s\n" % os.path.join(folder, target)
+            lines.append(line)
+    return "".join(lines) + override_text(
+        list(overrides) + ["Output/Directory=" + directory])
 
 
 def scene_including(scene_file, overrides, directory):
