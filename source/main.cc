@@ -8,6 +8,7 @@
 #include <liftoff/run/stop_signal.h>
 #include <liftoff/version.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -28,6 +29,12 @@ namespace
     "                                    checkpoint in its output directory\n"
     "                                    (same number of ranks; the end time\n"
     "                                    may be changed)\n"
+    "       liftoff --batch SCENE...     run the scenes one after the other "
+    "in\n"
+    "                                    this process, each into its own\n"
+    "                                    output directory as if run alone; a\n"
+    "                                    scene that fails does not stop the\n"
+    "                                    others (exit code 1 if any failed)\n"
     "       liftoff --quiet ...          no progress line, and one status\n"
     "                                    line instead of the summary, which\n"
     "                                    stays in summary.txt (also -q; with\n"
@@ -160,7 +167,8 @@ namespace
   {
     liftoff::Simulator::Start start = liftoff::Simulator::Start::fresh;
     bool                      quiet = false;
-    std::string               scene_name;
+    bool                      batch = false;
+    std::vector<std::string>  scene_names;
     /// Empty if the command line is valid.
     std::string error;
   };
@@ -187,17 +195,24 @@ namespace
           }
         else if (argument == "--quiet" || argument == "-q")
           command.quiet = true;
+        else if (argument == "--batch")
+          command.batch = true;
         else if (argument.size() > 1 && argument[0] == '-')
           command.error = "unknown option " + argument + ".";
         else
           scenes.push_back(argument);
       }
-    if (command.error.empty() && scenes.size() != 1)
-      command.error = scenes.empty() ? "no scene file given."
-                                     : "one scene file at a time, not "
-                                         + std::to_string(scenes.size()) + ".";
-    if (command.error.empty())
-      command.scene_name = scenes.front();
+    if (command.error.empty() && scenes.empty())
+      command.error = "no scene file given.";
+    else if (command.error.empty() && scenes.size() > 1 && !command.batch)
+      command.error = "one scene file at a time, not "
+                      + std::to_string(scenes.size())
+                      + " (--batch runs several).";
+    else if (command.error.empty() && command.batch
+             && std::count(scenes.begin(), scenes.end(), "-") > 0)
+      command.error = "--batch reads its scenes from files, not from "
+                      "standard input (-).";
+    command.scene_names = scenes;
     return command;
   }
 
@@ -256,6 +271,46 @@ namespace
       }
     return stopping_signal != 0 ? 128 + stopping_signal : 1;
   }
+  // One scene from its file to its results: its own parameters and
+  // Simulator, so that the scenes of a batch share nothing but the
+  // process. Returns the exit code a run of it alone would have.
+  int
+  run_scene(const std::string &scene_name,
+            const CommandLine &command,
+            const MPI_Comm     comm)
+  {
+    int stopping_signal = 0;
+    // Keep the simulator alive until its exception has been caught: its
+    // destructors must not run during stack unwinding under MPI.
+    std::exception_ptr failure;
+    // Whether the mesh grows during the run: then running out of memory
+    // is the refinement's doing, not the initial mesh's (which is checked
+    // against the memory before it is built).
+    bool is_adaptive = false;
+    {
+      dealii::ParameterHandler prm;
+      liftoff::Simulator       simulator(comm, true, !command.quiet);
+      try
+        {
+          liftoff::Simulator::declare_parameters(prm);
+          read_scene(scene_name, comm).parse_into(prm, scene_name);
+          simulator.parse_parameters(prm);
+          prm.enter_subsection("Mesh refinement");
+          is_adaptive = prm.get_bool("Adaptive");
+          prm.leave_subsection();
+          simulator.run(prm, command.start);
+        }
+      catch (...)
+        {
+          failure         = std::current_exception();
+          stopping_signal = simulator.stopping_signal();
+        }
+    }
+    if (!failure)
+      return 0;
+    return report_failure(
+      failure, scene_name, is_adaptive, stopping_signal, comm);
+  }
 } // namespace
 
 
@@ -278,39 +333,32 @@ main(int argc, char **argv)
     }
 
   // SIGINT / SIGTERM end the run after the current step with complete
-  // files and the exit code 128 + signal.
+  // files and the exit code 128 + signal; a batch starts no further scene.
   liftoff::StopSignal::install();
-  int stopping_signal = 0;
-
-  // Keep the simulator alive until its exception has been caught: its
-  // destructors must not run during stack unwinding under MPI.
-  std::exception_ptr failure;
-  // Whether the mesh grows during the run: then running out of memory is
-  // the refinement's doing, not the initial mesh's (which is checked
-  // against the memory before it is built).
-  bool is_adaptive = false;
-  {
-    dealii::ParameterHandler prm;
-    liftoff::Simulator       simulator(comm, true, !command.quiet);
-    try
-      {
-        liftoff::Simulator::declare_parameters(prm);
-        read_scene(command.scene_name, comm)
-          .parse_into(prm, command.scene_name);
-        simulator.parse_parameters(prm);
-        prm.enter_subsection("Mesh refinement");
-        is_adaptive = prm.get_bool("Adaptive");
-        prm.leave_subsection();
-        simulator.run(prm, command.start);
-      }
-    catch (...)
-      {
-        failure         = std::current_exception();
-        stopping_signal = simulator.stopping_signal();
-      }
-  }
-  if (!failure)
-    return 0;
-  return report_failure(
-    failure, command.scene_name, is_adaptive, stopping_signal, comm);
+  std::vector<std::string> failed;
+  for (unsigned int i = 0; i < command.scene_names.size(); ++i)
+    {
+      const int code = run_scene(command.scene_names[i], command, comm);
+      if (code > 128)
+        {
+          if (command.batch && i + 1 < command.scene_names.size()
+              && dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+            std::cerr << "liftoff: batch interrupted: "
+                      << command.scene_names.size() - i - 1
+                      << " scene(s) not run." << std::endl;
+          return code;
+        }
+      if (code != 0)
+        failed.push_back(command.scene_names[i]);
+    }
+  if (command.batch && !failed.empty()
+      && dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      std::cerr << "liftoff: batch: " << failed.size() << " of "
+                << command.scene_names.size() << " scenes failed:";
+      for (const std::string &name : failed)
+        std::cerr << ' ' << name;
+      std::cerr << std::endl;
+    }
+  return failed.empty() ? 0 : 1;
 }

@@ -45,4 +45,18 @@ namespace liftoff
                                      state.u,
                                      state.scratch);
   }
+
+
+  SystemTerm::Stores
+  PlateTerm::stores() const
+  {
+    return Stores::strain;
+  }
+
+
+  double
+  PlateTerm::kinetic_energy(const TermState &state) const
+  {
+    return 0.5 * matrices.quadratic_form(matrices.mass, state.u, state.scratch);
+  }
 } // namespace liftoff

@@ -3,8 +3,7 @@
 namespace liftoff
 {
   EnergyBalance
-  energies_of(const PlateMatrices             &matrices,
-              const std::vector<SystemTerm *> &terms,
+  energies_of(const std::vector<SystemTerm *> &terms,
               const LA::MPI::Vector           &u,
               const LA::MPI::Vector           &ghosted_u,
               const LA::MPI::Vector           &v,
@@ -12,15 +11,19 @@ namespace liftoff
               const double                     work,
               LA::MPI::Vector                 &product)
   {
-    EnergyBalance e;
-    e.kinetic =
-      0.5 * copies * matrices.quadratic_form(matrices.mass, v, product);
+    EnergyBalance   e;
     const TermState state{u, ghosted_u, product};
+    // The velocity's kinetic energy needs no ghosts.
+    const TermState motion{v, v, product};
     // copies is a power of two: copies * (1/2 u.K u) is 1/2 copies u.K u
     // to the bit.
-    e.strain = copies * terms.front()->energy(state);
-    for (auto term = terms.begin() + 1; term != terms.end(); ++term)
-      e.foundation += copies * (*term)->energy(state);
+    for (const SystemTerm *term : terms)
+      {
+        e.kinetic += copies * term->kinetic_energy(motion);
+        (term->stores() == SystemTerm::Stores::strain ? e.strain
+                                                      : e.foundation) +=
+          copies * term->energy(state);
+      }
     e.work = work;
     return e;
   }

@@ -107,7 +107,9 @@ namespace liftoff
     for (SystemTerm *term : terms)
       {
         SectionTimer::Scope t(timer,
-                              term == terms.front() ? "assembly" : "setup");
+                              term->stores() == SystemTerm::Stores::strain
+                                ? "assembly"
+                                : "setup");
         term->setup(discretization);
       }
     SectionTimer::Scope t(timer, "setup");
@@ -188,8 +190,9 @@ namespace liftoff
         largest_eigenvalue = matrices.largest_eigenvalue(
           discretization, [&](const LA::MPI::Vector &x, LA::MPI::Vector &y) {
             ghosted = x;
-            for (auto term = terms.begin() + 1; term != terms.end(); ++term)
-              (*term)->add_force({x, ghosted, scratch_2}, y);
+            for (const SystemTerm *term : terms)
+              if (term->stores() != SystemTerm::Stores::strain)
+                term->add_force({x, ghosted, scratch_2}, y);
           });
       }
     return newmark.stable_time_step(largest_eigenvalue);
@@ -653,8 +656,7 @@ namespace liftoff
   EnergyBalance
   TimeStepper::state_energies()
   {
-    EnergyBalance e = energies_of(matrices,
-                                  terms,
+    EnergyBalance e = energies_of(terms,
                                   state_.u,
                                   state_.ghosted_u,
                                   state_.v,

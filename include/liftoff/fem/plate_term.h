@@ -11,7 +11,7 @@ namespace liftoff
    * The plate as the first term of its system: its stiffness K and, in a
    * time step, the mass term mass_factor M (PlateMatrices, assembled on
    * each mesh), its force K u and its strain energy 1/2 u.K u. The kinetic
-   * energy and the mass solves stay with PlateMatrices.
+   * energy 1/2 v.M v is its; the mass solves stay with PlateMatrices.
    */
   class PlateTerm : public SystemTerm
   {
@@ -27,6 +27,11 @@ namespace liftoff
     add_force(const TermState &state, LA::MPI::Vector &force) const override;
     double
     energy(const TermState &state) const override;
+    Stores
+    stores() const override;
+    /// 1/2 v.M v, v = state.u.
+    double
+    kinetic_energy(const TermState &state) const override;
 
   private:
     PlateMatrices      &matrices;

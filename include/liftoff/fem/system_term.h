@@ -32,11 +32,11 @@ namespace liftoff
 
   /**
    * A term of the plate's system: the plate itself (stiffness and mass,
-   * PlateTerm), the foundation (TensionlessWinklerFoundation), and the
-   * couplings between slabs (JointSprings along the joints, JointDowels at
-   * points). The system
-   * matrix, the internal force, the stored energy and the checkpoint are
-   * the sums of its terms' (SceneParts::system_terms(), the plate first).
+   * PlateTerm), the foundation (TensionlessWinklerFoundation, the Bed),
+   * and the couplings between slabs (JointSprings along the joints,
+   * JointDowels at points). The system matrix, the internal force, the
+   * stored and kinetic energies and the checkpoint are the sums of its
+   * terms' (SceneParts::system_terms(), the only list of them).
    *
    * A term whose matrix changes with a status of its own (the
    * foundation's contact set) adds the entries of the status it holds;
@@ -74,6 +74,27 @@ namespace liftoff
     /// The energy it stores at `state`, on the modelled part (collective).
     virtual double
     energy(const TermState &state) const = 0;
+
+    /// Where the energy() it stores is counted: the plate's own strain
+    /// energy, or the energy the plate's supports and couplings store (the
+    /// bed's springs, the joints', the dowels': history.csv's `foundation`).
+    enum class Stores
+    {
+      strain,
+      supports
+    };
+    virtual Stores
+    stores() const
+    {
+      return Stores::supports;
+    }
+    /// The kinetic energy of the velocity `state.u` (its mass's share;
+    /// none by default; collective).
+    virtual double
+    kinetic_energy(const TermState &) const
+    {
+      return 0;
+    }
 
     /// A stiffness by which the term ties unknowns together (a joint's
     /// springs, the dowels): the entry that gives it as the scene names it,

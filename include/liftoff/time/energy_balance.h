@@ -1,7 +1,6 @@
 #pragma once
 
 #include <liftoff/base/linear_algebra.h>
-#include <liftoff/fem/plate_matrices.h>
 #include <liftoff/fem/system_term.h>
 
 #include <vector>
@@ -43,14 +42,14 @@ namespace liftoff
     }
   };
 
-  /// Kinetic energy (of `matrices`' mass), the strain energy of the
-  /// plate (the first of `terms`) and the energy the other terms store
-  /// (the foundation's) of the state (u, v) of the modelled part times
-  /// `copies` (the full plate), with the work `work`. `ghosted_u` is u
-  /// with ghosts, `product` scratch of u's layout (collective).
+  /// The kinetic energy, the plate's strain energy and the energy its
+  /// supports and couplings store (the foundation column), each the sum of
+  /// the terms' (SystemTerm::kinetic_energy(), stores()), of the state
+  /// (u, v) of the modelled part times `copies` (the full plate), with the
+  /// work `work`. `ghosted_u` is u with ghosts, `product` scratch of u's
+  /// layout (collective).
   EnergyBalance
-  energies_of(const PlateMatrices             &matrices,
-              const std::vector<SystemTerm *> &terms,
+  energies_of(const std::vector<SystemTerm *> &terms,
               const LA::MPI::Vector           &u,
               const LA::MPI::Vector           &ghosted_u,
               const LA::MPI::Vector           &v,
