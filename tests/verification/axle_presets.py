@@ -10,7 +10,9 @@ geometry it declares, computed here:
   an aircraft's tridem gear) against the same tyres typed wheel by wheel
   (Wheels) at the positions computed here, discs of area load / pressure,
   and PCA's rectangles 0.8712 l x 0.6 l of that area: the deflections at
-  the tyres' centres and between them agree to round-off.
+  the tyres' centres and between them agree to round-off;
+- the aircraft gears of prm/gears/, included in a vehicle: the same
+  against their data read here (spacings, pressure, load per axle).
 
     axle_presets.py LIFTOFF
 """
@@ -88,13 +90,13 @@ def equilibrium(work):
               f"the tyres' centre {centre:.9f}")
 
 
-def against_wheels(work, shape):
-    """The preset against its tyres typed as Wheels (all carry 20 kN)."""
-    groups = [(2, "dual", 80e3), (3, "gear", 40e3)]
-    gear = {"Dual spacing": DUAL}
-    placed = tyres(groups, [4.0])
+def against_wheels(work, shape, groups=((2, "dual", 80e3), (3, "gear", 40e3)),
+                   gear=None, spacing=(DUAL, AXLE), pressure=PRESSURE):
+    """The preset against its tyres typed as Wheels (all carry the same
+    load); `gear`: a file of prm/gears/ that gives the preset."""
+    placed = tyres(groups, [4.0], dual=spacing[0], axle=spacing[1])
     force = placed[0][2]
-    area = force / PRESSURE
+    area = force / pressure
     if shape == "disc":
         size = f"{math.sqrt(4 * area / math.pi):.17g}"
     else:
@@ -105,15 +107,17 @@ def against_wheels(work, shape):
     probes += [(path[0] - 0.65, path[1]), (path[0] - 4, path[1] + 0.5)]
     output = {"Probe points": "; ".join(f"{x:.6f}, {y:.6f}"
                                         for x, y in probes)}
-    preset = read_history(run_scene_or_fail(LIFTOFF, work, "preset_" + shape,
-                                            scene_text(BASE, {
-        "Loads": {"Vehicle 1": {"Axles": axles_text(groups),
-                                "Group spacings": 4,
-                                "Tyre pressure": PRESSURE,
-                                "Wheel shape": shape, **gear,
-                                "Path": f"{path[0]}; {path[1]}"}},
-        "Output": output})))
-    typed = read_history(run_scene_or_fail(LIFTOFF, work, "typed_" + shape,
+    vehicle = {"Axles": axles_text(groups), "Group spacings": 4,
+               "Tyre pressure": pressure}
+    if gear is not None:
+        vehicle = {"GEAR": gear}
+    text = scene_text(BASE, {"Loads": {"Vehicle 1": {
+        **vehicle, "Wheel shape": shape, "Path": f"{path[0]}; {path[1]}"}},
+        "Output": output}).replace("set GEAR =", "include")
+    name = shape + ("" if gear is None else "_" + os.path.basename(gear))
+    preset = read_history(run_scene_or_fail(LIFTOFF, work, "preset_" + name,
+                                            text))
+    typed = read_history(run_scene_or_fail(LIFTOFF, work, "typed_" + name,
                                            scene_text(BASE, {
         "Loads": {"Vehicle 1": {
             "Magnitude": force,
@@ -126,17 +130,37 @@ def against_wheels(work, shape):
     scale = max(abs(preset[c][-1]) for c in columns)
     error = max(abs(preset[c][-1] - typed[c][-1]) for c in columns) / scale
     check(len(columns) == len(probes) and error < 1e-10,
-          f"{shape}: w at {len(columns)} probes (tyre centres, between "
+          f"{name}: w at {len(columns)} probes (tyre centres, between "
           f"groups) against the tyres typed at the declared spacings, "
           f"contact area load / pressure: relative difference {error:.1e}")
     load = preset["resultant [N]"][-1]
     check(abs(load - force * len(placed)) < 1e-9 * load,
-          f"{shape}: bed resultant {load:.10g} N = {len(placed)} tyres x "
+          f"{name}: bed resultant {load:.10g} N = {len(placed)} tyres x "
           f"{force:g} N")
+
+
+def gears(work):
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                          "..", "prm", "gears")
+    for name in sorted(os.listdir(folder)):
+        data = {}
+        with open(os.path.join(folder, name)) as f:
+            for line in f:
+                if line.startswith("set "):
+                    key, value = line[4:].split("=", 1)
+                    data[key.strip()] = value.strip()
+        kind, tyres_, load = [v.strip() for v in data["Axles"].split(",")]
+        n = {"single": 1, "tandem": 2, "tridem": 3}[kind]
+        against_wheels(work, "disc", [(n, tyres_, float(load))],
+                       os.path.join(folder, name),
+                       (float(data["Dual spacing"]),
+                        float(data.get("Axle spacing", AXLE))),
+                       float(data["Tyre pressure"]))
 
 
 with tempfile.TemporaryDirectory() as work:
     equilibrium(work)
     against_wheels(work, "disc")
     against_wheels(work, "rectangle")
+    gears(work)
 finish()
