@@ -145,8 +145,8 @@ namespace liftoff
       {
         // The contact area load / pressure: a circle, as practice takes
         // it, or PCA's equivalent rectangle of 0.8712 l along the path by
-        // 0.6 l across (Huang, Pavement analysis and design, 2004, sec.
-        // 1.2.2), l from the area.
+        // 0.6 l across (Huang, Pavement analysis and design, 2004), l from
+        // the area.
         const double          area = tyre.force / tyre.pressure;
         std::array<double, 2> size;
         if (shape == PatchLoad::Shape::rectangle)
