@@ -163,7 +163,7 @@ namespace liftoff
                         + quantity("length"));
     prm.declare_entry("Group spacings",
                       "",
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(0.0), 0),
                       "The distances along the path from the middle of each "
                       "group of Axles to the middle of the next, one fewer "
                       "than the groups (empty for one group)."
