@@ -101,8 +101,8 @@ def scene_moduli(args):
     """The scene's E, k and plate radius."""
     return (scene_number(args.scene, "Units/Young's modulus", "0"),
             scene_number(args.scene, "Units/Subgrade modulus", "0"),
-            scene_number(args.scene, DEFLECTOMETER + "/Plate radius",
-                         "0.15"))
+            scene_number(args.scene, DEFLECTOMETER + "/Plate diameter",
+                         "0.3") / 2)
 
 
 def start(args, lte):

@@ -185,9 +185,9 @@ def instrument_marks(used, history, plate):
     for n in sections(used, "Deflectometer"):
         base = "Loads/Deflectometer %d/" % n
         x, y = numbers(used[base + "Position"])
-        radius = float(used[base + "Plate radius"])
+        diameter = float(used[base + "Plate diameter"])
         marks.append(("outline", patch_outline((x, y), "disc",
-                                               [2 * radius])))
+                                               [diameter])))
         offsets = numbers(used.get(base + "Sensor offsets", "")) or (
             SHRP_OFFSETS if si else [])
         ux, uy = numbers(used.get(base + "Sensor direction", "1, 0"))

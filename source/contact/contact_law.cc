@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/contact/contact_law.h>
@@ -84,6 +85,17 @@ namespace liftoff
         "(doc/model.md). The dissipated energy becomes a history column."
           + quantity("damping"));
       prm.declare_entry(
+        "Damping ratio",
+        "0",
+        Patterns::Double(0.0, 1e3),
+        "zeta, the dashpots as a share of their critical value (instead of "
+        "Damping or Units/Dashpot coefficient, which then stay 0): c = zeta "
+        "2 sqrt(Gamma), in SI C = zeta 2 sqrt(k rho H) per unit area. "
+        "Critical is the dashpot at which the plate (of the Plate's "
+        "thickness) moving as a rigid body on the springs, all in contact, "
+        "no longer oscillates (doc/model.md)."
+          + quantity("number"));
+      prm.declare_entry(
         "Shear modulus",
         "0",
         Patterns::Double(0.0, 1e12),
@@ -133,6 +145,7 @@ namespace liftoff
     contact_tolerance = prm.get_double("Contact tolerance");
     gap_expression    = prm.get("Initial gap");
     c                 = prm.get_double("Damping");
+    const double zeta = prm.get_double("Damping ratio");
     g_p               = prm.get_double("Shear modulus");
     prm.leave_subsection();
     // A broken expression is refused now, before any mesh is built.
@@ -141,6 +154,14 @@ namespace liftoff
     AssertThrow(model_type == Model::none || gamma > 0,
                 ExcMessage("Foundation/Stiffness (Gamma) must be > 0, or set "
                            "Foundation/Model = none."));
+    AssertThrow(zeta == 0 || c == 0,
+                ExcMessage("Foundation/Damping ratio = " + format_number(zeta)
+                           + " and Foundation/Damping (or Units/Dashpot "
+                             "coefficient) are both set: give the dashpots "
+                             "one way."));
+    // Critical: a rigid plate of unit mass per area on springs Gamma.
+    if (zeta > 0)
+      c = zeta * 2 * std::sqrt(gamma);
   }
 
 

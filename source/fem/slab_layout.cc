@@ -38,6 +38,23 @@ namespace liftoff
                       Patterns::Integer(1, 32),
                       "Slabs of equal width along y, with the longitudinal "
                       "joints y1, y2, ... between them (from the bottom).");
+    prm.declare_entry("Slab lengths",
+                      "",
+                      Patterns::Anything(),
+                      "The slabs' lengths along x from the left, instead of "
+                      "equal slabs (Slabs along x then 1 or their number): "
+                      "they must add up to the plate's length; the joints "
+                      "x1, x2, ... lie between them, each on a line of the "
+                      "coarse cells (e.g. 4.5, 5.5 with 0.5 m cells)."
+                        + quantity("length"));
+    prm.declare_entry("Slab widths",
+                      "",
+                      Patterns::Anything(),
+                      "The slabs' widths along y from the bottom (a shoulder "
+                      "and lanes: 1.2, 3.6, 3.6), as Slab lengths: they add "
+                      "up to the plate's width, the joints y1, y2, ... "
+                      "between them."
+                        + quantity("length"));
     prm.declare_entry("Tied joints",
                       "",
                       Patterns::List(Patterns::Anything()),
@@ -60,6 +77,7 @@ namespace liftoff
                   static_cast<unsigned int>(prm.get_integer("Slabs along y"))}};
     const std::vector<std::string> tied =
       Utilities::split_string_list(prm.get("Tied joints"));
+    read_given_sizes(prm);
     prm.leave_subsection();
 
     joint_list.clear();
@@ -73,7 +91,8 @@ namespace liftoff
       }
     slab_numbers.clear();
     joint_tag_ids.clear();
-    if (slab_grid[0] * slab_grid[1] > 1)
+    if (slab_grid[0] * slab_grid[1] > 1 || !given_sizes[0].empty()
+        || !given_sizes[1].empty())
       {
         AssertThrow(geometry.shape() == PlateShape::rectangle,
                     ExcMessage("Slabs/Slabs along x and y: slabs are made on "
@@ -100,6 +119,86 @@ namespace liftoff
                                + " is no joint of the modelled plate."));
         joint->tied = true;
       }
+  }
+
+
+  void
+  SlabLayout::read_given_sizes(ParameterHandler &prm)
+  {
+    const char *entries[2] = {"Slab lengths", "Slab widths"};
+    const char *axes[2]    = {"x", "y"};
+    for (unsigned int axis = 0; axis < 2; ++axis)
+      {
+        const std::string text = prm.get(entries[axis]);
+        const std::string name =
+          std::string("Slabs/") + entries[axis] + " = <" + text + ">";
+        given_texts[axis] = name;
+        given_sizes[axis].clear();
+        if (text.find_first_not_of(" \t") == std::string::npos)
+          continue;
+        const std::string message =
+          name + " must be sizes > 0 separated by ','.";
+        try
+          {
+            given_sizes[axis] = Utilities::string_to_double(
+              Utilities::split_string_list(text, ','));
+          }
+        catch (...)
+          {
+            AssertThrow(false, ExcMessage(message));
+          }
+        for (const double size : given_sizes[axis])
+          AssertThrow(std::isfinite(size) && size > 0, ExcMessage(message));
+        const unsigned int n = given_sizes[axis].size();
+        AssertThrow(slab_grid[axis] == 1 || slab_grid[axis] == n,
+                    ExcMessage(name + " gives " + std::to_string(n)
+                               + " slabs, Slabs/Slabs along " + axes[axis]
+                               + " = " + std::to_string(slab_grid[axis])
+                               + ": leave that at 1 or make it the same."));
+        AssertThrow(n <= 32,
+                    ExcMessage(name + ": at most 32 slabs along " + axes[axis]
+                               + "."));
+        slab_grid[axis] = n;
+      }
+  }
+
+
+  void
+  SlabLayout::place_edges(const unsigned int axis,
+                          const double       low,
+                          const double       high,
+                          const bool         mirrored)
+  {
+    const unsigned int   n     = slab_grid[axis];
+    std::vector<double> &slabs = edges[axis];
+    slabs.assign(1, low);
+    const std::vector<double> &given = given_sizes[axis];
+    if (given.empty())
+      {
+        const double size = (high - low) / n;
+        for (unsigned int j = 1; j < n; ++j)
+          slabs.push_back(low + j * size);
+        slabs.push_back(high);
+        return;
+      }
+    double sum = 0;
+    for (const double size : given)
+      slabs.push_back(low + (sum += size));
+    const double tolerance = 1e-10 * (high - low);
+    AssertThrow(std::abs(sum - (high - low)) <= tolerance,
+                ExcMessage(given_texts[axis] + " add up to "
+                           + format_number(sum) + ", but the plate's "
+                           + (axis == 0 ? "length" : "width") + " is "
+                           + format_number(high - low)
+                           + " (lengths in units of L in the dimensionless "
+                             "scene): the slabs must cover the plate."));
+    slabs.back() = high;
+    for (unsigned int j = 0; mirrored && j <= n; ++j)
+      AssertThrow(std::abs(slabs[j] + slabs[n - j]) <= tolerance,
+                  ExcMessage(given_texts[axis]
+                             + " are not mirrored about the symmetry plane "
+                               "of Discretization/Symmetry: model the full "
+                               "plate or mirror the slabs."));
   }
 
 
@@ -166,23 +265,25 @@ namespace liftoff
     const char *axis_names[2] = {"x", "y"};
     for (unsigned int axis = 0; axis < 2; ++axis)
       {
-        origin[axis]      = low[axis];
-        slab_size[axis]   = (high[axis] - low[axis]) / slab_grid[axis];
+        const bool mirrored = geometry.symmetry_axes().size() > axis;
+        place_edges(axis, low[axis], high[axis], mirrored);
         const double cell = (modelled_high[axis] - modelled_low[axis])
                             / geometry.coarse_cells_along(axis);
         for (unsigned int j = 1; j < slab_grid[axis]; ++j)
           {
-            const double      position = low[axis] + j * slab_size[axis];
+            const double      position = edges[axis][j];
             const std::string name     = axis_names[axis] + std::to_string(j);
             const std::string what =
-              "Slabs/Slabs along " + std::string(axis_names[axis]) + " = "
-              + std::to_string(slab_grid[axis]) + " puts the joint " + name
-              + " at " + axis_names[axis] + " = " + format_number(position);
+              (given_sizes[axis].empty()
+                 ? "Slabs/Slabs along " + std::string(axis_names[axis]) + " = "
+                     + std::to_string(slab_grid[axis])
+                 : given_texts[axis])
+              + " puts the joint " + name + " at " + axis_names[axis] + " = "
+              + format_number(position);
             const double tolerance = 1e-10 * (high[axis] - low[axis]);
             const types::boundary_id id =
               first_joint_id + 2 * joint_list.size();
-            const bool on_plane = std::abs(position) <= tolerance
-                                  && geometry.symmetry_axes().size() > axis;
+            const bool on_plane = std::abs(position) <= tolerance && mirrored;
             if (position < modelled_low[axis] - tolerance
                 || (position < modelled_low[axis] + tolerance && !on_plane))
               continue;
@@ -192,8 +293,10 @@ namespace liftoff
                                    + ", inside a coarse cell: make "
                                      "Discretization/Cells along "
                                    + axis_names[axis]
-                                   + " a multiple of the slabs on the "
-                                     "meshed part."));
+                                   + " such that every joint lies on a line "
+                                     "between cells (for equal slabs a "
+                                     "multiple of the slabs on the meshed "
+                                     "part)."));
             joint_list.push_back({name,
                                   axis,
                                   position,
@@ -270,11 +373,14 @@ namespace liftoff
         const auto slab = slab_numbers.find(mesh->material_id_at(p));
         return slab != slab_numbers.end() ? slab->second : 0;
       }
-    std::array<unsigned int, 2> index;
-    for (unsigned int axis = 0; axis < 2; ++axis)
-      index[axis] = std::min<unsigned int>(
-        slab_grid[axis] - 1,
-        std::max(0.0, std::floor((p[axis] - origin[axis]) / slab_size[axis])));
+    // The slab whose lower end is the last one at or below p (the first
+    // or last slab beyond the plate's ends).
+    std::array<unsigned int, 2> index = {{0, 0}};
+    for (unsigned int axis = 0; axis < 2 && !edges[axis].empty(); ++axis)
+      index[axis] = std::upper_bound(edges[axis].begin() + 1,
+                                     edges[axis].end() - 1,
+                                     p[axis])
+                    - (edges[axis].begin() + 1);
     return index[0] + slab_grid[0] * index[1];
   }
 

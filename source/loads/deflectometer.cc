@@ -41,11 +41,19 @@ namespace liftoff
                       "The pulse's peak force on the loading plate, in units "
                       "of F0; 0 switches the test off."
                         + quantity("force"));
-    prm.declare_entry("Plate radius",
-                      "0.15",
+    prm.declare_entry("Plate diameter",
+                      "0.3",
                       Patterns::Double(),
-                      "Radius of the loading plate, > 0 (0.15 m: the usual "
-                      "300 mm plate)."
+                      "Diameter of the loading plate, > 0 (0.3 m: the usual "
+                      "300 mm plate). Every size in liftoff is a width or a "
+                      "diameter (a disc's Size, a Wheel size)."
+                        + quantity("length"));
+    prm.declare_entry("Plate radius",
+                      "",
+                      Patterns::Anything(),
+                      "Not read: sizes are diameters, so a scene that sets "
+                      "this is refused; give Plate diameter, twice the "
+                      "radius."
                         + quantity("length"));
     prm.declare_entry("Position",
                       "0, 0",
@@ -89,11 +97,19 @@ namespace liftoff
     test.name       = "Loads/" + section;
     const auto in   = [&](const std::string &e) { return test.name + "/" + e; };
     test.peak_force = prm.get_double("Peak force");
-    test.radius     = prm.get_double("Plate radius");
-    AssertThrow(test.radius > 0 && std::isfinite(test.radius),
-                ExcMessage(in("Plate radius") + " = "
-                           + format_number(test.radius)
+    AssertThrow(prm.get("Plate radius").find_first_not_of(" \t")
+                  == std::string::npos,
+                ExcMessage(in("Plate radius")
+                           + " is set, but every size in liftoff is a width "
+                             "or a diameter (a disc's Size, a Wheel size): "
+                             "give Plate diameter, twice the radius, "
+                             "instead."));
+    const double diameter = prm.get_double("Plate diameter");
+    AssertThrow(diameter > 0 && std::isfinite(diameter),
+                ExcMessage(in("Plate diameter") + " = "
+                           + format_number(diameter)
                            + " must be a finite number > 0."));
+    test.radius   = diameter / 2;
     test.duration = prm.get_double("Duration");
     AssertThrow(test.duration > 0 && std::isfinite(test.duration),
                 ExcMessage(in("Duration") + " = " + format_number(test.duration)

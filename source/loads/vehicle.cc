@@ -1,6 +1,7 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
+#include <liftoff/loads/axle_groups.h>
 #include <liftoff/loads/patch_load.h>
 #include <liftoff/loads/point_load.h>
 #include <liftoff/loads/vehicle.h>
@@ -46,8 +47,14 @@ namespace liftoff
         prm.declare_entry("Wheel size",
                           "0.1, 0.1",
                           PatchLoad::size_pattern(),
-                          "As Size of a Patch load, for patch wheels."
+                          "As Size of a Patch load, for patch wheels of "
+                          "Wheels: 'a, b', the widths along x and y of a "
+                          "rectangle, or 'd', a disc's diameter (every size "
+                          "in liftoff is a width or a diameter). With Axles "
+                          "each tyre's size follows from its load and Tyre "
+                          "pressure."
                             + quantity("length"));
+        AxleGroups::declare_parameters(prm);
       });
   }
 
@@ -62,45 +69,96 @@ namespace liftoff
     const std::string wheels_text = prm.get("Wheels");
     const auto        shape =
       wheel_shapes.parse(prm.get("Wheel shape"), name + "/Wheel shape");
+    const std::vector<AxleGroups::Tyre> tyres = AxleGroups::read(prm, name);
+    // Axles size each tyre by its load and pressure.
     const std::array<double, 2> size =
-      (shape ? PatchLoad::parse_size(prm.get("Wheel size"),
-                                     *shape,
-                                     name + "/Wheel size")
-             : std::array<double, 2>{{0, 0}});
+      (shape && tyres.empty() ? PatchLoad::parse_size(prm.get("Wheel size"),
+                                                      *shape,
+                                                      name + "/Wheel size")
+                              : std::array<double, 2>{{0, 0}});
     AssertThrow(path != nullptr, ExcMessage(name + "/Path must not be empty."));
     const std::vector<std::array<double, 3>> wheels =
       parse_wheels(wheels_text, name + "/Wheels");
+    AssertThrow(tyres.empty() || magnitude == 0.0,
+                ExcMessage(name + "/Magnitude = " + prm.get("Magnitude")
+                           + " and " + name
+                           + "/Axles: give the vehicle's load either as "
+                             "Magnitude shared by Wheels or per axle in "
+                             "Axles (Magnitude 0), not both."));
     std::vector<std::unique_ptr<Load>> loads;
-    if (magnitude == 0.0)
+    if (magnitude == 0.0 && tyres.empty())
       return loads;
 
+    const std::vector<Contact> contacts =
+      tyres.empty() ? shared_contacts(wheels, magnitude, shape, size)
+                    : tyre_contacts(tyres, shape);
+    for (unsigned int k = 0; k < contacts.size(); ++k)
+      {
+        const std::string wheel = name + ", wheel " + std::to_string(k + 1);
+        LoadHistory       own_history(history.expression(), wheel);
+        if (!shape)
+          loads.push_back(std::make_unique<PointLoad>(wheel,
+                                                      contacts[k].force,
+                                                      std::move(own_history),
+                                                      path,
+                                                      Point<2>(),
+                                                      contacts[k].offset));
+        else
+          loads.push_back(std::make_unique<PatchLoad>(wheel,
+                                                      contacts[k].pressure,
+                                                      std::move(own_history),
+                                                      path,
+                                                      *shape,
+                                                      contacts[k].size,
+                                                      contacts[k].offset));
+      }
+    return loads;
+  }
+
+
+  std::vector<Vehicle::Contact>
+  Vehicle::shared_contacts(const std::vector<std::array<double, 3>> &wheels,
+                           const double                              magnitude,
+                           const std::optional<PatchLoad::Shape>    &shape,
+                           const std::array<double, 2>              &size)
+  {
     // A wheel's force spread over its area is a pressure.
     const double area =
       (shape == PatchLoad::Shape::disc ? M_PI / 4 * size[0] * size[0]
                                        : size[0] * size[1]);
-    for (unsigned int k = 0; k < wheels.size(); ++k)
+    std::vector<Contact> contacts;
+    for (const auto &wheel : wheels)
+      contacts.push_back({Tensor<1, 2>({wheel[0], wheel[1]}),
+                          magnitude * wheel[2],
+                          magnitude * wheel[2] / area,
+                          size});
+    return contacts;
+  }
+
+
+  std::vector<Vehicle::Contact>
+  Vehicle::tyre_contacts(const std::vector<AxleGroups::Tyre>   &tyres,
+                         const std::optional<PatchLoad::Shape> &shape)
+  {
+    std::vector<Contact> contacts;
+    for (const AxleGroups::Tyre &tyre : tyres)
       {
-        const std::string  wheel = name + ", wheel " + std::to_string(k + 1);
-        const Tensor<1, 2> offset({wheels[k][0], wheels[k][1]});
-        LoadHistory        own_history(history.expression(), wheel);
-        if (!shape)
-          loads.push_back(std::make_unique<PointLoad>(wheel,
-                                                      magnitude * wheels[k][2],
-                                                      std::move(own_history),
-                                                      path,
-                                                      Point<2>(),
-                                                      offset));
+        // The contact area load / pressure: a circle, as practice takes
+        // it, or PCA's equivalent rectangle of 0.8712 l along the path by
+        // 0.6 l across (Huang, Pavement analysis and design, 2004), l from
+        // the area.
+        const double          area = tyre.force / tyre.pressure;
+        std::array<double, 2> size;
+        if (shape == PatchLoad::Shape::rectangle)
+          {
+            const double l = std::sqrt(area / (0.8712 * 0.6));
+            size           = {{0.8712 * l, 0.6 * l}};
+          }
         else
-          loads.push_back(
-            std::make_unique<PatchLoad>(wheel,
-                                        magnitude * wheels[k][2] / area,
-                                        std::move(own_history),
-                                        path,
-                                        *shape,
-                                        size,
-                                        offset));
+          size.fill(std::sqrt(4 * area / M_PI));
+        contacts.push_back({tyre.offset, tyre.force, tyre.pressure, size});
       }
-    return loads;
+    return contacts;
   }
 
 

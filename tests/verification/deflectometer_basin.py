@@ -83,7 +83,7 @@ end
 subsection Loads
   subsection Deflectometer 1
     set Peak force = {P}
-    set Plate radius = {A}
+    set Plate diameter = {2 * A}
   end
 end
 subsection Output

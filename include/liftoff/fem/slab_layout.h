@@ -49,7 +49,8 @@ namespace liftoff
 
   /**
    * The plate as slabs: the rectangle as a grid of `Slabs along x` by
-   * `Slabs along y` of equal size, with a joint between neighbours; or a
+   * `Slabs along y` of equal size, or of the lengths and widths given
+   * (`Slab lengths`, `Slab widths`), with a joint between neighbours; or a
    * mesh file's physical surfaces (slab numbers in the order of theirs),
    * cut along its curves of the condition `joint`, each a straight line
    * along x or y given on both slabs with the nodes of both at the same
@@ -146,10 +147,28 @@ namespace liftoff
     std::shared_ptr<const MeshFile>            mesh;
     std::map<types::material_id, unsigned int> slab_numbers;
     std::set<types::boundary_id>               joint_tag_ids;
-    /// The lowest corner and the size of a slab of the full plate.
-    std::array<double, 2> origin    = {{0, 0}};
-    std::array<double, 2> slab_size = {{1, 1}};
-    std::vector<Joint>    joint_list;
+    /// Slab lengths along x and widths along y as the scene gives them
+    /// (empty: equal slabs), and the entries' text for messages.
+    std::array<std::vector<double>, 2> given_sizes;
+    std::array<std::string, 2>         given_texts;
+    /// The ends of the slabs of the full plate along x and y: slab j from
+    /// edges[axis][j] to edges[axis][j + 1].
+    std::array<std::vector<double>, 2> edges;
+    std::vector<Joint>                 joint_list;
+
+    /// Slab lengths and widths of the current subsection (Slabs), which
+    /// set the slabs along x and y; refused naming the entry.
+    void
+    read_given_sizes(ParameterHandler &prm);
+    /// edges[axis] on the plate from `low` to `high`: equal slabs, or the
+    /// given sizes, refused naming the entry unless they add up to the
+    /// plate's size and, on a symmetry plane normal to `axis`
+    /// (`mirrored`), are mirrored.
+    void
+    place_edges(const unsigned int axis,
+                const double       low,
+                const double       high,
+                const bool         mirrored);
 
     /// The joints inside the modelled part, each on a line of the coarse
     /// cells.
