@@ -16,6 +16,10 @@ computes:
   stress of each face is 6 M / H_s^2 of the loaded slab, with M the
   history's largest M_1 (or -M_2) of the same step at the same point, and
   the summary names that slab;
+- a static slab on a bilateral bed curled by a nonlinear temperature
+  profile: the probes sigma_1_top and sigma_1_bottom against 6 M / H^2 of
+  the probed principal moments plus each face's self-equilibrating stress
+  -E alpha T_se / (1 - nu), T_se from the profile here;
 - a dynamic run stopped at a checkpoint and resumed gives the summary's
   stress entries and history columns of the run without a stop, to the
   bit; two ranks give the same points, slabs and times, and the values
@@ -179,6 +183,57 @@ def two_slabs(work):
                   f"{got[0]:.6g} MPa, slab {got[3]}")
 
 
+def self_equilibrating(profile):
+    """T_se at the top face (s = 0) and the bed-side face (s = 1) of a
+    temperature PROFILE per unit magnitude at equally spaced depths, linear
+    in between: T_se = T - mean + dT_eq (s - 1/2), dT_eq = -12 int T (s -
+    1/2) ds (doc/model.md, "Nonlinear profiles"; Simpson's rule is exact on
+    each piece, a quadratic)."""
+    t = np.asarray(profile, dtype=float)
+    s = np.linspace(0, 1, len(t))
+    mid_s, mid_t = (s[1:] + s[:-1]) / 2, (t[1:] + t[:-1]) / 2
+    h = np.diff(s)
+    mean = np.sum(h * (t[:-1] + 4 * mid_t + t[1:]) / 6)
+    moment = np.sum(h * (t[:-1] * (s[:-1] - 0.5) + 4 * mid_t * (mid_s - 0.5)
+                         + t[1:] * (s[1:] - 0.5)) / 6)
+    linear = -12 * moment
+    return (t[0] - mean + linear * (0 - 0.5), t[-1] - mean + linear * (1 - 0.5))
+
+
+def curled_slab(work):
+    """A static slab on a bilateral bed under a nonlinear temperature
+    profile: each face's largest principal stress at a point is 6 M / H^2
+    of its principal moment plus that face's self-equilibrating stress
+    -E alpha T_se / (1 - nu), computed here from the profile."""
+    dt, alpha, profile, point = 15.0, 1e-5, (1, 0.2, 0.1, 0), "0.7; 0.45"
+    names = ("M_1", "M_2", "sigma_1_top", "sigma_1_bottom", "sigma_max")
+    scene = scene_text(SI, {
+        "Units": {"Subgrade modulus": 80e6},
+        "Analysis": {"Type": "static"},
+        "Foundation": {"Model": "bilateral"},
+        "Discretization": {"Cells along x": 8, "Cells along y": 8},
+        "Loads": {"Temperature load 1": {
+            "Magnitude": dt, "Expansion coefficient": alpha,
+            "Profile": ", ".join(map(str, profile))}},
+        "Output": {"Probe quantities": ", ".join(f"{n}({point})"
+                                                 for n in names)}})
+    row = {k.split("(")[0]: v[-1]
+           for k, v in read_history(run_scene_or_fail(
+               LIFTOFF, work, "curled", scene)).items()}
+    top_se, bottom_se = self_equilibrating(profile)
+    top = -6 * row["M_2"] / H ** 2 - E * alpha * dt * top_se / (1 - NU)
+    bottom = 6 * row["M_1"] / H ** 2 - E * alpha * dt * bottom_se / (1 - NU)
+    error = max(abs(row["sigma_1_top"] / top - 1),
+                abs(row["sigma_1_bottom"] / bottom - 1))
+    check(error < 1e-9 and row["sigma_max"] == max(row["sigma_1_top"],
+                                                   row["sigma_1_bottom"]),
+          f"curled by a profile {profile}: sigma_1_top "
+          f"{row['sigma_1_top']:.6g} Pa, sigma_1_bottom "
+          f"{row['sigma_1_bottom']:.6g} Pa = 6 M / H^2 + the face's "
+          f"-E alpha T_se / (1 - nu) (T_se {top_se:.4f}, {bottom_se:.4f}) "
+          f"within {error:.1e}; sigma_max the larger")
+
+
 def resumed_and_two_ranks(work):
     """A dynamic scene stopped after step 6 and resumed, and the same on
     two ranks, against the run without a stop."""
@@ -239,5 +294,6 @@ def resumed_and_two_ranks(work):
 with tempfile.TemporaryDirectory() as work:
     supported_slab(work)
     two_slabs(work)
+    curled_slab(work)
     resumed_and_two_ranks(work)
 finish()
