@@ -9,6 +9,8 @@
 #include <liftoff/output/time_history.h>
 #include <liftoff/time/plate_state.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -18,13 +20,26 @@ namespace liftoff
   {
     const std::array<const char *, 2> face_names = {{"top", "bottom"}};
 
-    /// A number with 3 significant digits, for the summary's line.
+    /// A number with 3 significant digits and no exponent between 1e-3
+    /// and 1e6, for the summary's line: 1.19, 1509, 0.004.
     std::string
     short_number(const double x)
     {
       std::ostringstream text;
-      text << std::setprecision(3) << x;
-      return text.str();
+      const double       size = std::abs(x);
+      if (size < 1e-3 || size >= 1e6)
+        {
+          text << std::setprecision(3) << x;
+          return text.str();
+        }
+      const int decimals = std::max(0, 2 - int(std::floor(std::log10(size))));
+      text << std::fixed << std::setprecision(decimals) << x;
+      std::string digits = text.str();
+      if (decimals > 0)
+        digits.erase(digits.find_last_not_of('0') + 1);
+      if (digits.back() == '.')
+        digits.pop_back();
+      return digits;
     }
   } // namespace
 
