@@ -26,30 +26,30 @@ namespace liftoff
     {
       const char *name;
       double      sign;
-      double ResultantSweep::Values::*value;
-      PhysicalUnits::Quantity         quantity;
+      double (*value)(const ResultantSweep::Values &);
+      PhysicalUnits::Quantity quantity;
     };
 
-    const std::array<Kind, 5> kinds = {{{"w_max",
-                                         1,
-                                         &ResultantSweep::Values::w,
-                                         PhysicalUnits::Quantity::deflection},
-                                        {"w_min",
-                                         -1,
-                                         &ResultantSweep::Values::w,
-                                         PhysicalUnits::Quantity::deflection},
-                                        {"foundation_pressure_max",
-                                         1,
-                                         &ResultantSweep::Values::pressure,
-                                         PhysicalUnits::Quantity::pressure},
-                                        {"M_1_max",
-                                         1,
-                                         &ResultantSweep::Values::m_1,
-                                         PhysicalUnits::Quantity::moment},
-                                        {"M_2_min",
-                                         -1,
-                                         &ResultantSweep::Values::m_2,
-                                         PhysicalUnits::Quantity::moment}}};
+    using Values   = ResultantSweep::Values;
+    using Quantity = PhysicalUnits::Quantity;
+
+    const std::array<Kind, 7> kinds = {
+      {{"w_max", 1, [](const Values &v) { return v.w; }, Quantity::deflection},
+       {"w_min", -1, [](const Values &v) { return v.w; }, Quantity::deflection},
+       {"foundation_pressure_max",
+        1,
+        [](const Values &v) { return v.pressure; },
+        Quantity::pressure},
+       {"M_1_max", 1, [](const Values &v) { return v.m_1; }, Quantity::moment},
+       {"M_2_min", -1, [](const Values &v) { return v.m_2; }, Quantity::moment},
+       {"sigma_1_top_max",
+        1,
+        [](const Values &v) { return v.faces.top; },
+        Quantity::pressure},
+       {"sigma_1_bottom_max",
+        1,
+        [](const Values &v) { return v.faces.bottom; },
+        Quantity::pressure}}};
   } // namespace
 
 
@@ -61,8 +61,10 @@ namespace liftoff
       "false",
       Patterns::Bool(),
       "Keep, at every output point of the field files, the largest and "
-      "smallest w, the largest bed pressure, the largest M_1 and the "
-      "smallest M_2 over all steps with the time of each, and write them "
+      "smallest w, the largest bed pressure, the largest M_1, the "
+      "smallest M_2 and the largest principal stress at the top face "
+      "(sigma_1_top_max) and at the bed-side face (sigma_1_bottom_max) "
+      "over all steps with the time of each, and write them "
       "to envelope.pvtu at the end (and at each checkpoint) and their "
       "extremes over the plate to the summary (costs a pass over the "
       "output points per step). Not with adaptive refinement.");
@@ -133,7 +135,7 @@ namespace liftoff
         const auto   value = kinds[e].value;
         for (unsigned int i = 0; i < values.size(); ++i)
           {
-            const double v = sign * values[i].*value;
+            const double v = sign * value(values[i]);
             if (first || v > envelope.extreme[i])
               {
                 envelope.extreme[i] = v;
@@ -270,7 +272,6 @@ namespace liftoff
     const std::vector<LocatedMaximum> all = extremes();
     for (unsigned int e = 0; e < kinds.size(); ++e)
       {
-        using Quantity           = PhysicalUnits::Quantity;
         const std::string name   = kinds[e].name;
         const double      length = units.scale(Quantity::length);
         section.emplace_back(name + units.unit(kinds[e].quantity),

@@ -397,15 +397,30 @@ namespace liftoff
       "largest tension on either face sigma_max (F0/L^2). A positive moment "
       "puts the bed-side face in tension (doc/model.md, \"Moments, shear "
       "forces and stresses\"). false leaves them out of the field files.");
+    prm.declare_entry(
+      "Face stress fields",
+      "false",
+      Patterns::Bool(),
+      "With `Moment fields`, also write the largest principal stress at "
+      "each face: sigma_1_top at the face away from the bed (top-down "
+      "cracking) and sigma_1_bottom at the bed-side face (bottom-up), "
+      "positive in tension (F0/L^2; Pa in an SI scene), each slab's with "
+      "its own thickness and a temperature profile's stress of that face "
+      "(doc/model.md, \"Stresses as design quantities\").");
   }
 
 
   void
   FieldOutput::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
-    plate              = scene.plate;
-    dowels             = &scene.dowels;
-    writes_moments     = prm.get_bool("Moment fields");
+    plate          = scene.plate;
+    dowels         = &scene.dowels;
+    writes_moments = prm.get_bool("Moment fields");
+    writes_faces   = prm.get_bool("Face stress fields");
+    AssertThrow(writes_moments || !writes_faces,
+                ExcMessage("Output/Face stress fields = true adds to the "
+                           "moment fields: it needs Output/Moment fields = "
+                           "true."));
     interval           = prm.get_integer("VTU interval");
     higher_order_cells = prm.get("Field cells") == "higher order";
     subdivisions       = prm.get_integer("Subdivisions");
@@ -490,7 +505,8 @@ namespace liftoff
                                       disc.mapping(),
                                       disc.element().shear_integration(),
                                       solution,
-                                      free_bending);
+                                      free_bending,
+                                      writes_faces);
     if (writes_moments)
       plane.add_data_vector(solution, resultants);
     const Vector<float> contact =

@@ -9,6 +9,7 @@
 #include <liftoff/output/progress_line.h>
 #include <liftoff/output/scene_view.h>
 #include <liftoff/output/small_deflection_check.h>
+#include <liftoff/output/stress_extremes.h>
 
 #include <functional>
 #include <iostream>
@@ -42,6 +43,7 @@ namespace liftoff
         kind<JointProfiles>(),
         kind<FieldOutput>(),
         kind<Envelopes>(),
+        kind<StressExtremes>(),
         kind<DeflectometerSensors>(),
         kind<DowelForces>(),
         kind<JointProbes>(),

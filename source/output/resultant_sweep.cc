@@ -26,6 +26,26 @@ namespace liftoff
           return false;
       return true;
     }
+
+
+    /// The cell's entries of `solution` into `dof_values`, through
+    /// `indices` directly when the vector is whole and in order.
+    void
+    read_dof_values(const DoFHandler<2>::active_cell_iterator &cell,
+                    const LA::MPI::Vector                     &solution,
+                    const bool                                 in_order,
+                    std::vector<types::global_dof_index>      &indices,
+                    Vector<double>                            &dof_values)
+    {
+      if (!in_order)
+        {
+          cell->get_dof_values(solution, dof_values);
+          return;
+        }
+      cell->get_dof_indices(indices);
+      for (unsigned int i = 0; i < indices.size(); ++i)
+        dof_values[i] = solution.begin()[indices[i]];
+    }
   } // namespace
 
 
@@ -91,6 +111,8 @@ namespace liftoff
     const bool                    in_order = is_whole_vector_in_order(solution);
     const ArrayView<const double> dofs(dof_values.begin(), dof_values.size());
     StressResultants::PrincipalValues principal;
+    // A plate of one slab keeps a mesh file's material ids.
+    const bool is_jointed = disc.geometry().slabs().is_jointed();
     point_list.clear();
     value_list.clear();
     point_list.reserve(n * disc.triangulation.n_active_cells());
@@ -100,14 +122,7 @@ namespace liftoff
     // the mesh was reached (refined in the run or loaded at a resume).
     for (const auto &cell : disc.locally_owned_cells())
       {
-        if (in_order)
-          {
-            cell->get_dof_indices(indices);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              dof_values[i] = solution.begin()[indices[i]];
-          }
-        else
-          cell->get_dof_values(solution, dof_values);
+        read_dof_values(cell, solution, in_order, indices, dof_values);
         fields.reinit(cell, dofs);
         resultants.principal(cell, fields, dofs, principal);
         const std::vector<double>   &w = fields.w;
@@ -121,6 +136,8 @@ namespace liftoff
             v.m_1      = principal.m_1[k];
             v.m_2      = principal.m_2[k];
             v.shear    = std::hypot(principal.q[k][0], principal.q[k][1]);
+            v.faces    = principal.faces[k];
+            v.slab     = is_jointed ? cell->material_id() : 0;
             point_list.push_back(x[k]);
             value_list.push_back(v);
           }

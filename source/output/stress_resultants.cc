@@ -26,7 +26,12 @@ namespace liftoff
                                             "sigma_xx",
                                             "sigma_yy",
                                             "sigma_xy",
-                                            "sigma_max"};
+                                            "sigma_max",
+                                            "sigma_1_top",
+                                            "sigma_1_bottom"};
+    // The last two, the faces' own, are in the field files on request only
+    // (Output/Face stress fields).
+    constexpr unsigned int n_fields_by_default = 12;
 
     // The moments measured from the free curvature kappa_T: M_xx, M_yy and
     // the principal moments gain D (1 + nu) kappa_T; a nonlinear profile's
@@ -53,6 +58,54 @@ namespace liftoff
     }
 
 
+    /// 6 / Delta_s^2: the face stress 6 M / H_s^2 of a moment M of the
+    /// slab's section, in units of F0 / L^2.
+    double
+    stress_per_moment(const SectionCoefficients &section)
+    {
+      return 6.0 / (section.thickness_ratio * section.thickness_ratio);
+    }
+
+
+    /// The largest principal stress at the top face (z = -H/2) and at the
+    /// bed-side face (z = +H/2) from the principal moments M_1 >= M_2
+    /// (measured from the free curvature): -6 M_2 / H^2 and 6 M_1 / H^2,
+    /// plus a nonlinear profile's self-equilibrating stress of each face
+    /// (`thermal`, in the slab's section; none: nullptr).
+    FaceStresses
+    face_stresses(const double       m_1,
+                  const double       m_2,
+                  const double       to_stress,
+                  const FreeBending *thermal)
+    {
+      FaceStresses s{-to_stress * m_2, to_stress * m_1};
+      // Added only with a temperature: + 0 would turn a -0 into 0.
+      if (thermal != nullptr)
+        {
+          s.top += thermal->top_stress;
+          s.bottom += thermal->bottom_stress;
+        }
+      return s;
+    }
+
+
+    /// out[11..13]: sigma_max, sigma_1_top, sigma_1_bottom from M_1 and
+    /// M_2 (out[5], out[6]).
+    void
+    set_face_stresses(const double       to_stress,
+                      const FreeBending *thermal,
+                      Vector<double>    &out)
+    {
+      const FaceStresses s = face_stresses(out[5], out[6], to_stress, thermal);
+      out[11]              = std::max(s.bottom, s.top);
+      if (out.size() > n_fields_by_default)
+        {
+          out[12] = s.top;
+          out[13] = s.bottom;
+        }
+    }
+
+
     void
     add_free_bending(const FreeBending &thermal,
                      const double       nu,
@@ -64,8 +117,7 @@ namespace liftoff
         out[k] += m;
       out[8] += to_stress * m + thermal.bottom_stress;
       out[9] += to_stress * m + thermal.bottom_stress;
-      out[11] = std::max(to_stress * out[5] + thermal.bottom_stress,
-                         -to_stress * out[6] + thermal.top_stress);
+      set_face_stresses(to_stress, &thermal, out);
     }
 
 
@@ -96,7 +148,8 @@ namespace liftoff
     "M = int sigma z dz with z along w (into the bed): a positive moment "
     "puts the bed-side face (z = +H/2) in tension; sigma_xx, sigma_yy and "
     "sigma_xy are the stresses at that face, the other face has their "
-    "negatives";
+    "negatives; sigma_1_top and sigma_1_bottom are the largest principal "
+    "stresses at the face away from the bed and at the bed-side face";
 
 
   StressResultants::StressResultants(
@@ -104,12 +157,14 @@ namespace liftoff
     const Mapping<2>                      &mapping,
     const TransverseShearStrain::Treatment treatment,
     const LA::MPI::Vector                 &solution,
-    const FreeBendingField                &free_bending)
+    const FreeBendingField                &free_bending,
+    const bool                             face_fields)
       : plate(plate)
       , mapping(mapping)
       , treatment(treatment)
       , solution(solution)
       , free_bending(free_bending)
+      , face_fields(face_fields)
   {}
 
 
@@ -129,7 +184,9 @@ namespace liftoff
       {"sigma_xx", Quantity::pressure},
       {"sigma_yy", Quantity::pressure},
       {"sigma_xy", Quantity::pressure},
-      {"sigma_max", Quantity::pressure}};
+      {"sigma_max", Quantity::pressure},
+      {"sigma_1_top", Quantity::pressure},
+      {"sigma_1_bottom", Quantity::pressure}};
     return table;
   }
 
@@ -144,7 +201,8 @@ namespace liftoff
   std::vector<std::string>
   StressResultants::get_names() const
   {
-    return names;
+    return {names.begin(),
+            names.begin() + (face_fields ? names.size() : n_fields_by_default)};
   }
 
 
@@ -233,12 +291,10 @@ namespace liftoff
         for (unsigned int d = 0; d < 2; ++d)
           gamma[q][d] =
             gradient[q][PlateFields::w][d] - value[q][PlateFields::rotation(d)];
-    const double              nu      = plate.poisson_ratio;
-    const SectionCoefficients section = plate.section(cell->material_id());
-    // 6 / Delta_s^2: the face stress 6 M / H_s^2 in units of F0 / L^2.
-    const double to_stress =
-      6.0 / (section.thickness_ratio * section.thickness_ratio);
-    const double shear = section.shear;
+    const double              nu        = plate.poisson_ratio;
+    const SectionCoefficients section   = plate.section(cell->material_id());
+    const double              to_stress = stress_per_moment(section);
+    const double              shear     = section.shear;
     // D_s / D; the minus sign: z along w.
     const double bending = -section.bending;
     for (unsigned int q = 0; q < unit_points.size(); ++q)
@@ -259,12 +315,13 @@ namespace liftoff
         out[8]  = to_stress * m.xx;
         out[9]  = to_stress * m.yy;
         out[10] = to_stress * m.xy;
-        out[11] = to_stress * std::max(m.first, -m.second);
         if (free_bending)
           add_free_bending(in_section(free_bending(points[q]), section),
                            nu,
                            to_stress,
                            out);
+        else
+          set_face_stresses(to_stress, nullptr, out);
       }
   }
 
@@ -287,9 +344,11 @@ namespace liftoff
           for (unsigned int d = 0; d < 2; ++d)
             out.q[q][d] = fields.grad_w[q][d] - fields.psi[q][d];
       }
-    const double              nu      = plate.poisson_ratio;
-    const SectionCoefficients section = plate.section(cell->material_id());
-    const double              bending = -section.bending;
+    out.faces.resize(n);
+    const double              nu        = plate.poisson_ratio;
+    const SectionCoefficients section   = plate.section(cell->material_id());
+    const double              bending   = -section.bending;
+    const double              to_stress = stress_per_moment(section);
     for (unsigned int q = 0; q < n; ++q)
       {
         const PlaneMoments m(bending,
@@ -302,12 +361,17 @@ namespace liftoff
           out.q[q][d] = section.shear * out.q[q][d];
         if (free_bending)
           {
-            const double free =
-              free_moment(in_section(free_bending(fields.points()[q]), section),
-                          nu);
+            const FreeBending thermal =
+              in_section(free_bending(fields.points()[q]), section);
+            const double free = free_moment(thermal, nu);
             out.m_1[q] += free;
             out.m_2[q] += free;
+            out.faces[q] =
+              face_stresses(out.m_1[q], out.m_2[q], to_stress, &thermal);
           }
+        else
+          out.faces[q] =
+            face_stresses(out.m_1[q], out.m_2[q], to_stress, nullptr);
       }
   }
 

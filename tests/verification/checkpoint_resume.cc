@@ -105,13 +105,15 @@ LIFTOFF_TEST_MAIN(argc, argv)
   const std::string envelopes =
     set("Output/Write envelopes", "true")
     + set("Output/Write moment extremes", "true")
+    + set("Output/Write stress extremes", "true")
+    + set("Output/Write stress history", "true")
     + set("Output/Probe quantities", "M_xx(0.1; 0.05), Q_y(-0.2; 0.1)");
   // The step each variant stops after.
   const std::vector<std::tuple<std::string, std::string, unsigned int>>
     variants = {
       {"MUMPS", "", 20},
       // With the envelopes, whose values before the stop come from the
-      // checkpoint, and the moment columns.
+      // checkpoint, and the moment and face stress columns.
       {"Newmark", exact_solver + envelopes, 20},
       // New meshes after steps 7 and 14: the checkpoint of step 20 holds a
       // mesh the scene alone does not give, and the run goes on adapting.

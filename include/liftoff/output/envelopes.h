@@ -21,7 +21,9 @@ namespace liftoff
   /**
    * What design reads off a dynamic run: at every output point of the field
    * files, the largest and smallest deflection, the largest bed pressure,
-   * the largest M_1 and the smallest M_2 over all steps, each with the time
+   * the largest M_1, the smallest M_2 and the largest principal stress of
+   * each face (sigma_1_top_max, sigma_1_bottom_max) over all steps, each
+   * with the time
    * at which it occurred. Written as envelope.pvtu (and its pieces) at the
    * end of the run and whenever the outputs are flushed (a checkpoint, a
    * failure), and as the extremes over the plate in the summary. A
@@ -62,7 +64,7 @@ namespace liftoff
     load(InputArchive &archive) override;
 
     /// The names of the envelopes: w_max, w_min, foundation_pressure_max,
-    /// M_1_max, M_2_min.
+    /// M_1_max, M_2_min, sigma_1_top_max, sigma_1_bottom_max.
     static std::vector<std::string>
     names();
 

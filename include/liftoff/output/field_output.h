@@ -103,11 +103,13 @@ namespace liftoff
                   const LA::MPI::Vector &solution,
                   const LA::MPI::Vector &velocity) const;
 
-    unsigned int                                interval           = 10;
-    bool                                        higher_order_cells = false;
-    unsigned int                                subdivisions       = 0;
-    bool                                        writes_hdf5        = false;
-    bool                                        writes_moments     = true;
+    unsigned int interval           = 10;
+    bool         higher_order_cells = false;
+    unsigned int subdivisions       = 0;
+    bool         writes_hdf5        = false;
+    bool         writes_moments     = true;
+    /// Output/Face stress fields: sigma_1_top and sigma_1_bottom too.
+    bool                                        writes_faces = false;
     MindlinPlate                                plate;
     PhysicalUnits                               units;
     std::vector<std::pair<double, std::string>> records;

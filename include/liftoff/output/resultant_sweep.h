@@ -5,6 +5,7 @@
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/loads/free_bending.h>
+#include <liftoff/output/stress_resultants.h>
 
 #include <vector>
 
@@ -17,14 +18,15 @@ namespace liftoff
 
   /**
    * The quantities design reads off a plate (the deflection, the bed's
-   * spring pressure, the principal moments and the magnitude of the shear
-   * force) at the output points of every cell of this rank, for the
-   * history's extremes and the envelopes. The output points are those at
-   * which the field files are written (DataOut with as many subdivisions as
-   * the element's degree): equidistant, (p + 1)^2 per cell, which are the
-   * support points of FE_DGQ(p) in its order, so that a FE_DGQ(p) field
-   * holds one value per output point and is written exactly. The moments
-   * and shear forces are StressResultants', so every output agrees.
+   * spring pressure, the principal moments, the magnitude of the shear
+   * force and the largest principal stress of each face, with the slab) at the
+   * output points of every cell of this rank, for the history's extremes and
+   * the envelopes. The output points are those at which the field files are
+   * written (DataOut with as many subdivisions as the element's degree):
+   * equidistant, (p + 1)^2 per cell, which are the support points of FE_DGQ(p)
+   * in its order, so that a FE_DGQ(p) field holds one value per output point
+   * and is written exactly. The moments and shear forces are StressResultants',
+   * so every output agrees.
    *
    * One object per step, made by the Simulator and handed to every output
    * in StepData: the values are computed at the first call of values() and
@@ -40,6 +42,11 @@ namespace liftoff
       double m_1      = 0;
       double m_2      = 0;
       double shear    = 0;
+      /// The largest principal stress of each face (StressResultants'
+      /// sigma_1_top, sigma_1_bottom).
+      FaceStresses faces;
+      /// The slab of the point's cell (0, 1, ...; 0 on a plate of one).
+      unsigned int slab = 0;
     };
 
     /// `free_bending`: the temperature loads' at the step's time (empty:

@@ -24,6 +24,15 @@ namespace liftoff
 
   class Discretization;
 
+  /// The largest principal stress at each face of the plate: `top` at the
+  /// face away from the bed (z = -H/2), `bottom` at the bed-side face
+  /// (z = +H/2); positive in tension.
+  struct FaceStresses
+  {
+    double top    = 0;
+    double bottom = 0;
+  };
+
   /**
    * The plate's stress resultants from (w, psi_x, psi_y) at any points of a
    * cell: the moments M_xx, M_yy, M_xy by the plate's constitutive law, the
@@ -42,12 +51,15 @@ namespace liftoff
     /// `solution` is the ghosted (w, psi_x, psi_y) the output writes; the
     /// shear forces of mitc need its values at the cell's tying points.
     /// `free_bending` (the temperature loads' at the step's time; empty:
-    /// none) shifts the moments and adds the face stresses.
+    /// none) shifts the moments and adds the face stresses. With
+    /// `face_fields` the output (get_names()) also has sigma_1_top and
+    /// sigma_1_bottom, which at_point() and evaluate() always give.
     StressResultants(const MindlinPlate                    &plate,
                      const Mapping<2>                      &mapping,
                      const TransverseShearStrain::Treatment treatment,
                      const LA::MPI::Vector                 &solution,
-                     const FreeBendingField                &free_bending = {});
+                     const FreeBendingField                &free_bending = {},
+                     const bool face_fields = false);
 
     /// Field name -> what it is, for its unit and scale.
     static const std::map<std::string, PhysicalUnits::Quantity> &
@@ -83,15 +95,20 @@ namespace liftoff
     std::map<std::string, double>
     at_point(const Discretization &discretization, const Point<2> &p) const;
 
-    /// The principal moments and the shear force at the points of
+    /// The principal moments, the shear force and the faces' largest
+    /// principal stresses at the points of
     /// `fields`, reinitialised on `cell` with its dof values `dof_values`,
-    /// as evaluate() gives M_1, M_2, Q_x and Q_y to the bit, without the
-    /// other fields (the design outputs' pass over every output point). The
-    /// vectors of `out` are kept by the caller from cell to cell.
+    /// as evaluate() gives M_1, M_2, Q_x, Q_y, sigma_1_top and
+    /// sigma_1_bottom to the bit, without the other fields (the design outputs'
+    /// pass over every output point). The vectors of `out` are kept by the
+    /// caller from cell to cell.
     struct PrincipalValues
     {
       std::vector<double>       m_1, m_2;
       std::vector<Tensor<1, 2>> q;
+      /// The largest principal stress of each face (sigma_1_top,
+      /// sigma_1_bottom).
+      std::vector<FaceStresses> faces;
     };
     void
     principal(const DoFHandler<2>::active_cell_iterator &cell,
@@ -105,6 +122,7 @@ namespace liftoff
     const TransverseShearStrain::Treatment treatment;
     const LA::MPI::Vector                 &solution;
     const FreeBendingField                 free_bending;
+    const bool                             face_fields;
 
     /// The shear strains of the shape functions at one set of reference
     /// points, rebuilt when the points change (DataOut asks for the same
