@@ -18,6 +18,23 @@ namespace liftoff
       {"point", std::nullopt},
       {"rectangle", PatchLoad::Shape::rectangle},
       {"disc", PatchLoad::Shape::disc}};
+
+
+    // A tyre of Axles presses its contact area; a point would carry its
+    // force on no area, and the stress under it grows without bound as the
+    // mesh is refined.
+    void
+    require_tyre_areas(const std::string &name,
+                       const bool         has_tyres,
+                       const bool         has_area)
+    {
+      AssertThrow(!has_tyres || has_area,
+                  ExcMessage(name + "/Wheel shape = point: the tyres of " + name
+                             + "/Axles press their contact areas (load / "
+                               "Tyre pressure); give Wheel shape = disc (a "
+                               "circle, as practice takes it) or rectangle "
+                               "(PCA's equivalent)."));
+    }
   } // namespace
 
 
@@ -85,15 +102,7 @@ namespace liftoff
                            + "/Axles: give the vehicle's load either as "
                              "Magnitude shared by Wheels or per axle in "
                              "Axles (Magnitude 0), not both."));
-    // A tyre of Axles presses its contact area; a point would carry its
-    // force on no area, and the stress under it grows without bound as the
-    // mesh is refined.
-    AssertThrow(tyres.empty() || shape,
-                ExcMessage(name + "/Wheel shape = point: the tyres of " + name
-                           + "/Axles press their contact areas (load / Tyre "
-                             "pressure); give Wheel shape = disc (a circle, "
-                             "as practice takes it) or rectangle (PCA's "
-                             "equivalent)."));
+    require_tyre_areas(name, !tyres.empty(), shape.has_value());
     std::vector<std::unique_ptr<Load>> loads;
     if (magnitude == 0.0 && tyres.empty())
       return loads;
