@@ -141,22 +141,19 @@ namespace liftoff
 
 
   void
-  ActiveSetIteration::update_status(const LA::MPI::Vector &ghosted_u,
-                                    const SpringPressure  &pressure)
+  ActiveSetIteration::update_status(const LA::MPI::Vector &ghosted_u)
   {
-    count_changes([&](StatusTerm &term) {
-      return term.update_status(ghosted_u, pressure);
-    });
+    count_changes(
+      [&](StatusTerm &term) { return term.update_status(ghosted_u); });
   }
 
 
   void
-  ActiveSetIteration::add_status_loads(const SpringPressure &pressure,
-                                       LA::MPI::Vector      &vector) const
+  ActiveSetIteration::add_status_loads(LA::MPI::Vector &vector) const
   {
     for (const StatusTerm *term : terms)
       if (term->has_status_load())
-        term->add_status_load(pressure, vector);
+        term->add_status_load(vector);
   }
 
 
@@ -408,7 +405,7 @@ namespace liftoff
     if (!has_status_load())
       return system.rhs;
     rhs_with_loads = system.rhs;
-    add_status_loads(system.pressure, rhs_with_loads);
+    add_status_loads(rhs_with_loads);
     return rhs_with_loads;
   }
 
@@ -456,9 +453,8 @@ namespace liftoff
                                   accuracy))
       return {};
     SectionTimer::Scope t(timer, "contact update");
-    return count_changes([&](StatusTerm &term) {
-      return term.update_status(ghosted_solution, system.pressure);
-    });
+    return count_changes(
+      [&](StatusTerm &term) { return term.update_status(ghosted_solution); });
   }
 
 
@@ -523,14 +519,13 @@ namespace liftoff
 
   void
   ActiveSetIteration::start_from_prediction(const LA::MPI::Vector &prediction,
-                                            const SpringPressure  &pressure,
                                             LA::MPI::Vector &ghosted_solution)
   {
     // The contact rule applied to the prediction: where the plate is
     // heading.
     SectionTimer::Scope t(timer, "contact update");
     ghosts.copy(prediction, ghosted_solution);
-    update_status(ghosted_solution, pressure);
+    update_status(ghosted_solution);
   }
 
 
@@ -568,7 +563,7 @@ namespace liftoff
     // in the round-off band.
     const Statuses start_set = statuses();
     if (guess_is_prediction && starts_from_prediction)
-      start_from_prediction(solution, system.pressure, ghosted_solution);
+      start_from_prediction(solution, ghosted_solution);
     // The sets of this step so far. The solution depends on the set only,
     // so meeting one again means the iteration would go round for ever.
     std::vector<Statuses> visited{statuses()};

@@ -400,4 +400,84 @@ namespace liftoff
                                       : std::max(compression, 0.0));
     return 0.5 * gamma * active * active;
   }
+
+
+  ContactRule::ContactRule(const ContactLaw &contact_law)
+      : law(contact_law)
+  {}
+
+
+  void
+  ContactRule::use_pressure(SpringPressure pressure)
+  {
+    current = std::move(pressure);
+  }
+
+
+  const SpringPressure &
+  ContactRule::pressure() const
+  {
+    return current;
+  }
+
+
+  bool
+  ContactRule::switches() const
+  {
+    return law.model() == ContactLaw::Model::tensionless;
+  }
+
+
+  double
+  ContactRule::band(const double largest) const
+  {
+    return law.band(largest);
+  }
+
+
+  unsigned char
+  ContactRule::next_status(const unsigned char status,
+                           const double        compression,
+                           const double        band) const
+  {
+    return law.next_status(status, compression, band);
+  }
+
+
+  bool
+  ContactRule::may_keep(const unsigned char,
+                        const double compression,
+                        const double band) const
+  {
+    return std::abs(compression) <= band;
+  }
+
+
+  double
+  ContactRule::stiffness(const double velocity_factor) const
+  {
+    return law.matrix_stiffness(velocity_factor);
+  }
+
+
+  bool
+  ContactRule::has_offset() const
+  {
+    return law.has_gap();
+  }
+
+
+  double
+  ContactRule::offset_stiffness() const
+  {
+    return current.stiffness;
+  }
+
+
+  double
+  ContactRule::offset(const unsigned int i, const unsigned char) const
+  {
+    Assert(i < current.gap.size(), ExcInternalError());
+    return current.gap[i];
+  }
 } // namespace liftoff

@@ -74,6 +74,7 @@ namespace liftoff
     looseness = prm.get_double("Looseness");
     prm.leave_subsection();
     prm.leave_subsection();
+    law = DowelLaw(stiffness(), looseness);
     if (layout.is_empty())
       return;
     AssertThrow(given_stiffness > 0
@@ -181,9 +182,7 @@ namespace liftoff
     AssertThrow(Utilities::MPI::sum(local.size(), disc.mpi_communicator)
                   == dowel_sites.size(),
                 ExcInternalError());
-    current.assign(local.size(), looseness > 0 ? slack : both);
-    in_matrix = current;
-    last_jump.assign(local.size(), 0.0);
+    reset_status(local.size(), law.initial_status(), disc.mpi_communicator);
   }
 
 
@@ -225,13 +224,6 @@ namespace liftoff
   }
 
 
-  double
-  JointDowels::offset_sign(const unsigned char status) const
-  {
-    return status == lower ? 1.0 : (status == upper ? -1.0 : 0.0);
-  }
-
-
   void
   JointDowels::add_dowel(const unsigned int     i,
                          const double           factor,
@@ -241,8 +233,8 @@ namespace liftoff
     FullMatrix<double>         cell_matrix(b.size(), b.size());
     for (unsigned int r = 0; r < b.size(); ++r)
       for (unsigned int c = 0; c < b.size(); ++c)
-        cell_matrix(r, c) = factor * stiffness()
-                            * dowel_sites[local[i].index].share * b[r] * b[c];
+        cell_matrix(r, c) =
+          factor * dowel_sites[local[i].index].share * b[r] * b[c];
     discretization->constraints.distribute_local_to_global(cell_matrix,
                                                            local[i].dofs,
                                                            matrix);
@@ -262,67 +254,74 @@ namespace liftoff
   }
 
 
-  void
-  JointDowels::add_to_matrix(const MatrixFactors   &factors,
-                             LA::MPI::SparseMatrix &matrix)
+  const StatusLaw &
+  JointDowels::status_law() const
   {
-    add_to_matrix(current, factors.velocity, matrix);
-    in_matrix = current;
+    return law;
   }
 
 
   void
-  JointDowels::add_to_matrix(const Status &status,
-                             const double,
-                             LA::MPI::SparseMatrix &matrix) const
+  JointDowels::point_values(const LA::MPI::Vector &ghosted_u,
+                            std::vector<double>   &values) const
   {
-    AssertThrow(status.size() == local.size(),
-                ExcMessage("A dowel status of another mesh."));
-    add_on_every_rank(matrix);
+    values.resize(local.size());
     for (unsigned int i = 0; i < local.size(); ++i)
-      if (status[i] != slack)
-        add_dowel(i, 1.0, matrix);
-    matrix.compress(VectorOperation::add);
+      values[i] = jump_of(i, ghosted_u);
   }
 
 
-  unsigned long
-  JointDowels::update_matrix(const double, LA::MPI::SparseMatrix &matrix)
+  void
+  JointDowels::add_point_matrices(const PointFactors    &points,
+                                  const double           k,
+                                  LA::MPI::SparseMatrix &matrix) const
   {
     add_on_every_rank(matrix);
-    unsigned long n_updated = 0;
-    for (unsigned int i = 0; i < local.size(); ++i)
-      {
-        const bool was = in_matrix[i] != slack, is = current[i] != slack;
-        if (was != is)
-          {
-            add_dowel(i, is ? 1.0 : -1.0, matrix);
-            ++n_updated;
-          }
-      }
-    in_matrix = current;
-    n_updated =
-      Utilities::MPI::sum(n_updated, discretization->mpi_communicator);
-    if (n_updated > 0)
-      matrix.compress(VectorOperation::add);
-    return n_updated;
+    const auto add = [&](const unsigned int i) {
+      const double f = points.factor(i);
+      if (f != 0.0)
+        add_dowel(i, f * k, matrix);
+    };
+    if (points.listed == nullptr)
+      for (unsigned int i = 0; i < local.size(); ++i)
+        add(i);
+    else
+      for (const unsigned int i : *points.listed)
+        add(i);
   }
 
 
   void
-  JointDowels::add_change_product(const Status &reference,
-                                  const double,
+  JointDowels::add_point_products(const PointFactors    &points,
+                                  const double           k,
                                   const LA::MPI::Vector &ghosted_src,
                                   LA::MPI::Vector       &dst) const
   {
+    Assert(points.listed == nullptr, ExcNotImplemented());
     add_on_every_rank(dst);
     for (unsigned int i = 0; i < local.size(); ++i)
       {
-        const bool was = reference[i] != slack, is = in_matrix[i] != slack;
-        if (was != is)
-          add_vector(i,
-                     (is ? 1.0 : -1.0) * stiffness() * jump_of(i, ghosted_src),
-                     dst);
+        const double f = points.factor(i);
+        if (f != 0.0)
+          add_vector(i, f * k * jump_of(i, ghosted_src), dst);
+      }
+    dst.compress(VectorOperation::add);
+  }
+
+
+  void
+  JointDowels::add_point_loads(const PointFactors &points,
+                               const double        k,
+                               const std::function<double(unsigned int)> &value,
+                               LA::MPI::Vector &dst) const
+  {
+    Assert(points.listed == nullptr, ExcNotImplemented());
+    add_on_every_rank(dst);
+    for (unsigned int i = 0; i < local.size(); ++i)
+      {
+        const double v = points.factor(i) * value(i);
+        if (v != 0.0)
+          add_vector(i, k * v, dst);
       }
     dst.compress(VectorOperation::add);
   }
@@ -333,7 +332,7 @@ namespace liftoff
   {
     add_on_every_rank(force);
     for (unsigned int i = 0; i < local.size(); ++i)
-      if (current[i] != slack)
+      if (status()[i] != DowelLaw::slack)
         add_vector(i, stiffness() * jump_of(i, state.ghosted_u), force);
     force.compress(VectorOperation::add);
   }
@@ -344,33 +343,12 @@ namespace liftoff
   {
     double energy = 0;
     for (unsigned int i = 0; i < local.size(); ++i)
-      if (current[i] != slack)
+      if (status()[i] != DowelLaw::slack)
         energy += 0.5 * stiffness() * dowel_sites[local[i].index].share
                   * std::pow(jump_of(i, state.ghosted_u)
-                               - looseness * offset_sign(current[i]),
+                               - looseness * DowelLaw::offset_sign(status()[i]),
                              2);
     return Utilities::MPI::sum(energy, discretization->mpi_communicator);
-  }
-
-
-  bool
-  JointDowels::has_status_load() const
-  {
-    return looseness > 0 && !dowel_sites.empty();
-  }
-
-
-  void
-  JointDowels::add_status_load(const SpringPressure &,
-                               LA::MPI::Vector &vector) const
-  {
-    add_on_every_rank(vector);
-    for (unsigned int i = 0; i < local.size(); ++i)
-      if (current[i] == lower || current[i] == upper)
-        add_vector(i,
-                   stiffness() * looseness * offset_sign(current[i]),
-                   vector);
-    vector.compress(VectorOperation::add);
   }
 
 
@@ -382,99 +360,11 @@ namespace liftoff
     double work = 0;
     for (unsigned int i = 0; i < local.size(); ++i)
       {
-        const double offset = looseness * offset_sign(current[i]);
+        const double offset = looseness * DowelLaw::offset_sign(status()[i]);
         work += stiffness() * dowel_sites[local[i].index].share * offset
                 * (offset - jump_of(i, ghosted_u));
       }
     return Utilities::MPI::sum(work, discretization->mpi_communicator);
-  }
-
-
-  unsigned long
-  JointDowels::update_status(const LA::MPI::Vector &ghosted_u,
-                             const SpringPressure &)
-  {
-    if (looseness == 0)
-      return 0;
-    double largest = looseness;
-    for (unsigned int i = 0; i < local.size(); ++i)
-      {
-        last_jump[i] = jump_of(i, ghosted_u);
-        largest      = std::max(largest, std::abs(last_jump[i]));
-      }
-    // The same relative band as the bed's contact rule would take: round-off
-    // of the solution, not a physical width.
-    band =
-      1e-10 * Utilities::MPI::max(largest, discretization->mpi_communicator);
-    unsigned long n_changed = 0;
-    for (unsigned int i = 0; i < local.size(); ++i)
-      {
-        const double  jump = last_jump[i];
-        unsigned char now  = current[i];
-        if (jump > looseness + band)
-          now = lower;
-        else if (jump < -looseness - band)
-          now = upper;
-        else if (std::abs(jump) < looseness - band)
-          now = slack;
-        else if (now != slack && now != (jump > 0 ? lower : upper))
-          now = slack;
-        n_changed += (now != current[i]);
-        current[i] = now;
-      }
-    return Utilities::MPI::sum(n_changed, discretization->mpi_communicator);
-  }
-
-
-  unsigned long
-  JointDowels::keep_status_in_band(const Status &earlier)
-  {
-    AssertDimension(earlier.size(), current.size());
-    unsigned long n_changed = 0;
-    for (unsigned int i = 0; i < local.size(); ++i)
-      {
-        const double jump        = last_jump[i];
-        const bool   in_band     = std::abs(std::abs(jump) - looseness) <= band;
-        const unsigned char side = jump > 0 ? lower : upper;
-        if (looseness > 0 && in_band && current[i] != earlier[i]
-            && (earlier[i] == slack || earlier[i] == side))
-          {
-            current[i] = earlier[i];
-            ++n_changed;
-          }
-      }
-    return Utilities::MPI::sum(n_changed, discretization->mpi_communicator);
-  }
-
-
-  const StatusTerm::Status &
-  JointDowels::status() const
-  {
-    return current;
-  }
-
-
-  void
-  JointDowels::set_status(const Status &status)
-  {
-    AssertDimension(status.size(), current.size());
-    current = status;
-  }
-
-
-  void
-  JointDowels::unite(const Status &status, Status &all) const
-  {
-    AssertDimension(status.size(), all.size());
-    for (unsigned int i = 0; i < all.size(); ++i)
-      all[i] |= status[i];
-  }
-
-
-  const StatusTerm::Status &
-  JointDowels::status_in_matrix() const
-  {
-    return in_matrix;
   }
 
 
@@ -483,10 +373,11 @@ namespace liftoff
   {
     std::vector<double> force(dowel_sites.size(), 0.0);
     for (unsigned int i = 0; i < local.size(); ++i)
-      if (current[i] != slack)
+      if (status()[i] != DowelLaw::slack)
         force[local[i].index] =
           stiffness()
-          * (jump_of(i, ghosted_u) - looseness * offset_sign(current[i]));
+          * (jump_of(i, ghosted_u)
+             - looseness * DowelLaw::offset_sign(status()[i]));
     Utilities::MPI::sum(force, discretization->mpi_communicator, force);
     return force;
   }
@@ -495,19 +386,13 @@ namespace liftoff
   void
   JointDowels::save(OutputArchive &archive) const
   {
-    archive << current << in_matrix;
+    save_status(archive);
   }
 
 
   void
   JointDowels::load(InputArchive &archive)
   {
-    const std::size_t n = current.size();
-    archive >> current >> in_matrix;
-    AssertThrow(current.size() == n && in_matrix.size() == n,
-                ExcMessage("The checkpoint's dowel status has "
-                           + std::to_string(current.size())
-                           + " dowels where this rank has " + std::to_string(n)
-                           + ": it was written for another mesh."));
+    load_status(archive, "dowels");
   }
 } // namespace liftoff

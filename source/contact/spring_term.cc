@@ -1,6 +1,5 @@
 #include <deal.II/base/mpi.h>
 
-#include <liftoff/base/archives.h>
 #include <liftoff/contact/spring_term.h>
 
 #include <algorithm>
@@ -20,28 +19,18 @@ namespace liftoff
 
 
   void
-  SpringTerm::setup(const FoundationPoints           &foundation_points,
-                    const double                      modulus,
-                    const std::vector<unsigned char> &status)
+  SpringTerm::setup(const FoundationPoints &foundation_points,
+                    const double            modulus)
   {
     points        = &foundation_points;
     layer_modulus = modulus;
-    in_matrix     = status;
-    points_to_update.clear();
   }
 
 
-  void
-  SpringTerm::status_changed(const unsigned int i)
-  {
-    points_to_update.push_back(i);
-  }
-
-
-  template <class Factor>
+  template <class FactorOf>
   bool
   SpringTerm::cell_weights(const unsigned int   c,
-                           const Factor        &factor,
+                           const FactorOf      &factor,
                            const double         k,
                            std::vector<double> &weight,
                            std::vector<double> &layer_weight) const
@@ -135,93 +124,44 @@ namespace liftoff
 
 
   void
-  SpringTerm::assemble(const std::vector<unsigned char> &status,
-                       const double                      k,
-                       LA::MPI::SparseMatrix            &matrix)
+  SpringTerm::add_to_matrix(const Factor                    &factor,
+                            const std::vector<unsigned int> *listed,
+                            const double                     k,
+                            LA::MPI::SparseMatrix           &matrix) const
   {
-    add_to_matrix(status, k, matrix);
-    in_matrix = status;
-    points_to_update.clear();
-  }
-
-
-  void
-  SpringTerm::add_to_matrix(const std::vector<unsigned char> &status,
-                            const double                      k,
-                            LA::MPI::SparseMatrix            &matrix) const
-  {
-    AssertThrow(status.size() == in_matrix.size(),
-                ExcMessage("A contact status of another mesh."));
-    const auto is_in = [&](const unsigned int i) { return 1.0 * status[i]; };
     std::vector<double> weight, layer_weight;
-    for (unsigned int c = 0; c < points->n_cells(); ++c)
-      if (cell_weights(c, is_in, k, weight, layer_weight))
+    const auto          add_cell = [&](const unsigned int c) {
+      if (cell_weights(c, factor, k, weight, layer_weight))
         add_cell_term(c, weight, layer_weight, matrix);
-    matrix.compress(VectorOperation::add);
-  }
-
-
-  const std::vector<unsigned char> &
-  SpringTerm::status_in_matrix() const
-  {
-    return in_matrix;
-  }
-
-
-  unsigned long
-  SpringTerm::update_matrix(const std::vector<unsigned char> &status,
-                            const double                      k,
-                            LA::MPI::SparseMatrix            &matrix)
-  {
-    // Points are listed in the order they changed; group them by cell so a
-    // cell's entries are added once. A point may have changed and changed
-    // back: only a difference from the matrix counts.
-    std::sort(points_to_update.begin(), points_to_update.end());
-    points_to_update.erase(std::unique(points_to_update.begin(),
-                                       points_to_update.end()),
-                           points_to_update.end());
-    const auto change = [&](const unsigned int i) {
-      return status[i] == in_matrix[i] ? 0.0 : (status[i] ? 1.0 : -1.0);
     };
-    const unsigned int  n_q       = points->n_q_points();
-    unsigned long       n_updated = 0;
-    std::vector<double> weight, layer_weight;
-    for (auto p = points_to_update.begin(); p != points_to_update.end();)
+    if (listed == nullptr)
+      for (unsigned int c = 0; c < points->n_cells(); ++c)
+        add_cell(c);
+    else
       {
-        const unsigned int c = *p / n_q;
-        if (cell_weights(c, change, k, weight, layer_weight))
-          add_cell_term(c, weight, layer_weight, matrix);
-        for (; p != points_to_update.end() && *p / n_q == c; ++p)
+        // Each cell of a listed point once.
+        const unsigned int n_q = points->n_q_points();
+        for (auto p = listed->begin(); p != listed->end();)
           {
-            n_updated += (in_matrix[*p] != status[*p]);
-            in_matrix[*p] = status[*p];
+            const unsigned int c = *p / n_q;
+            add_cell(c);
+            for (; p != listed->end() && *p / n_q == c; ++p)
+              ;
           }
       }
-    points_to_update.clear();
-    n_updated =
-      Utilities::MPI::sum(n_updated, points->discretization().mpi_communicator);
-    if (n_updated > 0)
-      matrix.compress(VectorOperation::add);
-    return n_updated;
   }
 
 
   void
-  SpringTerm::add_change_product(const std::vector<unsigned char> &reference,
-                                 const double                      k,
-                                 const LA::MPI::Vector            &ghosted_src,
-                                 LA::MPI::Vector                  &dst) const
+  SpringTerm::add_product(const Factor          &factor,
+                          const double           k,
+                          const LA::MPI::Vector &ghosted_src,
+                          LA::MPI::Vector       &dst) const
   {
-    AssertThrow(reference.size() == in_matrix.size(),
-                ExcMessage("A contact status of another mesh."));
-    const auto change = [&](const unsigned int i) {
-      return static_cast<double>(in_matrix[i])
-             - static_cast<double>(reference[i]);
-    };
     std::vector<double> weight, layer_weight;
     Vector<double>      cell_vector(points->n_w_dofs());
     for (unsigned int c = 0; c < points->n_cells(); ++c)
-      if (cell_weights(c, change, k, weight, layer_weight))
+      if (cell_weights(c, factor, k, weight, layer_weight))
         {
           cell_product(c, weight, layer_weight, ghosted_src, cell_vector);
           points->add_cell_vector(c, cell_vector, dst);
@@ -231,10 +171,10 @@ namespace liftoff
 
 
   void
-  SpringTerm::add_product(const std::vector<unsigned char> &status,
-                          const double                      k,
-                          const LA::MPI::Vector            &u,
-                          LA::MPI::Vector                  &vector) const
+  SpringTerm::add_reaction(const std::vector<unsigned char> &status,
+                           const double                      k,
+                           const LA::MPI::Vector            &u,
+                           LA::MPI::Vector                  &vector) const
   {
     const auto is_in = [&](const unsigned int i) { return 1.0 * status[i]; };
     std::vector<double>       weight, layer_weight;
@@ -260,35 +200,20 @@ namespace liftoff
 
   void
   SpringTerm::add_integral(
-    const std::vector<unsigned char> &status,
-    const double                      k,
+    const Factor &factor,
+    const double  k,
     const std::function<void(const unsigned int, std::vector<double> &)> &f,
     LA::MPI::Vector &vector) const
   {
-    const auto is_in = [&](const unsigned int i) { return 1.0 * status[i]; };
     std::vector<double> weight, layer_weight, values;
     points->add_cell_vectors(
       [&](const unsigned int c, Vector<double> &cell_vector) {
-        if (cell_weights(c, is_in, k, weight, layer_weight))
+        if (cell_weights(c, factor, k, weight, layer_weight))
           {
             f(c, values);
             apply_weights(weight, values, cell_vector);
           }
       },
       vector);
-  }
-
-
-  void
-  SpringTerm::save(OutputArchive &archive) const
-  {
-    archive << in_matrix << points_to_update;
-  }
-
-
-  void
-  SpringTerm::load(InputArchive &archive)
-  {
-    archive >> in_matrix >> points_to_update;
   }
 } // namespace liftoff

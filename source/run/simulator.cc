@@ -380,8 +380,8 @@ namespace liftoff
     unsigned int r = 0;
     for (; r < parts.mesh_refinement.n_initial_refinements(); ++r)
       {
-        parts.active_set.update_status(stepper->state().ghosted_u,
-                                       parts.foundation.law().pressure());
+        parts.foundation.use_pressure(parts.foundation.law().pressure());
+        parts.active_set.update_status(stepper->state().ghosted_u);
         if (!adapt_mesh())
           break;
         // The fields themselves, not their interpolant on the old mesh.

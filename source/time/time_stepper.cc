@@ -440,9 +440,9 @@ namespace liftoff
                             const StopCheck       &stop_if_requested)
   {
     // The plate at rest: the springs' Gamma (w - g), no dashpot force.
-    const SpringPressure             pressure = bed.law().pressure();
+    bed.use_pressure(bed.law().pressure());
     const ActiveSetIteration::System system{
-      load, pressure, !discretization.geometry().has_kinematic_support()};
+      load, !discretization.geometry().has_kinematic_support()};
     bed.activate_all();
     active_set.set_base_matrix(base_matrix({0.0, 0.0}), 0.0);
 
@@ -701,10 +701,10 @@ namespace liftoff
                            const double       tau,
                            const std::string &what)
   {
-    const SpringPressure pressure = pressure_at_state_velocity();
-    active_set.update_status(state_.ghosted_u, pressure);
+    use_pressure_at_state_velocity();
+    active_set.update_status(state_.ghosted_u);
     assemble_loads(step, tau, state_.load);
-    force_balance(state_.load, pressure, state_.balance);
+    force_balance(state_.load, state_.balance);
     if (bed.law().has_damping())
       compute_dissipative_force();
     matrices.solve_with_mass(state_.a, state_.balance);
@@ -863,15 +863,18 @@ namespace liftoff
   }
 
 
-  SpringPressure
-  TimeStepper::pressure_at_state_velocity()
+  void
+  TimeStepper::use_pressure_at_state_velocity()
   {
     if (!bed.law().has_damping())
-      return bed.law().pressure();
+      {
+        bed.use_pressure(bed.law().pressure());
+        return;
+      }
     // At a given state v is given: kappa = 0, o = -v.
     scratch.equ(-1.0, state_.v);
     ghosted_scratch = scratch;
-    return bed.law().pressure(0.0, ghosted_scratch);
+    bed.use_pressure(bed.law().pressure(0.0, ghosted_scratch));
   }
 
 
@@ -891,23 +894,22 @@ namespace liftoff
                                      const double       tau,
                                      const bool         from_prediction)
   {
-    SpringPressure pressure = bed.law().pressure();
     if (bed.law().has_damping())
       {
         // In the step v_{n+1} = kappa u_{n+1} - o_n: the dashpots' pressure
         // is affine in the new displacement, like a spring on a gap.
         newmark.velocity_offset(state_.u, state_.v, state_.a, scratch);
         ghosted_scratch = scratch;
-        pressure =
-          bed.law().pressure(newmark.velocity_factor(), ghosted_scratch);
+        bed.use_pressure(
+          bed.law().pressure(newmark.velocity_factor(), ghosted_scratch));
       }
+    else
+      bed.use_pressure(bed.law().pressure());
     newmark.predict(state_.u, state_.v, state_.a, u_next);
     // The first step starts from the bilateral set: the predictor has no
     // motion yet to extrapolate.
-    const auto result = active_set.solve({rhs, pressure},
-                                         u_next,
-                                         state_.ghosted_u,
-                                         from_prediction);
+    const auto result =
+      active_set.solve({rhs}, u_next, state_.ghosted_u, from_prediction);
     // Before the convergence test: a nan makes the contact set wander.
     require_finite(step, tau, "the solution", {&u_next}, {}, [&]() {
       return cause_of_non_finite_state(next_load);
@@ -945,9 +947,8 @@ namespace liftoff
     if (newmark.needs_force_balance())
       {
         SectionTimer::Scope t(timer, "right hand side");
-        force_balance(state_.load,
-                      pressure_at_state_velocity(),
-                      state_.balance);
+        use_pressure_at_state_velocity();
+        force_balance(state_.load, state_.balance);
       }
     state_.energies = energies();
     require_finite_state("the velocity, acceleration or an energy",
@@ -991,14 +992,13 @@ namespace liftoff
 
   void
   TimeStepper::force_balance(const LA::MPI::Vector &load,
-                             const SpringPressure  &pressure,
                              LA::MPI::Vector       &balance)
   {
     balance = 0;
     for (const SystemTerm *term : terms)
       term->add_force({state_.u, state_.ghosted_u, scratch}, balance);
     balance.sadd(-1.0, 1.0, load);
-    active_set.add_status_loads(pressure, balance);
+    active_set.add_status_loads(balance);
   }
 
 

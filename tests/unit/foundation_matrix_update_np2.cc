@@ -122,8 +122,7 @@ namespace
                                  u);
         discretization.constraints.distribute(u);
         ghosted_u = u;
-        n_flipped +=
-          foundation.update_status(ghosted_u, foundation.law().pressure());
+        n_flipped += foundation.update_status(ghosted_u);
         // Update only every other round, so some points flip twice between
         // two updates.
         if (round % 2 == 1)
@@ -253,7 +252,7 @@ namespace
                              u);
     discretization.constraints.distribute(u);
     ghosted_u = u;
-    damped.update_status(ghosted_u, damped.law().pressure());
+    damped.update_status(ghosted_u);
     checks.within("dashpots: points updated",
                   double(damped.update_matrix(kappa, held)),
                   100,

@@ -65,15 +65,14 @@ namespace liftoff
     void
     use_terms(const std::vector<SystemTerm *> &system_terms);
 
-    /// Every term's status from `ghosted_u` (a state, not a solve).
+    /// Every term's status from `ghosted_u` (a state, not a solve; the
+    /// bed's pressure is the state's, Bed::use_pressure()).
     void
-    update_status(const LA::MPI::Vector &ghosted_u,
-                  const SpringPressure  &pressure);
+    update_status(const LA::MPI::Vector &ghosted_u);
     /// vector += the terms' loads of their statuses (their forces' parts
     /// that do not depend on u).
     void
-    add_status_loads(const SpringPressure &pressure,
-                     LA::MPI::Vector      &vector) const;
+    add_status_loads(LA::MPI::Vector &vector) const;
     /// The sum of the terms' StatusTerm::status_load_work().
     double
     status_load_work(const LA::MPI::Vector &ghosted_u) const;
@@ -113,16 +112,14 @@ namespace liftoff
       InputArchive                                        &archive,
       const std::function<BaseMatrix(const unsigned int)> &write_of_key);
 
-    /// What one solve needs besides the matrix: the right-hand side b, the
-    /// bed's pressure k (w - e) for the velocity of the unknown (the
-    /// contact rule's e, and the gap load k int_S e phi_i that joins b),
-    /// and whether nothing but the foundation holds the plate (a static
-    /// free plate): then stop when the contact set empties or the solve is
-    /// singular.
+    /// What one solve needs besides the matrix: the right-hand side b
+    /// (the terms' status loads join it; the bed's for the pressure k (w -
+    /// e) of the unknown's velocity, Bed::use_pressure()), and whether
+    /// nothing but the foundation holds the plate (a static free plate):
+    /// then stop when the contact set empties or the solve is singular.
     struct System
     {
       const LA::MPI::Vector &rhs;
-      const SpringPressure  &pressure;
       bool                   requires_contact = false;
     };
 
@@ -268,7 +265,6 @@ namespace liftoff
     /// (ghosted_solution is set to it).
     void
     start_from_prediction(const LA::MPI::Vector &prediction,
-                          const SpringPressure  &pressure,
                           LA::MPI::Vector       &ghosted_solution);
     /// Solve with the union of the sets visited[first], ... (a cycle).
     void

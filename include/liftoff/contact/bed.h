@@ -22,13 +22,18 @@ namespace liftoff
   class Bed : public StatusTerm
   {
   public:
-    /// Gamma, c, G_p, g, and the pressure k (w - e) for the plate's
-    /// velocity that the calls of a StatusTerm take.
+    /// Gamma, c, G_p, g, and the pressure k (w - e) for a velocity of the
+    /// plate.
     virtual const ContactLaw &
     law() const = 0;
     /// What it carries in its current status.
     virtual const FoundationDiagnostics &
     diagnostics() const = 0;
+    /// The pressure k (w - e) for the plate's velocity that the status
+    /// and the status load take from now on: the solve's (v = kappa w - o)
+    /// before a solve, the state's before its status or force balance.
+    virtual void
+    use_pressure(SpringPressure pressure) = 0;
     /// Every point engaged: the first iterate of a solve from nothing.
     virtual void
     activate_all() = 0;

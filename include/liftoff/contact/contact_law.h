@@ -8,6 +8,7 @@
 
 #include <liftoff/base/linear_algebra.h>
 #include <liftoff/contact/foundation_points.h>
+#include <liftoff/contact/status_law.h>
 
 #include <memory>
 #include <string>
@@ -152,5 +153,47 @@ namespace liftoff
     bool                is_precompressed = false;
     /// g(x, y), kept for evaluation off the Gauss points (if is_gapped).
     std::unique_ptr<FunctionParser<2>> gap_function;
+  };
+
+  /**
+   * The bed's contact rule as the status law of its Gauss points: in
+   * contact where w - e > 0 (ContactLaw::next_status()), for the pressure
+   * k (w - e) of the plate's velocity that the solve or the state at hand
+   * sets (use_pressure()), whose e is the springs' offset.
+   */
+  class ContactRule : public StatusLaw
+  {
+  public:
+    explicit ContactRule(const ContactLaw &law);
+
+    void
+    use_pressure(SpringPressure pressure);
+    const SpringPressure &
+    pressure() const;
+
+    bool
+    switches() const override;
+    double
+    band(const double largest) const override;
+    unsigned char
+    next_status(const unsigned char status,
+                const double        compression,
+                const double        band) const override;
+    bool
+    may_keep(const unsigned char earlier,
+             const double        compression,
+             const double        band) const override;
+    double
+    stiffness(const double velocity_factor) const override;
+    bool
+    has_offset() const override;
+    double
+    offset_stiffness() const override;
+    double
+    offset(const unsigned int i, const unsigned char status) const override;
+
+  private:
+    const ContactLaw &law;
+    SpringPressure    current;
   };
 } // namespace liftoff

@@ -5,6 +5,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <liftoff/contact/dowel_bar.h>
+#include <liftoff/contact/dowel_law.h>
 #include <liftoff/contact/dowel_layout.h>
 #include <liftoff/contact/status_term.h>
 
@@ -28,7 +29,8 @@ namespace liftoff
    * |[w]| > g. A dowel's status is slack, engaged with [w] > g, or engaged
    * with [w] < -g; within a status its force is affine in u, and the
    * active-set iteration drives it with the foundation's contact set
-   * (StatusTerm). With g = 0 a dowel is always engaged: a linear spring.
+   * (StatusTerm, whose law is the DowelLaw). With g = 0 a dowel is always
+   * engaged: a linear spring.
    *
    * A dowel belongs to the rank that owns the cell on the finer side of
    * the joint where it sits (the side JointSprings integrates on), and is
@@ -65,45 +67,14 @@ namespace liftoff
     void
     setup(const Discretization &discretization) override;
     void
-    add_to_matrix(const MatrixFactors   &factors,
-                  LA::MPI::SparseMatrix &matrix) override;
-    void
     add_force(const TermState &state, LA::MPI::Vector &force) const override;
     double
     energy(const TermState &state) const override;
 
-    unsigned long
-    update_status(const LA::MPI::Vector &ghosted_u,
-                  const SpringPressure  &pressure) override;
-    unsigned long
-    keep_status_in_band(const Status &earlier) override;
-    const Status &
-    status() const override;
-    void
-    set_status(const Status &status) override;
-    /// A dowel engaged in any status of the union is engaged; engaged both
-    /// ways, it acts as a spring without looseness.
-    void
-    unite(const Status &status, Status &all) const override;
-    const Status &
-    status_in_matrix() const override;
-    void
-    add_to_matrix(const Status          &status,
-                  const double           velocity_factor,
-                  LA::MPI::SparseMatrix &matrix) const override;
-    unsigned long
-    update_matrix(const double           velocity_factor,
-                  LA::MPI::SparseMatrix &matrix) override;
-    void
-    add_change_product(const Status          &reference,
-                       const double           velocity_factor,
-                       const LA::MPI::Vector &ghosted_src,
-                       LA::MPI::Vector       &dst) const override;
-    bool
-    has_status_load() const override;
-    void
-    add_status_load(const SpringPressure &pressure,
-                    LA::MPI::Vector      &vector) const override;
+    /// Its play: slack within g, engaged one way or the other beyond (a
+    /// dowel engaged both ways in a union acts without play).
+    const StatusLaw &
+    status_law() const override;
     double
     status_load_work(const LA::MPI::Vector &ghosted_u) const override;
 
@@ -117,27 +88,37 @@ namespace liftoff
     void
     load(InputArchive &archive) override;
 
+  protected:
+    /// [w] at each dowel of this rank.
+    void
+    point_values(const LA::MPI::Vector &ghosted_u,
+                 std::vector<double>   &values) const override;
+    void
+    add_point_matrices(const PointFactors    &points,
+                       const double           k,
+                       LA::MPI::SparseMatrix &matrix) const override;
+    void
+    add_point_products(const PointFactors    &points,
+                       const double           k,
+                       const LA::MPI::Vector &ghosted_src,
+                       LA::MPI::Vector       &dst) const override;
+    void
+    add_point_loads(const PointFactors                        &points,
+                    const double                               k,
+                    const std::function<double(unsigned int)> &value,
+                    LA::MPI::Vector &dst) const override;
+
   private:
     /// The dowels' C, every dowel engaged; reached through SystemTerm
     /// (StiffnessLimit) only.
     std::vector<Coupling>
     couplings() const override;
 
-    /// The statuses: engaged with the lower slab's w ahead by more than
-    /// g, or the upper's; `both`, a spring without looseness (g = 0, or
-    /// the union of a cycle).
-    enum : unsigned char
-    {
-      slack = 0,
-      lower = 1,
-      upper = 2,
-      both  = 3
-    };
-
     DowelLayout layout;
     double      given_stiffness = 0;
     DowelBar    dowel_bar;
     double      looseness = 0;
+    DowelLaw    law;
 
     std::vector<DowelSite> dowel_sites;
 
@@ -150,9 +131,6 @@ namespace liftoff
       std::vector<double>                  jump;
     };
     std::vector<Local>    local;
-    Status                current, in_matrix;
-    std::vector<double>   last_jump;
-    double                band           = 0;
     const Discretization *discretization = nullptr;
 
     /// Dowel d, on the piece `face` of `cell` (a piece of its joint).
@@ -163,10 +141,7 @@ namespace liftoff
     /// [w] of local dowel i at ghosted_u.
     double
     jump_of(const unsigned int i, const LA::MPI::Vector &ghosted_u) const;
-    /// The sign of the looseness in the force of a status: F = C ([w] - g s).
-    double
-    offset_sign(const unsigned char status) const;
-    /// matrix += factor C b b^T of local dowel i (no compress).
+    /// matrix += factor b b^T of local dowel i (no compress).
     void
     add_dowel(const unsigned int     i,
               const double           factor,

@@ -64,8 +64,9 @@ namespace liftoff
    * (FoundationDiagnostics). It owns the contact status, the one state
    * that all of them read.
    *
-   * It is a term of the plate's system with a status (StatusTerm): the
-   * active-set iteration adds and updates its matrix entries.
+   * It is a term of the plate's system with a status (StatusTerm, whose
+   * law is the ContactRule): the active-set iteration adds and updates its
+   * matrix entries.
    */
   class TensionlessWinklerFoundation : public Bed
   {
@@ -82,13 +83,6 @@ namespace liftoff
     void
     setup(const Discretization &discretization) override;
 
-    /// Add the foundation stiffness K_f of the current status, with the
-    /// springs' stiffness Gamma + c kappa (kappa = `factors.velocity`: 0
-    /// in a static solve, gamma / (beta dt) in a time step), to `matrix`,
-    /// and remember that `matrix` now holds it.
-    void
-    add_to_matrix(const MatrixFactors   &factors,
-                  LA::MPI::SparseMatrix &matrix) override;
     /// force += K_f(status) u, the linear part of the springs' (and the
     /// shear layer's) reaction to u (the whole reaction without a gap), at
     /// state.ghosted_u.
@@ -112,69 +106,20 @@ namespace liftoff
     void
     activate_all() override;
 
-    /// Status from w_h - e at the Gauss points, e the effective gap of
-    /// `pressure`: a point comes into contact where w_h - e > delta and
-    /// leaves it where w_h - e < -delta, delta = contact_tolerance * max
-    /// |w_h - e|. Returns the number of points (over all ranks) whose
-    /// status changed.
-    unsigned long
-    update_status(const LA::MPI::Vector &ghosted_solution,
-                  const SpringPressure  &pressure) override;
-    /// Give the points whose w_h lay inside the round-off band at the last
-    /// update_status() the status they have in `earlier`: inside the band
-    /// the rule keeps a status, and this says which.
-    unsigned long
-    keep_status_in_band(const Status &earlier) override;
-    /// The status of the locally owned Gauss points (1: in contact), and
-    /// its replacement.
-    const Status &
-    status() const override;
-    void
-    set_status(const Status &status) override;
-    /// A point is in contact in the union if it is in any.
-    void
-    unite(const Status &status, Status &all) const override;
-    /// Add the K_f of `status` (a status() of this mesh) to
-    /// `matrix`, which then holds no status that update_matrix() knows of:
-    /// to build again a matrix that was built from that status.
-    void
-    add_to_matrix(const Status          &status,
-                  const double           velocity_factor,
-                  LA::MPI::SparseMatrix &matrix) const override;
-    /// The status whose K_f the matrix of add_to_matrix() and
-    /// update_matrix() holds.
-    const Status &
-    status_in_matrix() const override;
-    /// Bring the K_f held in `matrix` (by add_to_matrix() with the same
-    /// velocity_factor) up to date with the status: only the points that
-    /// changed are touched. Returns the number of points updated over all
-    /// ranks (0: `matrix` is unchanged).
-    unsigned long
-    update_matrix(const double           velocity_factor,
-                  LA::MPI::SparseMatrix &matrix) override;
-    /// dst += (K_f(status_in_matrix()) - K_f(reference)) src: the product
-    /// with the change of the matrix since it held the status `reference`,
-    /// from the cells whose status differs. `ghosted_src` must satisfy the
-    /// constraints (GhostUpdate::distribute()); `dst` has no ghosts.
-    /// Collective.
-    void
-    add_change_product(const Status          &reference,
-                       const double           velocity_factor,
-                       const LA::MPI::Vector &ghosted_src,
-                       LA::MPI::Vector       &dst) const override;
+    /// The contact rule of law(), for the pressure set last: a point comes
+    /// into contact where w_h - e > delta and leaves it where w_h - e <
+    /// -delta, delta = contact_tolerance * max |w_h - e|; inside the band
+    /// it keeps a status.
+    const StatusLaw &
+    status_law() const override;
 
-    /// Whether the springs have a gap (law().has_gap()).
-    bool
-    has_status_load() const override;
-    /// vector += f_g(status) = k int_S e phi_i, the part of the
-    /// foundation's force that does not depend on u, for the pressure
-    /// k (w - e). Call only if has_status_load().
     void
-    add_status_load(const SpringPressure &pressure,
-                    LA::MPI::Vector      &vector) const override;
+    use_pressure(SpringPressure pressure) override;
+
     /// FoundationDiagnostics::gap_work().
     double
     status_load_work(const LA::MPI::Vector &ghosted_u) const override;
+
     /// vector += the force whose work the bed takes without storing it:
     /// the dashpots' c int_S v phi_i, and int_S ([in contact] Gamma (w - g)
     /// - p_s(w - g)) phi_i, the springs' force the solver applies less the
@@ -195,21 +140,33 @@ namespace liftoff
     void
     load(InputArchive &archive) override;
 
+  protected:
+    /// w_h - e at the Gauss points, e of the pressure set last.
+    void
+    point_values(const LA::MPI::Vector &ghosted_u,
+                 std::vector<double>   &values) const override;
+    void
+    add_point_matrices(const PointFactors    &points,
+                       const double           k,
+                       LA::MPI::SparseMatrix &matrix) const override;
+    void
+    add_point_products(const PointFactors    &points,
+                       const double           k,
+                       const LA::MPI::Vector &ghosted_src,
+                       LA::MPI::Vector       &dst) const override;
+    void
+    add_point_loads(const PointFactors                        &points,
+                    const double                               k,
+                    const std::function<double(unsigned int)> &value,
+                    LA::MPI::Vector &dst) const override;
+
   private:
     FoundationPoints points;
     ContactLaw       contact_law;
+    ContactRule      contact_rule{contact_law};
     SpringTerm       term;
-    /// The status of the points, one per point of `points`.
-    std::vector<unsigned char> in_contact;
-    /// Reads `points`, `contact_law` and `in_contact`.
-    FoundationDiagnostics foundation_diagnostics;
-    /// w_h - e at the points, kept between the two passes of a status
-    /// update, and the half-width of the round-off band then.
-    std::vector<double> compression;
-    double              band = 0;
 
-    /// Record a status change of point i for update_matrix().
-    void
-    change_status(const unsigned int i, const unsigned char status);
+    /// Reads `points`, `contact_law` and the status.
+    FoundationDiagnostics foundation_diagnostics;
   };
 } // namespace liftoff

@@ -307,10 +307,10 @@ namespace liftoff
     equilibrate(const unsigned int step,
                 const double       tau,
                 const std::string &what);
-    /// The bed's pressure at the state's velocity (for the contact rule
-    /// and the force balance at a given state).
-    SpringPressure
-    pressure_at_state_velocity();
+    /// Give the bed its pressure at the state's velocity (for the contact
+    /// rule and the force balance at a given state).
+    void
+    use_pressure_at_state_velocity();
     /// dissipative_force = c int_S v phi of the state, plus the springs'
     /// force the foundation energy does not hold
     /// (Bed::add_dissipative_force()).
@@ -370,11 +370,9 @@ namespace liftoff
     EnergyBalance
     energies();
     /// F - K u - K_f(S) u + f_g(S) for the current state u and contact set
-    /// S (f_g: the springs' push on a gap, for `pressure`): the load less
-    /// every term's force. `scratch` is overwritten.
+    /// S (f_g: the springs' push on a gap, for the pressure the bed uses):
+    /// the load less every term's force. `scratch` is overwritten.
     void
-    force_balance(const LA::MPI::Vector &load,
-                  const SpringPressure  &pressure,
-                  LA::MPI::Vector       &balance);
+    force_balance(const LA::MPI::Vector &load, LA::MPI::Vector &balance);
   };
 } // namespace liftoff
