@@ -43,11 +43,22 @@ namespace liftoff
     const bool dissipates =
       std::find(column_names->begin(), column_names->end(), "dissipated_energy")
       != column_names->end();
+    // The terms' energies stand between the kinetic energy and the work;
+    // all but the plate's strain energy are its supports'.
+    const auto at = [&](const std::string &name) {
+      return std::find(column_names->begin(), column_names->end(), name)
+             - column_names->begin();
+    };
+    double supports = 0;
+    for (auto c = at("kinetic") + 1; c < at("work"); ++c)
+      if ((*column_names)[c] != "strain")
+        supports += row[c];
     return {(*this)["kinetic"],
             (*this)["strain"],
-            (*this)["foundation"],
+            supports,
             (*this)["work"],
-            dissipates ? (*this)["dissipated_energy"] : 0.0};
+            dissipates ? (*this)["dissipated_energy"] : 0.0,
+            {}};
   }
 
 

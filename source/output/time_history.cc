@@ -250,9 +250,11 @@ namespace liftoff
     prm.declare_entry("Write energies",
                       "true",
                       Patterns::Bool(),
-                      "Write kinetic, strain and foundation energy, the work "
-                      "of the loads and the balance error to history.csv "
-                      "(costs two matrix-vector products per step).");
+                      "Write the kinetic energy, the energy each term of the "
+                      "system stores (strain, foundation, and on a jointed "
+                      "plate joint_springs and dowels), the work of the "
+                      "loads and the balance error to history.csv (costs "
+                      "two matrix-vector products per step).");
     prm.declare_entry(
       "Write foundation resultant",
       "false",
@@ -513,19 +515,24 @@ namespace liftoff
   void
   TimeHistory::add_energy_columns()
   {
-    using Quantity                            = PhysicalUnits::Quantity;
-    std::vector<HistoryColumns::Column> group = {{"kinetic", Quantity::energy},
-                                                 {"strain", Quantity::energy},
-                                                 {"foundation",
-                                                  Quantity::energy},
-                                                 {"work", Quantity::energy}};
+    using Quantity = PhysicalUnits::Quantity;
+    // Each term's energy under its own name, between the kinetic energy
+    // and the work: HistoryRow::energies() sums them back.
+    std::vector<HistoryColumns::Column> group = {{"kinetic", Quantity::energy}};
+    for (const std::string &name : energy_columns)
+      group.push_back({name, Quantity::energy});
+    group.push_back({"work", Quantity::energy});
     if (write_dissipated)
       group.push_back({"dissipated_energy", Quantity::energy});
     group.push_back({"balance_error", Quantity::energy});
-    const bool dissipated = write_dissipated;
-    columns.add(group, [dissipated](const StepData &step) {
+    const bool         dissipated = write_dissipated;
+    const unsigned int n_terms    = energy_columns.size();
+    columns.add(group, [dissipated, n_terms](const StepData &step) {
       const EnergyBalance &e = step.state.energies;
-      std::vector<double>  values{e.kinetic, e.strain, e.foundation, e.work};
+      std::vector<double>  values{e.kinetic};
+      values.insert(values.end(), e.by_term.begin(), e.by_term.end());
+      values.resize(1 + n_terms, 0.0);
+      values.push_back(e.work);
       if (dissipated)
         values.push_back(e.dissipated);
       values.push_back(e.error(step.state.initial_energies));
@@ -651,6 +658,7 @@ namespace liftoff
   TimeHistory::setup(const SceneView &scene, const std::string &directory)
   {
     const Discretization &disc = scene.discretization;
+    energy_columns             = scene.energy_columns;
     joints.clear();
     for (unsigned int j = 0; j < disc.geometry().slabs().joints().size(); ++j)
       if (!disc.geometry().slabs().joints()[j].tied)

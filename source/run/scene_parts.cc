@@ -1,6 +1,8 @@
 #include <liftoff/base/selection.h>
 #include <liftoff/run/scene_parts.h>
 
+#include <utility>
+
 namespace liftoff
 {
   namespace
@@ -153,6 +155,16 @@ namespace liftoff
   std::vector<SystemTerm *>
   SceneParts::system_terms()
   {
+    std::vector<SystemTerm *> terms;
+    for (const SystemTerm *term : std::as_const(*this).system_terms())
+      terms.push_back(const_cast<SystemTerm *>(term));
+    return terms;
+  }
+
+
+  std::vector<const SystemTerm *>
+  SceneParts::system_terms() const
+  {
     // Only a plate of several slabs has joints to pass forces.
     if (!joint_dowels.sites().empty())
       return {&plate_term, &foundation, &joint_springs, &joint_dowels};
@@ -166,6 +178,9 @@ namespace liftoff
   SceneParts::view(const PhysicalUnits      &units,
                    const ConditionalOStream &notes) const
   {
+    std::vector<std::string> energy_columns;
+    for (const SystemTerm *term : system_terms())
+      energy_columns.push_back(term->energy_column());
     return {plate,
             discretization,
             foundation,
@@ -176,6 +191,7 @@ namespace liftoff
             units,
             clock(),
             dynamic,
+            energy_columns,
             notes};
   }
 

@@ -20,9 +20,10 @@ namespace liftoff
     for (const SystemTerm *term : terms)
       {
         e.kinetic += copies * term->kinetic_energy(motion);
+        e.by_term.push_back(copies * term->energy(state));
         (term->stores() == SystemTerm::Stores::strain ? e.strain
-                                                      : e.foundation) +=
-          copies * term->energy(state);
+                                                      : e.supports) +=
+          e.by_term.back();
       }
     e.work = work;
     return e;

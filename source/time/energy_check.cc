@@ -83,7 +83,7 @@ namespace liftoff
     if (!is_enabled())
       return false;
     const auto stored = [](const EnergyBalance &e) {
-      return e.kinetic + e.strain + e.foundation;
+      return e.kinetic + e.strain + e.supports;
     };
     scale              = std::max({scale,
                                    std::abs(stored(energies)),

@@ -649,7 +649,7 @@ namespace liftoff
   TimeStepper::stored_energy()
   {
     const EnergyBalance e = state_energies();
-    return e.kinetic + e.strain + e.foundation;
+    return e.kinetic + e.strain + e.supports;
   }
 
 
@@ -672,7 +672,7 @@ namespace liftoff
   TimeStepper::energies()
   {
     if (!options.records_energies && !checks_energy())
-      return EnergyBalance{0, 0, 0, state_.work, state_.dissipated};
+      return EnergyBalance{0, 0, 0, state_.work, state_.dissipated, {}};
     return state_energies();
   }
 

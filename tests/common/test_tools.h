@@ -256,7 +256,7 @@ namespace liftoff_tests
         difference     = std::max({difference,
                                    std::abs(ea.kinetic - eb.kinetic),
                                    std::abs(ea.strain - eb.strain),
-                                   std::abs(ea.foundation - eb.foundation),
+                                   std::abs(ea.supports - eb.supports),
                                    std::abs(ea.work - eb.work)});
         scale          = std::max(scale, std::abs(ea.work));
       }

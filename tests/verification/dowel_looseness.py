@@ -11,8 +11,9 @@ passes nothing while |J| <= g and F = C (J - g sign J) beyond; the four
 unknowns then solve a 4 x 4 linear system (written below), and whether
 the dowels engage follows from the free jump p / k against g.
 
-Checked against that solution: each dowel's force (history.csv), w at
-both slabs' centres and at both faces of the joint, for g = 0 (linear
+Checked against that solution: each dowel's force (history.csv) and
+the dowels' energy column (N F^2 / 2C), w at both slabs' centres and at
+both faces of the joint, for g = 0 (linear
 dowels), g below the free jump (engaged with an offset), g above it (all
 slack: the unloaded slab does not move), and the load on the other slab
 (the forces change sign: the other engaged status). The bed's resultant
@@ -120,6 +121,12 @@ def compare(work, name, g, loaded):
     error = np.max(np.abs(forces - force)) / scale
     check(error < 1e-3, f"{name}: dowel forces {forces} against the rigid "
           f"slabs' {force:.6g} each (error {error:.1e})")
+    # The dowels' own energy column: 1/2 C (|J| - g)^2 = F^2 / 2C each.
+    energy = N_DOWELS * force ** 2 / (2 * C)
+    stored = h["strain"][-1] + h["foundation"][-1] + h["dowels"][-1]
+    error = abs(h["dowels"][-1] - energy) / max(energy, 1e-3 * stored)
+    check(error < 3e-3, f"{name}: the dowels' energy {h['dowels'][-1]:.6g} "
+          f"against the rigid slabs' {energy:.6g} (error {error:.1e})")
     load = P * A * B
     error = abs(h["resultant"][-1] - load) / load
     check(error < 1e-6, f"{name}: the bed's resultant equals the load "

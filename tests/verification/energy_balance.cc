@@ -72,7 +72,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
   const auto &row = statics->history().back();
   checks.less(
     "static tensionless: |strain + foundation energy - F.u/2| / (F.u/2)",
-    std::abs(row.energies().strain + row.energies().foundation
+    std::abs(row.energies().strain + row.energies().supports
              - row.energies().work)
       / row.energies().work,
     1e-10);

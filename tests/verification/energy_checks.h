@@ -30,7 +30,7 @@ namespace liftoff_tests
   inline double
   clapeyron_error(const liftoff::HistoryRow &row)
   {
-    return std::abs(row.energies().strain + row.energies().foundation
+    return std::abs(row.energies().strain + row.energies().supports
                     - row.energies().work)
            / row.energies().work;
   }

@@ -51,6 +51,10 @@ def tied_is_monolithic(work):
         LIFTOFF, work, "tied", scene_text(
             DYNAMIC, mesh, load,
             {"Slabs": {"Slabs along x": 2, "Tied joints": "x1"}})))
+    # The tied joint's springs are a term of the system (its energy
+    # column) that holds nothing.
+    check(np.all(two.pop("joint_springs") == 0),
+          "tied: the joint's springs store nothing")
     check(list(one) == list(two), "tied: the same columns")
     # The joint's nodes are there twice, one copy constrained to the other.
     duplicated = 3 * (2 * 8 + 1)

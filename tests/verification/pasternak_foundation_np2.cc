@@ -37,14 +37,14 @@ namespace
                                        a["resultant_x"],
                                        a["resultant_y"],
                                        a["contact_area"],
-                                       a.energies().foundation};
+                                       a.energies().supports};
         const std::vector<double> y = {b["contact_fraction"],
                                        b["max_uplift"],
                                        b["resultant"],
                                        b["resultant_x"],
                                        b["resultant_y"],
                                        b["contact_area"],
-                                       b.energies().foundation};
+                                       b.energies().supports};
         for (unsigned int k = 0; k < x.size(); ++k)
           {
             difference[k] = std::max(difference[k], std::abs(x[k] - y[k]));

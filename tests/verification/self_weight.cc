@@ -70,7 +70,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
                 1e-10);
     checks.less("weight alone: max kinetic energy / strain energy of the "
                 "bed",
-                kinetic / run->history()[0].energies().foundation,
+                kinetic / run->history()[0].energies().supports,
                 1e-20);
     checks.within("weight alone: smallest contact fraction", contact, 1, 1);
   }

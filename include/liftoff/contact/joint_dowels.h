@@ -70,6 +70,11 @@ namespace liftoff
     add_force(const TermState &state, LA::MPI::Vector &force) const override;
     double
     energy(const TermState &state) const override;
+    std::string
+    energy_column() const override
+    {
+      return "dowels";
+    }
 
     /// Its play: slack within g, engaged one way or the other beyond (a
     /// dowel engaged both ways in a union acts without play).

@@ -92,6 +92,11 @@ namespace liftoff
     /// (FoundationDiagnostics::energy()).
     double
     energy(const TermState &state) const override;
+    std::string
+    energy_column() const override
+    {
+      return "foundation";
+    }
 
     /// The law: Gamma, c, G_p, g, and the pressure k (w - e) that the
     /// calls below take for the plate's velocity.

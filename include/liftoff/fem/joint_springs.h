@@ -49,6 +49,11 @@ namespace liftoff
     add_force(const TermState &state, LA::MPI::Vector &force) const override;
     double
     energy(const TermState &state) const override;
+    std::string
+    energy_column() const override
+    {
+      return "joint_springs";
+    }
     /// Each joint's AGG and R that are not 0.
     std::vector<Coupling>
     couplings() const override;

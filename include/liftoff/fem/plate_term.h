@@ -29,6 +29,11 @@ namespace liftoff
     energy(const TermState &state) const override;
     Stores
     stores() const override;
+    std::string
+    energy_column() const override
+    {
+      return "strain";
+    }
     /// 1/2 v.M v, v = state.u.
     double
     kinetic_energy(const TermState &state) const override;

@@ -75,9 +75,14 @@ namespace liftoff
     virtual double
     energy(const TermState &state) const = 0;
 
-    /// Where the energy() it stores is counted: the plate's own strain
-    /// energy, or the energy the plate's supports and couplings store (the
-    /// bed's springs, the joints', the dowels': history.csv's `foundation`).
+    /// The column of history.csv that shows the energy() it stores
+    /// ("strain", "foundation", "joint_springs", "dowels").
+    virtual std::string
+    energy_column() const = 0;
+
+    /// Which sum of the energy balance its energy() joins: the plate's own
+    /// strain energy, or the energy the plate's supports and couplings
+    /// store (the bed's springs, the joints', the dowels').
     enum class Stores
     {
       strain,

@@ -40,6 +40,9 @@ namespace liftoff
     /// The run's clock at step 0, and whether it is a time integration.
     Clock clock;
     bool  dynamic;
+    /// The columns of the energies the system's terms store, in the
+    /// order of EnergyBalance::by_term.
+    std::vector<std::string> energy_columns;
     /// Rank 0's start-up notes (a dropped default, a time not reached).
     const ConditionalOStream &notes;
   };

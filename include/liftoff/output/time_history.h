@@ -169,6 +169,8 @@ namespace liftoff
     add_probe_columns();
     void
     add_energy_columns();
+    /// The names of the terms' energies (SceneView::energy_columns).
+    std::vector<std::string> energy_columns;
     void
     add_resultant_columns();
     void

@@ -95,6 +95,9 @@ namespace liftoff
     bool dynamic = true;
     /// The terms of the plate's system, the plate first: a coupling (a
     /// joint's springs) is one more line here.
+    std::vector<const SystemTerm *>
+    system_terms() const;
+    /// The same list, to be driven.
     std::vector<SystemTerm *>
     system_terms();
   };

@@ -12,39 +12,45 @@ namespace liftoff
   /// Energies of the full plate at one instant, and the work done on it.
   struct EnergyBalance
   {
-    double kinetic    = 0;
+    double kinetic = 0;
+    /// The energy the plate stores, and its supports and couplings (the
+    /// bed's springs, the joints', the dowels'): SystemTerm::stores().
     double strain     = 0;
-    double foundation = 0;
+    double supports   = 0;
     double work       = 0; // of the loads since tau = 0
     double dissipated = 0; // by the foundation's dashpots since tau = 0
+    /// What each term of the system stores, in the term list's order
+    /// (SystemTerm::energy_column() names each); empty where the energies
+    /// were not computed.
+    std::vector<double> by_term;
     /// Total energy minus the initial total minus the work plus what the
     /// dashpots took out: zero for an exactly conservative discrete scheme.
     double
     error(const EnergyBalance &initial) const
     {
-      return kinetic + strain + foundation
-             - (initial.kinetic + initial.strain + initial.foundation) - work
+      return kinetic + strain + supports
+             - (initial.kinetic + initial.strain + initial.supports) - work
              + dissipated;
     }
 
-    /// The five numbers, for checks that treat them alike.
+    /// The five sums, for checks that treat them alike.
     std::vector<double>
     values() const
     {
-      return {kinetic, strain, foundation, work, dissipated};
+      return {kinetic, strain, supports, work, dissipated};
     }
 
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &kinetic &strain &foundation &work &dissipated;
+      archive &kinetic &strain &supports &work &dissipated &by_term;
     }
   };
 
   /// The kinetic energy, the plate's strain energy and the energy its
-  /// supports and couplings store (the foundation column), each the sum of
-  /// the terms' (SystemTerm::kinetic_energy(), stores()), of the state
+  /// supports and couplings store, each the sum of the terms'
+  /// (SystemTerm::kinetic_energy(), stores()), and each term's, of the state
   /// (u, v) of the modelled part times `copies` (the full plate), with the
   /// work `work`. `ghosted_u` is u with ghosts, `product` scratch of u's
   /// layout (collective).
