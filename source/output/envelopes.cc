@@ -1,16 +1,12 @@
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_dgq.h>
-#include <deal.II/numerics/data_out.h>
-
 #include <liftoff/base/archives.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mesh_refinement.h>
 #include <liftoff/output/envelopes.h>
+#include <liftoff/output/point_fields.h>
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/output/scene_view.h>
-#include <liftoff/output/vtu_pieces.h>
 #include <liftoff/time/plate_state.h>
 
 #include <array>
@@ -61,23 +57,43 @@ namespace liftoff
       "false",
       Patterns::Bool(),
       "Keep, at every output point of the field files, the largest and "
-      "smallest w, the largest bed pressure, the largest M_1, the "
-      "smallest M_2 and the largest principal stress at the top face "
-      "(sigma_1_top_max) and at the bed-side face (sigma_1_bottom_max) "
-      "over all steps with the time of each, and write them "
+      "smallest w, the largest bed pressure, the largest M_1 and the "
+      "smallest M_2 over all steps with the time of each, and write them "
       "to envelope.pvtu at the end (and at each checkpoint) and their "
       "extremes over the plate to the summary (costs a pass over the "
       "output points per step). Not with adaptive refinement.");
+    prm.declare_entry(
+      "Write stress envelopes",
+      "false",
+      Patterns::Bool(),
+      "With Write envelopes, also the largest principal stress at the top "
+      "face (sigma_1_top_max) and at the bed-side face (sigma_1_bottom_max) "
+      "at every output point, with their times (costs the face stresses at "
+      "every output point per step).");
   }
 
 
   void
   Envelopes::parse_parameters(ParameterHandler &prm, const SceneView &)
   {
-    enabled = prm.get_bool("Write envelopes");
+    enabled           = prm.get_bool("Write envelopes");
+    const bool stress = prm.get_bool("Write stress envelopes");
+    AssertThrow(enabled || !stress,
+                ExcMessage("Output/Write stress envelopes = true adds the face "
+                           "stresses to the envelopes: it needs Output/Write "
+                           "envelopes = true."));
+    // The face stresses' envelopes are the last of `kinds`.
+    const unsigned int n_kinds = stress ? kinds.size() : kinds.size() - 2;
     envelopes.clear();
-    for (const Kind &kind : kinds)
-      envelopes.push_back({kind.name, {}, {}});
+    for (unsigned int e = 0; e < n_kinds; ++e)
+      envelopes.push_back({kinds[e].name, {}, {}});
+  }
+
+
+  bool
+  Envelopes::needs_face_stresses() const
+  {
+    return enabled && envelopes.size() == kinds.size();
   }
 
 
@@ -123,7 +139,7 @@ namespace liftoff
     const auto &values = step.resultants.values();
     const bool  first  = (n_steps_seen == 0);
     points             = step.resultants.points();
-    for (unsigned int e = 0; e < kinds.size(); ++e)
+    for (unsigned int e = 0; e < envelopes.size(); ++e)
       {
         Envelope &envelope = envelopes[e];
         if (first)
@@ -155,56 +171,19 @@ namespace liftoff
   void
   Envelopes::write() const
   {
-    const Discretization &disc = *discretization;
-    const FE_DGQ<2>       element(disc.element().degree());
-    DoFHandler<2>         point_dofs(disc.triangulation);
-    point_dofs.distribute_dofs(element);
-    // The order of ResultantSweep::points(): this rank's cells, and in each
-    // the support points of FE_DGQ(p), which are the output points.
-    std::vector<LA::MPI::Vector> fields(2 * kinds.size());
-    for (auto &field : fields)
-      field.reinit(point_dofs.locally_owned_dofs(), disc.mpi_communicator);
-    std::vector<types::global_dof_index> indices(element.n_dofs_per_cell());
-    unsigned int                         i = 0;
-    for (const auto &owned : disc.locally_owned_cells())
+    std::vector<PointField> fields;
+    for (unsigned int e = 0; e < envelopes.size(); ++e)
       {
-        const DoFHandler<2>::active_cell_iterator cell(&disc.triangulation,
-                                                       owned->level(),
-                                                       owned->index(),
-                                                       &point_dofs);
-        cell->get_dof_indices(indices);
-        for (const auto index : indices)
-          {
-            for (unsigned int e = 0; e < kinds.size(); ++e)
-              {
-                fields[2 * e][index] = kinds[e].sign * envelopes[e].extreme[i];
-                fields[2 * e + 1][index] = envelopes[e].time[i];
-              }
-            ++i;
-          }
+        std::vector<double> extreme = envelopes[e].extreme;
+        for (double &value : extreme)
+          value *= kinds[e].sign;
+        fields.push_back({kinds[e].name, kinds[e].quantity, extreme});
+        fields.push_back({std::string(kinds[e].name) + "_time",
+                          Quantity::time,
+                          envelopes[e].time});
       }
-    FieldDataOut                                   data_out;
-    std::map<std::string, PhysicalUnits::Quantity> quantities;
-    data_out.attach_dof_handler(point_dofs);
-    for (unsigned int e = 0; e < kinds.size(); ++e)
-      {
-        fields[2 * e].compress(VectorOperation::insert);
-        fields[2 * e + 1].compress(VectorOperation::insert);
-        const std::string name = kinds[e].name;
-        data_out.add_data_vector(fields[2 * e], name);
-        data_out.add_data_vector(fields[2 * e + 1], name + "_time");
-        quantities[name]           = kinds[e].quantity;
-        quantities[name + "_time"] = PhysicalUnits::Quantity::time;
-      }
-    data_out.build_patches(disc.mapping(), element.degree);
-    const double time = units.scale(PhysicalUnits::Quantity::time) * last_time;
-    DataOutBase::VtkFlags flags;
-    flags.time              = time;
-    flags.physical_units    = data_out.put_in_units_of(units, quantities);
-    flags.compression_level = DataOutBase::VtkFlags::best_speed;
-    data_out.set_flags(flags);
-    write_vtu_pieces(
-      directory, data_out, disc.mpi_communicator, time, "envelope", true);
+    write_point_fields(
+      directory, *discretization, fields, units, last_time, "envelope", true);
   }
 
 
@@ -230,7 +209,7 @@ namespace liftoff
   Envelopes::extremes() const
   {
     std::vector<LocatedMaximum> all;
-    for (unsigned int e = 0; e < kinds.size(); ++e)
+    for (unsigned int e = 0; e < envelopes.size(); ++e)
       {
         LocatedMaximum extreme;
         for (unsigned int i = 0; i < points.size(); ++i)
@@ -249,7 +228,13 @@ namespace liftoff
   Envelopes::local_field(const std::string &name) const
   {
     for (unsigned int e = 0; e < kinds.size(); ++e)
-      if (name == kinds[e].name)
+      if (e >= envelopes.size())
+        {
+          // A face stress envelope without Write stress envelopes.
+          if (name.rfind(kinds[e].name, 0) == 0)
+            return {};
+        }
+      else if (name == kinds[e].name)
         {
           std::vector<double> values = envelopes[e].extreme;
           for (double &value : values)
@@ -270,7 +255,7 @@ namespace liftoff
       return;
     RunSummary::Section               section;
     const std::vector<LocatedMaximum> all = extremes();
-    for (unsigned int e = 0; e < kinds.size(); ++e)
+    for (unsigned int e = 0; e < envelopes.size(); ++e)
       {
         const std::string name   = kinds[e].name;
         const double      length = units.scale(Quantity::length);

@@ -1,6 +1,7 @@
 #include <liftoff/output/deflectometer_sensors.h>
 #include <liftoff/output/dowel_forces.h>
 #include <liftoff/output/envelopes.h>
+#include <liftoff/output/fatigue_damage.h>
 #include <liftoff/output/field_output.h>
 #include <liftoff/output/joint_probes.h>
 #include <liftoff/output/joint_profiles.h>
@@ -44,6 +45,7 @@ namespace liftoff
         kind<FieldOutput>(),
         kind<Envelopes>(),
         kind<StressExtremes>(),
+        kind<FatigueDamage>(),
         kind<DeflectometerSensors>(),
         kind<DowelForces>(),
         kind<JointProbes>(),
@@ -82,6 +84,16 @@ namespace liftoff
       output->write_in_units_of(scene.units);
     for (const auto &output : outputs)
       output->add_columns_to(history());
+  }
+
+
+  bool
+  OutputList::needs_face_stresses() const
+  {
+    for (const auto &output : outputs)
+      if (output->needs_face_stresses())
+        return true;
+    return false;
   }
 
 

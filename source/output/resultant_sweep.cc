@@ -53,12 +53,14 @@ namespace liftoff
                                  const Discretization   &discretization,
                                  const ContactLaw       &law,
                                  const LA::MPI::Vector  &ghosted_solution,
-                                 const FreeBendingField &free_bending)
+                                 const FreeBendingField &free_bending,
+                                 const bool              with_faces)
       : plate(plate)
       , discretization(discretization)
       , law(law)
       , solution(ghosted_solution)
       , thermal_bending(free_bending)
+      , with_faces(with_faces)
   {}
 
 
@@ -111,6 +113,7 @@ namespace liftoff
     const bool                    in_order = is_whole_vector_in_order(solution);
     const ArrayView<const double> dofs(dof_values.begin(), dof_values.size());
     StressResultants::PrincipalValues principal;
+    principal.with_faces = with_faces;
     // A plate of one slab keeps a mesh file's material ids.
     const bool is_jointed = disc.geometry().slabs().is_jointed();
     point_list.clear();
@@ -136,8 +139,9 @@ namespace liftoff
             v.m_1      = principal.m_1[k];
             v.m_2      = principal.m_2[k];
             v.shear    = std::hypot(principal.q[k][0], principal.q[k][1]);
-            v.faces    = principal.faces[k];
-            v.slab     = is_jointed ? cell->material_id() : 0;
+            if (with_faces)
+              v.faces = principal.faces[k];
+            v.slab = is_jointed ? cell->material_id() : 0;
             point_list.push_back(x[k]);
             value_list.push_back(v);
           }

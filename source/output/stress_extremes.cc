@@ -84,6 +84,13 @@ namespace liftoff
   }
 
 
+  bool
+  StressExtremes::needs_face_stresses() const
+  {
+    return writes_summary || writes_history;
+  }
+
+
   void
   StressExtremes::add_columns_to(TimeHistory &history) const
   {
@@ -160,8 +167,6 @@ namespace liftoff
   StressExtremes::reduce(const std::vector<LocatedMaximum> &of_slab,
                          const MPI_Comm                     comm)
   {
-    // Slab by slab over the ranks, then over the slabs by LocatedMaximum's
-    // rule; of equal values at one point and time, the first slab.
     Extreme largest;
     for (unsigned int s = 0; s < of_slab.size(); ++s)
       {

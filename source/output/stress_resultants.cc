@@ -344,7 +344,7 @@ namespace liftoff
           for (unsigned int d = 0; d < 2; ++d)
             out.q[q][d] = fields.grad_w[q][d] - fields.psi[q][d];
       }
-    out.faces.resize(n);
+    out.faces.resize(out.with_faces ? n : 0);
     const double              nu        = plate.poisson_ratio;
     const SectionCoefficients section   = plate.section(cell->material_id());
     const double              bending   = -section.bending;
@@ -359,19 +359,21 @@ namespace liftoff
         out.m_2[q] = m.second;
         for (unsigned int d = 0; d < 2; ++d)
           out.q[q][d] = section.shear * out.q[q][d];
+        // The thermal stress of a face is wanted with the faces only; its
+        // curvature always.
+        FreeBending thermal;
         if (free_bending)
           {
-            const FreeBending thermal =
-              in_section(free_bending(fields.points()[q]), section);
+            thermal = in_section(free_bending(fields.points()[q]), section);
             const double free = free_moment(thermal, nu);
             out.m_1[q] += free;
             out.m_2[q] += free;
-            out.faces[q] =
-              face_stresses(out.m_1[q], out.m_2[q], to_stress, &thermal);
           }
-        else
-          out.faces[q] =
-            face_stresses(out.m_1[q], out.m_2[q], to_stress, nullptr);
+        if (out.with_faces)
+          out.faces[q] = face_stresses(out.m_1[q],
+                                       out.m_2[q],
+                                       to_stress,
+                                       free_bending ? &thermal : nullptr);
       }
   }
 

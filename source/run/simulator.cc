@@ -260,8 +260,8 @@ namespace liftoff
                                     parts.discretization,
                                     parts.foundation.law(),
                                     state.ghosted_u,
-                                    parts.loads.free_bending(
-                                      state.clock.tau()));
+                                    parts.loads.free_bending(state.clock.tau()),
+                                    outputs.needs_face_stresses());
     const SceneView      scene = scene_view();
     const StepData       step{state,
                         scene,

@@ -15,6 +15,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <liftoff/output/envelopes.h>
+#include <liftoff/output/fatigue_damage.h>
 
 #include "test_tools.h"
 
@@ -104,6 +105,9 @@ LIFTOFF_TEST_MAIN(argc, argv)
                                + set("Mesh refinement/Initial refinements", 1);
   const std::string envelopes =
     set("Output/Write envelopes", "true")
+    + set("Output/Write stress envelopes", "true")
+    + set("Output/Fatigue damage/Enable", "true")
+    + set("Output/Fatigue damage/Modulus of rupture", 30)
     + set("Output/Write moment extremes", "true")
     + set("Output/Write stress extremes", "true")
     + set("Output/Write stress history", "true")
@@ -214,6 +218,24 @@ LIFTOFF_TEST_MAIN(argc, argv)
                 != resumed->get_envelopes().local_field(field + suffix);
           checks.less(name + ": envelope fields that differ" + ranks,
                       differing_envelope,
+                      0.5);
+          if (options.find("Fatigue damage") == std::string::npos)
+            continue;
+          // The rainflow residues and Miner's sums come from the checkpoint.
+          using Damage         = liftoff::FatigueDamage;
+          const auto damage_of = [](const Simulator   &run,
+                                    const Damage::Face f) {
+            return run.get_output<Damage>().local_field(f);
+          };
+          double largest_damage = 0;
+          for (const double d : damage_of(*reference, Damage::bottom))
+            largest_damage = std::max(largest_damage, d);
+          checks.less(name + ": fatigue damage fields that differ" + ranks,
+                      (damage_of(*reference, Damage::top)
+                       != damage_of(*resumed, Damage::top))
+                        + (damage_of(*reference, Damage::bottom)
+                           != damage_of(*resumed, Damage::bottom))
+                        + (largest_damage == 0),
                       0.5);
         }
       else

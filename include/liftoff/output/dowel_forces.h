@@ -9,6 +9,7 @@
 
 namespace liftoff
 {
+  class JointDowels;
   class TimeHistory;
 
   /// The dowels' forces at ghosted_u as points of a field file, stem.vtu

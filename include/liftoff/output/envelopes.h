@@ -21,10 +21,10 @@ namespace liftoff
   /**
    * What design reads off a dynamic run: at every output point of the field
    * files, the largest and smallest deflection, the largest bed pressure,
-   * the largest M_1, the smallest M_2 and the largest principal stress of
-   * each face (sigma_1_top_max, sigma_1_bottom_max) over all steps, each
-   * with the time
-   * at which it occurred. Written as envelope.pvtu (and its pieces) at the
+   * the largest M_1, the smallest M_2 and, with `Write stress envelopes`,
+   * the largest principal stress of each face (sigma_1_top_max,
+   * sigma_1_bottom_max) over all steps, each with the time at which it
+   * occurred. Written as envelope.pvtu (and its pieces) at the
    * end of the run and whenever the outputs are flushed (a checkpoint, a
    * failure), and as the extremes over the plate in the summary. A
    * checkpoint keeps them, so a resumed run's envelope is the uninterrupted
@@ -41,6 +41,10 @@ namespace liftoff
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
+
+    /// With the face stresses' envelopes.
+    bool
+    needs_face_stresses() const override;
 
     /// Refuses envelopes on a mesh that adapts.
     void
@@ -64,7 +68,8 @@ namespace liftoff
     load(InputArchive &archive) override;
 
     /// The names of the envelopes: w_max, w_min, foundation_pressure_max,
-    /// M_1_max, M_2_min, sigma_1_top_max, sigma_1_bottom_max.
+    /// M_1_max, M_2_min, sigma_1_top_max, sigma_1_bottom_max (the last two
+    /// kept with Write stress envelopes only).
     static std::vector<std::string>
     names();
 
@@ -74,7 +79,8 @@ namespace liftoff
     extremes() const;
 
     /// This rank's values of the envelope `name` (or, for `name`_time, the
-    /// times), one per output point in the order of its cells.
+    /// times), one per output point in the order of its cells; empty for
+    /// an envelope the run does not keep.
     std::vector<double>
     local_field(const std::string &name) const;
 

@@ -32,7 +32,7 @@ namespace liftoff
     const SceneView       &scene;
     const ActiveSetResult &iteration;
     /// The resultants at the output points, computed by the first output
-    /// that reads them.
+    /// that reads them (the face stresses only if an output needs them).
     const ResultantSweep &resultants;
     /// Share of the plate in contact (computed once for all outputs: it is
     /// a collective sum).
@@ -74,6 +74,15 @@ namespace liftoff
     warning() const
     {
       return {};
+    }
+
+    /// Whether it reads the face stresses of the step's ResultantSweep
+    /// (after parse_parameters()): the sweep computes them for the run only
+    /// if an output does.
+    virtual bool
+    needs_face_stresses() const
+    {
+      return false;
     }
 
     /// Its columns of history.csv, if it has any (TimeHistory::add_columns).

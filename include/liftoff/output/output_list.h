@@ -35,6 +35,9 @@ namespace liftoff
     /// writes in the scene's units and adds its columns to the history.
     void
     parse_parameters(ParameterHandler &prm, const SceneView &scene);
+    /// Whether any output reads the face stresses of the sweep.
+    bool
+    needs_face_stresses() const;
     /// The outputs' checks against the scene, in the list's order.
     void
     check(const SceneView &scene) const;

@@ -43,19 +43,22 @@ namespace liftoff
       double m_2      = 0;
       double shear    = 0;
       /// The largest principal stress of each face (StressResultants'
-      /// sigma_1_top, sigma_1_bottom).
+      /// sigma_1_top, sigma_1_bottom); 0 unless the sweep computes them.
       FaceStresses faces;
       /// The slab of the point's cell (0, 1, ...; 0 on a plate of one).
       unsigned int slab = 0;
     };
 
     /// `free_bending`: the temperature loads' at the step's time (empty:
-    /// none), which every output's StressResultants take from here.
+    /// none), which every output's StressResultants take from here. The
+    /// face stresses are computed `with_faces` only: an output reads them
+    /// (OutputList::needs_face_stresses()).
     ResultantSweep(const MindlinPlate     &plate,
                    const Discretization   &discretization,
                    const ContactLaw       &law,
                    const LA::MPI::Vector  &ghosted_solution,
-                   const FreeBendingField &free_bending = {});
+                   const FreeBendingField &free_bending = {},
+                   const bool              with_faces   = true);
 
     const FreeBendingField &
     free_bending() const;
@@ -74,6 +77,7 @@ namespace liftoff
     const ContactLaw             &law;
     const LA::MPI::Vector        &solution;
     const FreeBendingField        thermal_bending;
+    const bool                    with_faces;
     mutable std::vector<Point<2>> point_list;
     mutable std::vector<Values>   value_list;
     mutable bool                  is_computed = false;

@@ -54,6 +54,8 @@ namespace liftoff
     parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
     void
     write_in_units_of(const PhysicalUnits &scene_units) override;
+    bool
+    needs_face_stresses() const override;
     /// The step's largest per face (Write stress history).
     void
     add_columns_to(TimeHistory &history) const override;
@@ -79,6 +81,12 @@ namespace liftoff
     Extreme
     largest(const Face face) const;
 
+    /// The largest of one face's maxima over slabs and ranks (collective):
+    /// slab by slab over the ranks, then over the slabs by LocatedMaximum's
+    /// rule; of equal values at one point and time, the first slab.
+    static Extreme
+    reduce(const std::vector<LocatedMaximum> &of_slab, const MPI_Comm comm);
+
   private:
     /// Per face, per slab: the largest this rank has met.
     using Maxima = std::array<std::vector<LocatedMaximum>, 2>;
@@ -93,8 +101,5 @@ namespace liftoff
     /// The step's values at this rank's output points into `maxima`.
     static void
     consider_step(const StepData &step, Maxima &maxima);
-    /// The largest of one face's maxima over slabs and ranks (collective).
-    static Extreme
-    reduce(const std::vector<LocatedMaximum> &of_slab, const MPI_Comm comm);
   };
 } // namespace liftoff

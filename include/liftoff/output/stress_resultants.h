@@ -107,8 +107,9 @@ namespace liftoff
       std::vector<double>       m_1, m_2;
       std::vector<Tensor<1, 2>> q;
       /// The largest principal stress of each face (sigma_1_top,
-      /// sigma_1_bottom).
+      /// sigma_1_bottom), computed `with_faces` only.
       std::vector<FaceStresses> faces;
+      bool                      with_faces = true;
     };
     void
     principal(const DoFHandler<2>::active_cell_iterator &cell,

@@ -45,7 +45,7 @@ namespace liftoff
     /// checkpoint of another layout is refused by its number rather than
     /// misread. A new history column needs none: TimeHistory keeps its
     /// column names and refuses a checkpoint of other columns by name.
-    static constexpr unsigned int format = 20;
+    static constexpr unsigned int format = 21;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -84,6 +84,13 @@ namespace liftoff
     /// The envelopes (Output/Write envelopes).
     const Envelopes &
     get_envelopes() const;
+    /// The output of class T (tests read their results).
+    template <class T>
+    const T &
+    get_output() const
+    {
+      return outputs.get<T>();
+    }
     const LA::MPI::Vector &
     solution() const;
     /// The foundation pressure Gamma (w - g) + c v at the Gauss points of
