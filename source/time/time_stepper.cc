@@ -247,12 +247,12 @@ namespace liftoff
     if (newmark.is_conditionally_stable() && options.is_dynamic)
       return "Newmark's method with Beta = " + format_number(newmark.beta)
              + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
-             + " is stable only for Time step <= about "
+             + " is stable only for steps up to about dtau = "
              + format_number(stable_time_step())
              + " (an estimate from below of omega_max); Time integration/Time "
-               "step = "
+               "step = <"
              + format_number(state_.clock.time_step())
-             + " is too large for it.";
+             + "> is too large for it.";
     return "the values overflow the range of double: the largest load "
            "entry is "
            + format_number(load.linfty_norm())
@@ -332,13 +332,13 @@ namespace liftoff
     const double omega = bed.law().rigid_body_frequency();
     if (state_.clock.time_step() * omega > 1)
       causes.push_back(
-        "Time integration/Time step = "
+        "Time integration/Time step = <"
         + format_number(state_.clock.time_step())
-        + " is long for the bed: the plate swings on it at "
+        + "> is long for the bed: the plate swings on it at "
           "sqrt(Gamma) = "
         + format_number(omega) + ", so Time step * sqrt(Gamma) = "
         + format_number(state_.clock.time_step() * omega)
-        + " > 1; use a Time step below " + format_number(1 / omega));
+        + " > 1; use a step below dtau = " + format_number(1 / omega));
     const double tolerance = active_set.linear_solver().relative_tolerance();
     if (tolerance > 1e-8)
       causes.push_back("Linear solver/Tolerance = " + format_number(tolerance)
