@@ -745,6 +745,8 @@ namespace liftoff
   std::string
   PhysicalUnits::in_scene_terms(std::string message) const
   {
+    if (!is_physical())
+      return message;
     const auto replace = [&](const std::string &from, const std::string &to) {
       message = Utilities::replace_in_string(message, from, to);
     };

@@ -141,7 +141,10 @@ namespace liftoff
       parts.for_stepper(),
       TimeStepper::Options{parts.is_dynamic(),
                            outputs.history().wants_energies(),
-                           parts.clock()},
+                           parts.clock(),
+                           [this](const std::string &message) {
+                             return units.in_scene_terms(message);
+                           }},
       timer);
     stepper->setup();
     parts.check_not_trivial();

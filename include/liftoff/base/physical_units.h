@@ -102,6 +102,15 @@ namespace liftoff
     void
     explain_run_errors_of(const std::function<void()> &run) const;
 
+    /// `message`, an error or a warning of a run of solver_scene(), in the
+    /// scene's terms: in an SI scene an entry quoted as the user wrote it,
+    /// a time and a step (tau = X, dtau = X) in seconds, each group it
+    /// names with the entries of Units and their values that give it, a
+    /// time scale beyond what the solver integrates named. A dimensionless
+    /// scene's as it is.
+    std::string
+    in_scene_terms(std::string message) const;
+
     /// used_parameters.prm: `scene_text` (the scene as written), and for
     /// an SI scene its dimensionless twin after it as comments.
     std::string
@@ -178,12 +187,6 @@ namespace liftoff
     bool
     is_set(const std::string &path) const;
 
-    /// `message`, an error of the twin, in the SI scene's terms: an entry
-    /// quoted as the user wrote it, each group it names with the entries
-    /// of Units and their values that give it, a time scale beyond what
-    /// the solver integrates named.
-    std::string
-    in_scene_terms(std::string message) const;
     /// `message` with each number quoted as <value> that rounds an
     /// entry's twin value replaced by the value the scene wrote.
     std::string
