@@ -292,7 +292,7 @@ namespace
       liftoff::Simulator       simulator(comm, true, !command.quiet);
       try
         {
-          liftoff::Simulator::declare_parameters(prm);
+          simulator.declare_scene(prm);
           read_scene(scene_name, comm).parse_into(prm, scene_name);
           simulator.parse_parameters(prm);
           prm.enter_subsection("Mesh refinement");

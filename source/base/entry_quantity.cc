@@ -20,31 +20,112 @@ namespace liftoff
   } // namespace
 
 
-  const std::vector<std::string> &
-  quantity_names()
+  namespace
   {
-    static const std::vector<std::string> names = {"number",
-                                                   "text",
-                                                   "length",
-                                                   "position",
-                                                   "deflection",
-                                                   "rotation",
-                                                   "time",
-                                                   "force",
-                                                   "pressure",
-                                                   "force per length",
-                                                   "velocity",
-                                                   "angular velocity",
-                                                   "mu",
-                                                   "Delta",
-                                                   "Gamma",
-                                                   "damping",
-                                                   "shear layer",
-                                                   "self weight",
-                                                   "temperature difference",
-                                                   "thermal expansion",
-                                                   "pressure per length"};
-    return names;
+    // The one table of the quantities: each with its name, its SI unit and
+    // the dimensionless scales of doc/model.md it is made of. The SI value
+    // of one unit depends on the scene (PhysicalUnits::scale()).
+    struct Spelling
+    {
+      Quantity    quantity;
+      std::string name, si_symbol, scales;
+    };
+    const std::vector<Spelling> &
+    spellings()
+    {
+      // Built at its first use: entries may be declared while statics are
+      // being initialised.
+      static const std::vector<Spelling> table = {
+        {Quantity::number, "number", "1", "1"},
+        {Quantity::text, "text", "", ""},
+        {Quantity::length, "length", "m", "L"},
+        {Quantity::position, "position", "m", "L"},
+        {Quantity::deflection, "deflection", "m", "F0*L^2/D"},
+        {Quantity::rotation, "rotation", "rad", "F0*L/D"},
+        {Quantity::time, "time", "s", "t0"},
+        {Quantity::force, "force", "N", "F0"},
+        {Quantity::pressure, "pressure", "Pa", "F0/L^2"},
+        {Quantity::force_per_length, "force per length", "N/m", "F0/L"},
+        {Quantity::pressure_per_length,
+         "pressure per length",
+         "Pa/m",
+         "F0/L^3"},
+        {Quantity::velocity, "velocity", "m/s", "F0*L^2/(D*t0)"},
+        {Quantity::angular_velocity,
+         "angular velocity",
+         "rad/s",
+         "F0*L/(D*t0)"},
+        {Quantity::area, "area", "m^2", "L^2"},
+        {Quantity::energy, "energy", "J", "F0^2*L^2/D"},
+        {Quantity::moment, "moment per length", "N m/m", "F0"},
+        {Quantity::angle_degrees, "angle in degrees", "degree", "degree"},
+        {Quantity::temperature_difference, "temperature difference", "K", "K"},
+        {Quantity::thermal_expansion, "thermal expansion", "1/K", "F0*L/(D*K)"},
+        {Quantity::mu, "mu", "1", "mu"},
+        {Quantity::Delta, "Delta", "1", "Delta"},
+        {Quantity::Gamma, "Gamma", "1", "Gamma"},
+        {Quantity::damping, "damping", "1", "damping"},
+        {Quantity::shear_layer, "shear layer", "1", "shear layer"},
+        {Quantity::self_weight, "self weight", "1", "self weight"}};
+      return table;
+    }
+
+    const Spelling &
+    spelling_of(const Quantity quantity)
+    {
+      const auto s = std::find_if(spellings().begin(),
+                                  spellings().end(),
+                                  [quantity](const Spelling &s) {
+                                    return s.quantity == quantity;
+                                  });
+      Assert(s != spellings().end(), ExcInternalError());
+      return *s;
+    }
+  } // namespace
+
+
+  const std::string &
+  name_of(const Quantity quantity)
+  {
+    return spelling_of(quantity).name;
+  }
+
+
+  const std::string &
+  si_symbol(const Quantity quantity)
+  {
+    return spelling_of(quantity).si_symbol;
+  }
+
+
+  const std::string &
+  dimensionless_scales(const Quantity quantity)
+  {
+    return spelling_of(quantity).scales;
+  }
+
+
+  bool
+  is_group(const Quantity quantity)
+  {
+    return quantity >= Quantity::mu;
+  }
+
+
+  Quantity
+  quantity_named(const std::string &name)
+  {
+    const auto s =
+      std::find_if(spellings().begin(),
+                   spellings().end(),
+                   [&name](const Spelling &s) { return s.name == name; });
+    std::string known;
+    for (const Spelling &each : spellings())
+      known += (known.empty() ? "" : ", ") + each.name;
+    AssertThrow(s != spellings().end(),
+                ExcMessage("An entry is declared with the quantity <" + name
+                           + ">, which is none of " + known + "."));
+    return s->quantity;
   }
 
 
@@ -52,16 +133,12 @@ namespace liftoff
   quantity(const std::string &names)
   {
     const std::string tag = " " + tag_start + names + "]";
-    for (const std::string &name : declared_quantities(tag))
-      AssertThrow(
-        std::count(quantity_names().begin(), quantity_names().end(), name) == 1,
-        ExcMessage("An entry is declared with the quantity <" + name
-                   + ">, which is none of quantity_names()."));
+    declared_quantities(tag);
     return tag;
   }
 
 
-  std::vector<std::string>
+  std::vector<Quantity>
   declared_quantities(const std::string &documentation)
   {
     const auto start = documentation.rfind(tag_start);
@@ -74,7 +151,10 @@ namespace liftoff
         && names.compare(names.size() - if_set.size(), if_set.size(), if_set)
              == 0)
       names.resize(names.size() - if_set.size());
-    return Utilities::split_string_list(names, ',');
+    std::vector<Quantity> quantities;
+    for (const std::string &name : Utilities::split_string_list(names, ','))
+      quantities.push_back(quantity_named(name));
+    return quantities;
   }
 
 

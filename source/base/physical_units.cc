@@ -61,85 +61,44 @@ namespace liftoff
 
 
     using System                         = PhysicalUnits::System;
+    using Quantity                       = PhysicalUnits::Quantity;
     const Selection<System> system_names = {{"dimensionless",
                                              System::dimensionless},
                                             {"SI", System::si}};
 
-    // The dimensionless groups an SI scene gives by the entries of Units,
-    // by the names their owners declare them with (entry_quantity.h): the
-    // entries that give each, which a scene must not set beside the group,
-    // and the formula that errors of the group's range quote.
+    // The dimensionless groups an SI scene gives by the entries of Units:
+    // the entries that give each, which a scene must not set beside the
+    // group, and the formula that errors of the group's range quote.
     struct GroupSource
     {
       std::string physical, formula;
     };
-    const std::map<std::string, GroupSource> group_sources = {
-      {"mu", {"Units/Width", "Units/Width / Length"}},
-      {"Delta", {"Units/Thickness", "Units/Thickness / Units/Length"}},
-      {"Gamma", {"Units/Subgrade modulus", "Units/Subgrade modulus k L^4 / D"}},
-      {"damping",
+    const std::map<Quantity, GroupSource> group_sources = {
+      {Quantity::mu, {"Units/Width", "Units/Width / Length"}},
+      {Quantity::Delta, {"Units/Thickness", "Units/Thickness / Units/Length"}},
+      {Quantity::Gamma,
+       {"Units/Subgrade modulus", "Units/Subgrade modulus k L^4 / D"}},
+      {Quantity::damping,
        {"Units/Dashpot coefficient",
         "Units/Dashpot coefficient C L^2 / sqrt(rho H D)"}},
-      {"shear layer",
+      {Quantity::shear_layer,
        {"Units/Shear layer modulus", "Units/Shear layer modulus G_f L^2 / D"}},
-      {"self weight",
+      {Quantity::self_weight,
        {"Units/Density and Units/Gravity",
         "Units/Density * Gravity * Thickness"}}};
 
-    /**
-     * How often each watched entry of a ParameterHandler was given a value:
-     * ParameterHandler keeps only the value, and a group set to its
-     * default beside the physical entry that replaces it is a mix all the
-     * same. An action counts (ParameterHandler runs it once with the
-     * default when it is added, then at every set). Keyed by the handler's
-     * address: a handler declared later at the same address replaces the
-     * counters.
-     */
-    std::map<const ParameterHandler *,
-             std::map<std::string, std::shared_ptr<unsigned int>>> &
-    set_counts()
-    {
-      static std::map<const ParameterHandler *,
-                      std::map<std::string, std::shared_ptr<unsigned int>>>
-        counts;
-      return counts;
-    }
-
-    void
-    watch(ParameterHandler &prm, const std::string &path)
-    {
-      const std::vector<std::string> names =
-        Utilities::split_string_list(path, '/');
-      for (unsigned int k = 0; k + 1 < names.size(); ++k)
-        prm.enter_subsection(names[k]);
-      auto count               = std::make_shared<unsigned int>(0);
-      set_counts()[&prm][path] = count;
-      prm.add_action(names.back(), [count](const std::string &) { ++*count; });
-      for (unsigned int k = 0; k + 1 < names.size(); ++k)
-        prm.leave_subsection();
-    }
-
-    // Whether the scene gave `path` a value (watched entries only).
-    bool
-    is_set(const ParameterHandler &prm, const std::string &path)
-    {
-      return *set_counts().at(&prm).at(path) > 1;
-    }
-
     using Entry = DeclaredEntry;
 
-    // The groups an SI scene must not set, and the entries whose default
-    // stays dimensionless (a disc's radius L / 2) unless the scene sets
-    // them, by the quantity their owners declared.
-    void
-    watch_declared(ParameterHandler &prm)
+    // Whether the scene must be watched for setting `entry`: a group an SI
+    // scene must not set, or an entry whose default stays dimensionless (a
+    // disc's radius L / 2) unless the scene sets it.
+    bool
+    is_watched(const Entry &entry)
     {
-      for (const auto &[path, entry] : declared_entries(prm))
-        if (const auto quantities = declared_quantities(entry.documentation);
-            !quantities.empty()
-            && (group_sources.count(quantities[0]) == 1
-                || converts_only_if_set(entry.documentation)))
-          watch(prm, path);
+      const auto quantities = declared_quantities(entry.documentation);
+      return !quantities.empty()
+             && (is_group(quantities[0])
+                 || converts_only_if_set(entry.documentation));
     }
 
     // Sets `path` of `prm` to `value`, which the scene gave as `written`; a
@@ -223,12 +182,12 @@ namespace liftoff
      */
     struct SceneConverter
     {
-      std::map<std::string, Entry>  entries;
-      const ParameterHandler       &scene;
-      ParameterHandler             &out;
-      double                        length, width, t0;
-      bool                          is_rectangle;
-      std::map<std::string, double> units;
+      std::map<std::string, Entry>             entries;
+      std::function<bool(const std::string &)> is_set;
+      ParameterHandler                        &out;
+      double                                   length, width, t0;
+      bool                                     is_rectangle;
+      std::map<Quantity, double>               units;
 
       // x, y [m] and t [s] of `si` as the solver's x, y and tau.
       std::string
@@ -300,11 +259,11 @@ namespace liftoff
       std::string
       converted_item(const std::string   &path,
                      const std::string   &item,
-                     const std::string   &unit,
+                     const Quantity       unit,
                      std::vector<double> &point,
                      std::string         &point_text) const
       {
-        if (unit == "text" || item.empty())
+        if (unit == Quantity::text || item.empty())
           return item;
         // A number labelled by a name (Slabs/Dowels/Positions: x1: 0.5);
         // not muParser's a ? b : c.
@@ -323,7 +282,7 @@ namespace liftoff
         if (Patterns::Double().match(item))
           {
             const double x = Utilities::string_to_double(item);
-            if (unit == "position")
+            if (unit == Quantity::position)
               {
                 point.push_back(x);
                 point_text += (point_text.empty() ? "" : ", ") + item;
@@ -334,7 +293,7 @@ namespace liftoff
               }
             return format_exact(x / scale);
           }
-        if (unit == "position" && item.find('(') != std::string::npos)
+        if (unit == Quantity::position && item.find('(') != std::string::npos)
           return named_point(path, item);
         // tau is refused even where the expression is not one in x, y, t.
         static const std::regex tau(R"(\btau\b)");
@@ -354,7 +313,7 @@ namespace liftoff
       std::string
       converted(const std::string &path, const Entry &entry) const
       {
-        const std::vector<std::string> quantities =
+        const std::vector<Quantity> quantities =
           declared_quantities(entry.documentation);
         std::string         result, point_text;
         std::vector<double> point;
@@ -373,17 +332,16 @@ namespace liftoff
       /// each entry it changed (by its path, the scene's value and the
       /// twin's), `group_entries` the group of each group entry.
       void
-      convert_all(const std::map<std::string, double>             &groups,
+      convert_all(const std::map<Quantity, double>                &groups,
                   std::map<std::string, PhysicalUnits::Converted> &changed,
-                  std::map<std::string, std::string> &group_entries) const
+                  std::map<std::string, Quantity> &group_entries) const
       {
         for (const auto &[path, entry] : entries)
           {
             const auto quantities = declared_quantities(entry.documentation);
             if (quantities.empty()
-                || quantities == std::vector<std::string>{"text"}
-                || (converts_only_if_set(entry.documentation)
-                    && !is_set(scene, path)))
+                || quantities == std::vector<Quantity>{Quantity::text}
+                || (converts_only_if_set(entry.documentation) && !is_set(path)))
               continue;
             std::string twin;
             if (const auto group = groups.find(quantities[0]);
@@ -440,15 +398,13 @@ namespace liftoff
       "Damping, Shear modulus and Loads/Self weight are then given by the "
       "entries of Units and must not be set. Results are written in SI "
       "units (doc/model.md, \"Scenes in SI units\").");
-    std::vector<std::string> physical;
-    const auto               declare = [&](const std::string &name,
+    const auto declare = [&](const std::string &name,
                              const std::string &default_value,
                              const std::string &documentation) {
       prm.declare_entry(name,
                         default_value,
                         Patterns::Double(0.0, 1e100),
                         documentation);
-      physical.push_back("Units/" + name);
     };
     declare("Length", "0", "SI: L, the plate (a mesh file) along x [m].");
     declare("Width", "0", "SI: the rectangle along y [m]; 0: = Length.");
@@ -473,9 +429,35 @@ namespace liftoff
             "SI: G_f of a Pasternak shear layer, its shear force per unit "
             "length and unit slope [N/m]; 0: none.");
     prm.leave_subsection();
-    for (const std::string &path : physical)
-      watch(prm, path);
-    watch_declared(prm);
+  }
+
+
+  void
+  PhysicalUnits::watch(ParameterHandler &scene)
+  {
+    set_counts.clear();
+    for (const auto &[path, entry] : declared_entries(scene))
+      if ((path.rfind("Units/", 0) == 0 && path != "Units/System")
+          || is_watched(entry))
+        {
+          const std::vector<std::string> names =
+            Utilities::split_string_list(path, '/');
+          for (unsigned int k = 0; k + 1 < names.size(); ++k)
+            scene.enter_subsection(names[k]);
+          auto count       = std::make_shared<unsigned int>(0);
+          set_counts[path] = count;
+          scene.add_action(names.back(),
+                           [count](const std::string &) { ++*count; });
+          for (unsigned int k = 0; k + 1 < names.size(); ++k)
+            scene.leave_subsection();
+        }
+  }
+
+
+  bool
+  PhysicalUnits::is_set(const std::string &path) const
+  {
+    return *set_counts.at(path) > 1;
   }
 
 
@@ -499,11 +481,14 @@ namespace liftoff
     scene.leave_subsection();
     poisson_ratio = outline.poisson_ratio;
     is_rectangle  = outline.is_rectangle;
+    AssertThrow(!set_counts.empty(),
+                ExcMessage("PhysicalUnits::watch() must see the scene's "
+                           "handler before the scene is read into it."));
 
     if (system == System::dimensionless)
       {
-        for (const auto &[path, count] : set_counts().at(&scene))
-          AssertThrow(path.rfind("Units/", 0) != 0 || !is_set(scene, path),
+        for (const auto &[path, count] : set_counts)
+          AssertThrow(path.rfind("Units/", 0) != 0 || !is_set(path),
                       ExcMessage(path
                                  + " is an entry of a scene in SI "
                                    "units, but Units/System = "
@@ -514,15 +499,15 @@ namespace liftoff
       }
     for (const auto &[path, entry] : declared_entries(scene))
       if (const auto quantities = declared_quantities(entry.documentation);
-          !quantities.empty() && group_sources.count(quantities[0]) == 1)
-        AssertThrow(!is_set(scene, path),
+          !quantities.empty() && is_group(quantities[0]))
+        AssertThrow(!is_set(path),
                     ExcMessage(path
                                + " is a dimensionless group, which a scene "
                                  "with Units/System = SI gives by "
                                + group_sources.at(quantities[0]).physical
                                + ": leave " + path
                                + " out (or write the scene dimensionless)."));
-    check_physical_values(scene, outline);
+    check_physical_values(outline);
 
     bending_stiffness = youngs_modulus * std::pow(thickness, 3)
                         / (12 * (1 - poisson_ratio * poisson_ratio));
@@ -534,8 +519,7 @@ namespace liftoff
 
 
   void
-  PhysicalUnits::check_physical_values(ParameterHandler   &scene,
-                                       const SceneOutline &outline) const
+  PhysicalUnits::check_physical_values(const SceneOutline &outline) const
   {
     for (const auto &[name, value] :
          std::vector<std::pair<std::string, double>>{{"Length", length},
@@ -559,7 +543,7 @@ namespace liftoff
                              + ") in a scene with Units/System = SI and "
                              + reason + "."));
     for (const auto &[name, message] : outline.refused)
-      AssertThrow(!is_set(scene, "Units/" + name), ExcMessage(message));
+      AssertThrow(!is_set("Units/" + name), ExcMessage(message));
   }
 
 
@@ -623,44 +607,52 @@ namespace liftoff
     std::stringstream text;
     scene.print_parameters(text, ParameterHandler::ShortPRM);
     dimensionless.parse_input(text, "the scene");
-    const double         w = scale(Quantity::deflection);
-    const SceneConverter convert{
-      declared_entries(scene),
-      scene,
-      dimensionless,
-      length,
-      width,
-      t0,
-      is_rectangle,
-      {{"number", 1},
-       {"position", length},
-       {"length", length},
-       {"deflection", w},
-       {"rotation", w / length},
-       {"time", t0},
-       {"force", scale(Quantity::force)},
-       {"pressure", scale(Quantity::pressure)},
-       {"force per length", scale(Quantity::shear_force)},
-       {"velocity", w / t0},
-       {"angular velocity", w / (length * t0)},
-       {"temperature difference", 1},
-       {"thermal expansion", w / length},
-       {"pressure per length", scale(Quantity::pressure) / length}}};
+    std::map<Quantity, double> units, groups;
+    for (auto q = Quantity::number; q <= Quantity::self_weight;
+         q      = static_cast<Quantity>(static_cast<int>(q) + 1))
+      if (is_group(q))
+        groups[q] = group_value(q);
+      else if (q != Quantity::text)
+        units[q] = si_scale(q);
+    const SceneConverter convert{declared_entries(scene),
+                                 [this](const std::string &path) {
+                                   return is_set(path);
+                                 },
+                                 dimensionless,
+                                 length,
+                                 width,
+                                 t0,
+                                 is_rectangle,
+                                 units};
     twin_values.clear();
     group_entries.clear();
-    convert.convert_all(
-      {{"mu", width / length},
-       {"Delta", thickness / length},
-       {"Gamma", subgrade_modulus * std::pow(length, 4) / bending_stiffness},
-       {"damping",
-        dashpot * length * length
-          / std::sqrt(density * thickness * bending_stiffness)},
-       {"shear layer", shear_layer * length * length / bending_stiffness},
-       {"self weight",
-        density * gravity * thickness / scale(Quantity::pressure)}},
-      twin_values,
-      group_entries);
+    convert.convert_all(groups, twin_values, group_entries);
     convert.reset_physical_entries();
+  }
+
+
+  double
+  PhysicalUnits::group_value(const Quantity group) const
+  {
+    switch (group)
+      {
+      case Quantity::mu:
+        return width / length;
+      case Quantity::Delta:
+        return thickness / length;
+      case Quantity::Gamma:
+        return subgrade_modulus * std::pow(length, 4) / bending_stiffness;
+      case Quantity::damping:
+        return dashpot * length * length
+               / std::sqrt(density * thickness * bending_stiffness);
+      case Quantity::shear_layer:
+        return shear_layer * length * length / bending_stiffness;
+      case Quantity::self_weight:
+        return density * gravity * thickness / scale(Quantity::pressure);
+      default:
+        Assert(false, ExcInternalError());
+        return 0;
+      }
   }
 
 
@@ -753,6 +745,8 @@ namespace liftoff
   std::string
   PhysicalUnits::in_scene_terms(std::string message) const
   {
+    if (!is_physical())
+      return message;
     const auto replace = [&](const std::string &from, const std::string &to) {
       message = Utilities::replace_in_string(message, from, to);
     };
@@ -787,8 +781,8 @@ namespace liftoff
                 x > 1e100 || (x > 0 && x < 1e-100))
               return message + " The cause in this SI scene: " + path + " = "
                      + entry.si + " is " + item + " in the solver's unit of "
-                     + entry.quantity + ", " + unit_origin(entry.quantity)
-                     + ".";
+                     + name_of(entry.quantity) + ", "
+                     + unit_origin(entry.quantity) + ".";
     return message;
   }
 
@@ -804,27 +798,27 @@ namespace liftoff
 
 
   std::string
-  PhysicalUnits::unit_origin(const std::string &quantity) const
+  PhysicalUnits::unit_origin(const Quantity quantity) const
   {
     const std::string plate = stiffness_origin();
-    if (quantity == "time" || quantity == "velocity"
-        || quantity == "angular velocity")
+    if (quantity == Quantity::time || quantity == Quantity::velocity
+        || quantity == Quantity::angular_velocity)
       return "t0 = L^2 sqrt(rho H / D) = " + format_number(t0)
              + " s from Units/Density = " + format_number(density)
              + " kg/m^3, Units/Length = " + format_number(length) + " m and "
              + plate;
-    if (quantity == "force" || quantity == "pressure"
-        || quantity == "force per length")
+    if (quantity == Quantity::force || quantity == Quantity::pressure
+        || quantity == Quantity::force_per_length)
       return "F0 = D / L = " + format_number(f0) + " N from " + plate
              + " and Units/Length = " + format_number(length) + " m";
-    if (quantity == "temperature difference")
+    if (quantity == Quantity::temperature_difference)
       return "the scene's own (K, not converted)";
     return "L = Units/Length = " + format_number(length) + " m";
   }
 
 
   std::string
-  PhysicalUnits::origin_of(const std::string &group) const
+  PhysicalUnits::origin_of(const Quantity group) const
   {
     const auto value =
       [](const std::string &entry, const double x, const std::string &unit) {
@@ -832,23 +826,23 @@ namespace liftoff
       };
     const std::string plate = stiffness_origin();
     const std::string l     = value("Length", length, "m");
-    if (group == "mu")
+    if (group == Quantity::mu)
       return "W / L = " + format_number(width / length) + " from "
              + value("Width", width, "m") + " and " + l;
-    if (group == "Delta")
+    if (group == Quantity::Delta)
       return "H / L = " + format_number(thickness / length) + " from "
              + value("Thickness", thickness, "m") + " and " + l;
-    if (group == "Gamma")
+    if (group == Quantity::Gamma)
       return "k L^4 / D = "
              + format_number(subgrade_modulus * std::pow(length, 4)
                              / bending_stiffness)
              + " from " + value("Subgrade modulus", subgrade_modulus, "N/m^3")
              + ", " + l + " and " + plate;
-    if (group == "damping")
+    if (group == Quantity::damping)
       return "C L^2 / sqrt(rho H D) from "
              + value("Dashpot coefficient", dashpot, "Pa s/m") + ", "
              + value("Density", density, "kg/m^3") + " and " + plate;
-    if (group == "shear layer")
+    if (group == Quantity::shear_layer)
       return "G_f L^2 / D from "
              + value("Shear layer modulus", shear_layer, "N/m") + " and "
              + plate;
@@ -870,8 +864,8 @@ namespace liftoff
   }
 
 
-  PhysicalUnits::Measure
-  PhysicalUnits::measure(const Quantity quantity) const
+  double
+  PhysicalUnits::si_scale(const Quantity quantity) const
   {
     // With F0 = D / L the deflection scale F0 L^2 / D is L and rotations
     // are in radians; the products are kept so that the table reads as
@@ -880,33 +874,34 @@ namespace liftoff
     switch (quantity)
       {
       case Quantity::length:
-        return {length, "m", "L"};
+      case Quantity::position:
+        return length;
       case Quantity::deflection:
-        return {w, "m", "F0*L^2/D"};
+        return w;
       case Quantity::time:
-        return {t0, "s", "t0"};
+        return t0;
       case Quantity::force:
-        return {f0, "N", "F0"};
-      case Quantity::pressure:
-        return {f0 / (length * length), "Pa", "F0/L^2"};
-      case Quantity::area:
-        return {length * length, "m^2", "L^2"};
-      case Quantity::energy:
-        return {f0 * w, "J", "F0^2*L^2/D"};
       case Quantity::moment:
-        return {f0, "N m/m", "F0"};
-      case Quantity::shear_force:
-        return {f0 / length, "N/m", "F0/L"};
+        return f0;
+      case Quantity::pressure:
+        return f0 / (length * length);
+      case Quantity::pressure_per_length:
+        return f0 / (length * length) / length;
+      case Quantity::area:
+        return length * length;
+      case Quantity::energy:
+        return f0 * w;
+      case Quantity::force_per_length:
+        return f0 / length;
       case Quantity::rotation:
-        return {w / length, "rad", "F0*L/D"};
+      case Quantity::thermal_expansion:
+        return w / length;
       case Quantity::velocity:
-        return {w / t0, "m/s", "F0*L^2/(D*t0)"};
+        return w / t0;
       case Quantity::angular_velocity:
-        return {w / (length * t0), "rad/s", "F0*L/(D*t0)"};
-      case Quantity::angle_degrees:
-        return {1, "degree", "degree"};
+        return w / (length * t0);
       default:
-        return {1, "1", "1"};
+        return 1;
       }
   }
 
@@ -914,14 +909,14 @@ namespace liftoff
   double
   PhysicalUnits::scale(const Quantity quantity) const
   {
-    return is_physical() ? measure(quantity).si_scale : 1;
+    return is_physical() ? si_scale(quantity) : 1;
   }
 
 
   std::string
   PhysicalUnits::unit(const Quantity quantity) const
   {
-    const std::string symbol = measure(quantity).si_symbol;
+    const std::string &symbol = si_symbol(quantity);
     return is_physical() && symbol != "1" ? " [" + symbol + "]" : "";
   }
 
@@ -929,7 +924,6 @@ namespace liftoff
   std::string
   PhysicalUnits::unit_symbol(const Quantity quantity) const
   {
-    const Measure m = measure(quantity);
-    return is_physical() ? m.si_symbol : m.scales;
+    return is_physical() ? si_symbol(quantity) : dimensionless_scales(quantity);
   }
 } // namespace liftoff

@@ -78,7 +78,7 @@ namespace liftoff
     out << (units.is_physical() ? "t" : "tau") << units.unit(Quantity::time)
         << ",joint,s" << length << ",x" << length << ",y" << length
         << ",w_lower" << w << ",w_upper" << w << ",lte,shear"
-        << units.unit(Quantity::shear_force) << '\n';
+        << units.unit(Quantity::force_per_length) << '\n';
   }
 
 
@@ -147,7 +147,7 @@ namespace liftoff
             << ',' << w * r[4] << ',' << w * r[5] << ',';
         if (!std::isnan(r[6]))
           out << r[6];
-        out << ',' << (units.scale(Quantity::shear_force) * r[7] + 0.0) << '\n';
+        out << ',' << (units.scale(Quantity::force_per_length) * r[7] + 0.0) << '\n';
       }
     file.flush();
   }

@@ -477,7 +477,7 @@ namespace liftoff
                    {"min_M_2", Quantity::moment},
                    {"min_M_2_x", Quantity::length},
                    {"min_M_2_y", Quantity::length},
-                   {"max_Q", Quantity::shear_force},
+                   {"max_Q", Quantity::force_per_length},
                    {"max_Q_x", Quantity::length},
                    {"max_Q_y", Quantity::length}},
                   [this](const StepData &step) {

@@ -44,6 +44,14 @@ namespace liftoff
 
 
   void
+  Simulator::declare_scene(ParameterHandler &prm)
+  {
+    declare_parameters(prm);
+    units.watch(prm);
+  }
+
+
+  void
   Simulator::parse_parameters(ParameterHandler &prm)
   {
     units.parse_parameters(prm, SceneParts::outline_for_units(prm));
@@ -133,7 +141,10 @@ namespace liftoff
       parts.for_stepper(),
       TimeStepper::Options{parts.is_dynamic(),
                            outputs.history().wants_energies(),
-                           parts.clock()},
+                           parts.clock(),
+                           [this](const std::string &message) {
+                             return units.in_scene_terms(message);
+                           }},
       timer);
     stepper->setup();
     parts.check_not_trivial();
@@ -187,8 +198,18 @@ namespace liftoff
                     ExcMessage("--resume reads the checkpoint in "
                                "Output/Directory, which is empty."));
       }
+    // Every error from here on, the checkpoint's and the outputs' set-up
+    // included, quotes the solver's numbers: told in the scene's units.
+    units.explain_run_errors_of([&]() { set_up_and_run(start); });
+  }
+
+
+  void
+  Simulator::set_up_and_run(const Start start)
+  {
     // Checks that need the mesh and matrices precede touching the folder.
-    units.explain_run_errors_of([this]() { setup(), check_before_run(); });
+    setup();
+    check_before_run();
 
     // The folder is this run's from here until run() returns or throws.
     output_folder = prepare_output_directory(start);
@@ -207,7 +228,7 @@ namespace liftoff
     outputs.setup(scene_view(), output_directory);
     // Every point of the scene has found its cell.
     parts.discretization.release_grid_cache();
-    units.explain_run_errors_of([this]() { run_analysis(); });
+    run_analysis();
   }
 
 

@@ -18,8 +18,8 @@ namespace liftoff
     AssertThrow(step <= clock.n_steps(),
                 ExcMessage("Cannot resume: the checkpoint is of step "
                            + std::to_string(step)
-                           + ", beyond Time integration/End time = "
-                           + format_number(clock.end_time()) + " ("
+                           + ", beyond Time integration/End time = <"
+                           + format_number(clock.end_time()) + "> ("
                            + std::to_string(clock.n_steps()) + " steps)."));
     // A killed run may leave temporary files (and checkpoint.new).
     output_folder->remove_temporary_files();

@@ -87,15 +87,23 @@ namespace liftoff
     const double     area_error         = discretization.area_error();
     if (area_error <= largest_area_error)
       return;
-    mesh_warning = "The mesh's area differs from the plate's by "
-                   + format_number(area_error)
-                   + " (accepted: " + format_number(largest_area_error)
-                   + "): its cells follow the circles only at their nodes; "
-                     "loads over the plate and the bed are short by as much. "
-                     "Refine (Discretization/Global refinements) or raise "
-                     "Discretization/Polynomial degree.";
+    warn(mesh_warning,
+         "The mesh's area differs from the plate's by "
+           + format_number(area_error)
+           + " (accepted: " + format_number(largest_area_error)
+           + "): its cells follow the circles only at their nodes; "
+             "loads over the plate and the bed are short by as much. "
+             "Refine (Discretization/Global refinements) or raise "
+             "Discretization/Polynomial degree.");
+  }
+
+
+  void
+  TimeStepper::warn(std::string &kept, const std::string &message) const
+  {
+    kept = options.in_scene_terms ? options.in_scene_terms(message) : message;
     if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
-      std::cerr << "liftoff: warning: " << mesh_warning << std::endl;
+      std::cerr << "liftoff: warning: " << kept << std::endl;
   }
 
 
@@ -247,12 +255,12 @@ namespace liftoff
     if (newmark.is_conditionally_stable() && options.is_dynamic)
       return "Newmark's method with Beta = " + format_number(newmark.beta)
              + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
-             + " is stable only for Time step <= about "
+             + " is stable only for steps up to about dtau = "
              + format_number(stable_time_step())
              + " (an estimate from below of omega_max); Time integration/Time "
-               "step = "
+               "step = <"
              + format_number(state_.clock.time_step())
-             + " is too large for it.";
+             + "> is too large for it.";
     return "the values overflow the range of double: the largest load "
            "entry is "
            + format_number(load.linfty_norm())
@@ -289,9 +297,7 @@ namespace liftoff
       + ". Likely cause: " + likely_cause_of_energy_error();
     AssertThrow(energy_check.mode() != EnergyCheck::Mode::fail,
                 ExcMessage(message));
-    warning = message;
-    if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
-      std::cerr << "liftoff: warning: " << message << std::endl;
+    warn(warning, message);
   }
 
 
@@ -302,17 +308,15 @@ namespace liftoff
       discretization, bed, state_.ghosted_u, load, active_set.system_matrix());
     if (equilibrium.holds())
       return;
-    warning =
-      "The static solution is not in equilibrium: the bed's "
-      "resultant or moment differs from the loads' by "
-      + format_number(equilibrium.imbalance)
-      + " of the loads (accepted: " + format_number(equilibrium.accepted())
-      + ", the larger of " + format_number(StaticEquilibrium::tolerance)
-      + " and the round-off of the solve). Likely cause: an "
-        "ill-conditioned system (a very soft bed under a free "
-        "plate) or a defect; do not use these results.";
-    if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator) == 0)
-      std::cerr << "liftoff: warning: " << warning << std::endl;
+    warn(warning,
+         "The static solution is not in equilibrium: the bed's "
+         "resultant or moment differs from the loads' by "
+           + format_number(equilibrium.imbalance)
+           + " of the loads (accepted: " + format_number(equilibrium.accepted())
+           + ", the larger of " + format_number(StaticEquilibrium::tolerance)
+           + " and the round-off of the solve). Likely cause: an "
+             "ill-conditioned system (a very soft bed under a free "
+             "plate) or a defect; do not use these results.");
   }
 
 
@@ -332,13 +336,13 @@ namespace liftoff
     const double omega = bed.law().rigid_body_frequency();
     if (state_.clock.time_step() * omega > 1)
       causes.push_back(
-        "Time integration/Time step = "
+        "Time integration/Time step = <"
         + format_number(state_.clock.time_step())
-        + " is long for the bed: the plate swings on it at "
+        + "> is long for the bed: the plate swings on it at "
           "sqrt(Gamma) = "
         + format_number(omega) + ", so Time step * sqrt(Gamma) = "
         + format_number(state_.clock.time_step() * omega)
-        + " > 1; use a Time step below " + format_number(1 / omega));
+        + " > 1; use a step below dtau = " + format_number(1 / omega));
     const double tolerance = active_set.linear_solver().relative_tolerance();
     if (tolerance > 1e-8)
       causes.push_back("Linear solver/Tolerance = " + format_number(tolerance)
@@ -556,15 +560,12 @@ namespace liftoff
         // transfer is then of the whole deflection. The failure is
         // decided collectively, so every rank is here.
         state_.u = 0;
-        rest_warning =
-          "The weight and the temperature loads alone have no static "
-          "equilibrium ("
-          + message_of(e)
-          + "); the joints' load transfer (lte columns, joints.csv) is of "
-            "the whole deflection, curl and weight included.";
-        if (Utilities::MPI::this_mpi_process(discretization.mpi_communicator)
-            == 0)
-          std::cerr << "liftoff: warning: " << rest_warning << std::endl;
+        warn(rest_warning,
+             "The weight and the temperature loads alone have no static "
+             "equilibrium ("
+               + message_of(e)
+               + "); the joints' load transfer (lte columns, joints.csv) is "
+                 "of the whole deflection, curl and weight included.");
       }
     set_rest_state();
   }

@@ -35,13 +35,13 @@ namespace liftoff_tests
     const liftoff::Simulator::Start start = liftoff::Simulator::Start::fresh)
   {
     ParameterHandler prm;
-    liftoff::Simulator::declare_parameters(prm);
+    auto             simulator =
+      std::make_unique<liftoff::Simulator>(comm, /*verbose*/ false);
+    simulator->declare_scene(prm);
     std::istringstream text("subsection Output\n  set Directory =\n"
                             "  set VTU interval = 0\nend\n"
                             + scene);
     prm.parse_input(text, "test scene");
-    auto simulator =
-      std::make_unique<liftoff::Simulator>(comm, /*verbose*/ false);
     simulator->parse_parameters(prm);
     simulator->set_body_force(body_force);
     simulator->run(prm, start);

@@ -70,6 +70,8 @@ LIFTOFF_TEST_MAIN(argc, argv)
 
   ParameterHandler prm;
   liftoff::Simulator::declare_parameters(prm);
+  liftoff::PhysicalUnits units;
+  units.watch(prm);
   const auto entries = liftoff::declared_entries(prm);
 
   unsigned int missing = 0, tagged = 0;
@@ -99,17 +101,19 @@ LIFTOFF_TEST_MAIN(argc, argv)
   const double L = 5, H = 0.25, E = 30e9, nu = 0.2, rho = 2400;
   const double D  = E * H * H * H / (12 * (1 - nu * nu));
   const double F0 = D / L, t0 = L * L * std::sqrt(rho * H / D);
-  const std::map<std::string, double> unit = {{"number", 1},
-                                              {"length", L},
-                                              {"position", L},
-                                              {"deflection", L},
-                                              {"rotation", 1},
-                                              {"time", t0},
-                                              {"force", F0},
-                                              {"pressure", F0 / (L * L)},
-                                              {"force per length", F0 / L},
-                                              {"velocity", L / t0},
-                                              {"angular velocity", 1 / t0}};
+  using Q                                        = liftoff::Quantity;
+  const std::map<liftoff::Quantity, double> unit = {
+    {Q::number, 1},
+    {Q::length, L},
+    {Q::position, L},
+    {Q::deflection, L},
+    {Q::rotation, 1},
+    {Q::time, t0},
+    {Q::force, F0},
+    {Q::pressure, F0 / (L * L)},
+    {Q::force_per_length, F0 / L},
+    {Q::velocity, L / t0},
+    {Q::angular_velocity, 1 / t0}};
   for (const auto &[path, value] :
        std::map<std::string, std::string>{{"Units/System", "SI"},
                                           {"Units/Length", "5"},
@@ -122,7 +126,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
 
   // Every entry of a unit, each zero of its default made 0.25 (on the
   // plate, and not a value every unit leaves alone).
-  std::map<std::string, std::pair<std::vector<std::string>, std::string>>
+  std::map<std::string, std::pair<std::vector<liftoff::Quantity>, std::string>>
     probes;
   for (const auto &[path, entry] : entries)
     {
@@ -131,7 +135,7 @@ LIFTOFF_TEST_MAIN(argc, argv)
       for (const auto &q : quantities)
         {
           is_known &= unit.count(q) == 1;
-          has_unit |= q != "number";
+          has_unit |= q != Q::number;
         }
       has_unit &= is_known;
       if (!has_unit || path.rfind("Units/", 0) == 0)
@@ -157,7 +161,6 @@ LIFTOFF_TEST_MAIN(argc, argv)
       probes[path] = {quantities, probe};
     }
 
-  liftoff::PhysicalUnits units;
   units.parse_parameters(prm, liftoff::SceneParts::outline_for_units(prm));
   const auto twin = liftoff::declared_entries(
     units.solver_scene(prm, liftoff::Simulator::declare_parameters));

@@ -31,6 +31,7 @@ namespace
     HistoryOfScene(const std::string &probes, const bool energies)
     {
       liftoff::Simulator::declare_parameters(prm);
+      units.watch(prm);
       prm.enter_subsection("Output");
       prm.set("Probe points", probes);
       prm.set("Write energies", energies);

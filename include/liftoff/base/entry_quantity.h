@@ -11,6 +11,69 @@ namespace liftoff
   using namespace dealii;
 
   /**
+   * What a value is, for its unit: the one vocabulary of quantities. An
+   * output asks PhysicalUnits for the scale and unit of the quantity of each
+   * value it writes; an entry declares the quantity of its value at the end
+   * of its documentation (quantity()), by which a scene in SI units is
+   * converted. Each has one name (name_of(): the spelling of quantity() and
+   * of the messages) and the units of doc/model.md (si_symbol(),
+   * dimensionless_scales()).
+   */
+  enum class Quantity
+  {
+    number,                 ///< dimensionless in both systems (nu, fractions)
+    text,                   ///< names, not converted
+    length,                 ///< L
+    position,               ///< a length that is a point on the plate
+    deflection,             ///< w, gaps: F0 L^2 / D
+    rotation,               ///< psi, F0 L / D (radians)
+    time,                   ///< t0
+    force,                  ///< F0
+    pressure,               ///< F0 / L^2
+    force_per_length,       ///< a line load, a shear force per length: F0 / L
+    pressure_per_length,    ///< F0 / L^3
+    velocity,               ///< of w, F0 L^2 / (D t0)
+    angular_velocity,       ///< of psi, F0 L / (D t0)
+    area,                   ///< L^2
+    energy,                 ///< F0^2 L^2 / D
+    moment,                 ///< a moment per unit length, F0
+    angle_degrees,          ///< degrees in both systems
+    temperature_difference, ///< K in both systems
+    thermal_expansion,      ///< per K, in units of F0 L / D
+    // The dimensionless groups an SI scene gives by the entries of Units
+    // (is_group()).
+    mu,
+    Delta,
+    Gamma,
+    damping,
+    shear_layer,
+    self_weight
+  };
+
+  /// The name of `quantity`: "force per length", "self weight", ...
+  const std::string &
+  name_of(const Quantity quantity);
+
+  /// The quantity named `name` (name_of()); a name that is none is refused.
+  Quantity
+  quantity_named(const std::string &name);
+
+  /// The SI unit of one unit of the solver's `quantity`: "m", "Pa", ...;
+  /// "1" for a number or a group.
+  const std::string &
+  si_symbol(const Quantity quantity);
+
+  /// The dimensionless scales one unit of `quantity` is made of, as
+  /// doc/model.md writes them ("F0*L^2/D").
+  const std::string &
+  dimensionless_scales(const Quantity quantity);
+
+  /// Whether `quantity` is a dimensionless group of doc/model.md that a
+  /// scene in SI units gives by the entries of Units (mu, Delta, ...).
+  bool
+  is_group(const Quantity quantity);
+
+  /**
    * The last words of an entry's documentation that declare the quantity
    * of its value, " [quantity: ...]": the class that declares the entry
    * gives it, as in
@@ -25,18 +88,18 @@ namespace liftoff
    * `liftoff --parameters` shows it, and the converter and the test
    * `entry_quantities` read it back (declared_quantities()).
    *
-   * `names` is one name of quantity_names(), or several separated by ", "
-   * that the items of the value take in turn (the items are the numbers or
-   * expressions separated by ',' or ';' outside parentheses): "length,
-   * length, number" for "dx, dy, share; ...". A name that is not known is
-   * refused, so a misspelt quantity fails every run.
+   * `names` is one name of a Quantity (name_of()), or several separated by
+   * ", " that the items of the value take in turn (the items are the
+   * numbers or expressions separated by ',' or ';' outside parentheses):
+   * "length, length, number" for "dx, dy, share; ...". A name that is not
+   * known is refused, so a misspelt quantity fails every run.
    */
   std::string
   quantity(const std::string &names);
 
   /// The quantities, in the order the items of the value take them, that
   /// quantity() put at the end of `documentation`; empty if none.
-  std::vector<std::string>
+  std::vector<Quantity>
   declared_quantities(const std::string &documentation);
 
   /// Whether declared_quantities() reads " (if set)" after the quantity: the
@@ -56,17 +119,4 @@ namespace liftoff
   /// the test of declared quantities walk.
   std::map<std::string, DeclaredEntry>
   declared_entries(const ParameterHandler &prm);
-
-  /**
-   * The names quantity() knows: "number" (the same in both systems;
-   * expressions in x, y, t are rewritten), "text" (not converted), the
-   * units of PhysicalUnits ("length", "deflection", "rotation", "time",
-   * "force", "pressure", "force per length", "velocity", "angular
-   * velocity"), "position" (a length that is a point on the plate, checked
-   * there) and the dimensionless groups an SI scene gives by the entries of
-   * Units ("mu", "Delta", "Gamma", "damping", "shear layer", "self
-   * weight").
-   */
-  const std::vector<std::string> &
-  quantity_names();
 } // namespace liftoff

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <liftoff/base/entry_quantity.h>
+
 #include <functional>
 #include <map>
 #include <memory>
@@ -32,24 +34,8 @@ namespace liftoff
       si
     };
 
-    /// What an output value is, for its scale and unit.
-    enum class Quantity
-    {
-      number,           ///< dimensionless in both systems (nu, fractions)
-      length,           ///< positions: L
-      deflection,       ///< w, gaps: F0 L^2 / D
-      time,             ///< t0
-      force,            ///< F0
-      pressure,         ///< F0 / L^2
-      area,             ///< L^2
-      energy,           ///< F0^2 L^2 / D
-      moment,           ///< a moment per unit length, F0
-      shear_force,      ///< a force per unit length, F0 / L
-      rotation,         ///< psi, F0 L / D (radians)
-      velocity,         ///< of w, F0 L^2 / (D t0)
-      angular_velocity, ///< of psi, F0 L / (D t0)
-      angle_degrees,    ///< degrees in both systems
-    };
+    /// What a value is, for its scale and unit (base/entry_quantity.h).
+    using Quantity = liftoff::Quantity;
 
     /// What the classes that own the plate's and the bed's entries say of
     /// the scene as written (each in a static `describe_for_units()`), so
@@ -70,10 +56,18 @@ namespace liftoff
       std::vector<std::pair<std::string, std::string>> refused;
     };
 
-    /// The subsection `Units`; declared after the groups an SI scene
-    /// replaces (Plate, Foundation, Loads), which it watches for being set.
+    /// The subsection `Units`.
     static void
     declare_parameters(ParameterHandler &prm);
+
+    /// Counts, for parse_parameters(), how often `scene` sets each entry of
+    /// Units, each dimensionless group an SI scene replaces and each entry
+    /// converted only if set: ParameterHandler keeps only the value, and a
+    /// group set to its default beside the entry that replaces it is a mix
+    /// all the same. Called once every entry is declared and before the
+    /// scene is read into `scene`; the counts are this object's.
+    void
+    watch(ParameterHandler &scene);
 
     /// Reads `Units`; refuses a scene that mixes physical entries with
     /// the dimensionless ones they replace, naming both, or that lacks an
@@ -107,6 +101,15 @@ namespace liftoff
     /// linear solver's own errors pass unchanged.
     void
     explain_run_errors_of(const std::function<void()> &run) const;
+
+    /// `message`, an error or a warning of a run of solver_scene(), in the
+    /// scene's terms: in an SI scene an entry quoted as the user wrote it,
+    /// a time and a step (tau = X, dtau = X) in seconds, each group it
+    /// names with the entries of Units and their values that give it, a
+    /// time scale beyond what the solver integrates named. A dimensionless
+    /// scene's as it is.
+    std::string
+    in_scene_terms(std::string message) const;
 
     /// used_parameters.prm: `scene_text` (the scene as written), and for
     /// an SI scene its dimensionless twin after it as comments.
@@ -161,35 +164,41 @@ namespace liftoff
 
   public:
     /// An entry the conversion changed: its value as the scene wrote it,
-    /// in the twin, and its quantity (entry_quantity.h).
+    /// in the twin, and its quantity.
     struct Converted
     {
-      std::string si, twin, quantity;
+      std::string si, twin;
+      Quantity    quantity;
       /// The scene left it at its declared default.
       bool is_default = false;
     };
 
   private:
+    /// How often the scene set each watched entry, by its path (watch():
+    /// an action counts, run once with the default when it is added).
+    std::map<std::string, std::shared_ptr<unsigned int>> set_counts;
+
     /// Each entry the conversion changed, by its path; the group each
     /// group entry is.
-    std::map<std::string, Converted>   twin_values;
-    std::map<std::string, std::string> group_entries;
+    std::map<std::string, Converted> twin_values;
+    std::map<std::string, Quantity>  group_entries;
 
-    /// `message`, an error of the twin, in the SI scene's terms: an entry
-    /// quoted as the user wrote it, each group it names with the entries
-    /// of Units and their values that give it, a time scale beyond what
-    /// the solver integrates named.
-    std::string
-    in_scene_terms(std::string message) const;
+    /// Whether the scene gave the watched entry `path` a value.
+    bool
+    is_set(const std::string &path) const;
+
     /// `message` with each number quoted as <value> that rounds an
     /// entry's twin value replaced by the value the scene wrote.
     std::string
     with_written_numbers(const std::string &message) const;
 
-    /// How the SI entries give `group` (a name of entry_quantity.h), with
-    /// their values.
+    /// How the SI entries give `group`, with their values.
     std::string
-    origin_of(const std::string &group) const;
+    origin_of(const Quantity group) const;
+
+    /// The value of `group` in this SI scene.
+    double
+    group_value(const Quantity group) const;
 
     /// D and the SI entries it comes from.
     std::string
@@ -197,22 +206,15 @@ namespace liftoff
 
     /// The solver's unit of `quantity` and the SI entries it comes from.
     std::string
-    unit_origin(const std::string &quantity) const;
+    unit_origin(const Quantity quantity) const;
 
     void
-    check_physical_values(ParameterHandler   &scene,
-                          const SceneOutline &outline) const;
+    check_physical_values(const SceneOutline &outline) const;
 
-    /// One unit of the solver's `quantity`: its value in SI, the SI
-    /// unit's symbol, and the dimensionless scales it is made of.
-    struct Measure
-    {
-      double      si_scale;
-      const char *si_symbol;
-      const char *scales;
-    };
-    Measure
-    measure(const Quantity quantity) const;
+    /// One unit of the solver's `quantity` in SI (the unit's symbol is
+    /// si_symbol()).
+    double
+    si_scale(const Quantity quantity) const;
 
     /// Sets every entry of `dimensionless` (declared as `scene` is) to the
     /// SI scene's value, converted; its Units are left at their defaults.

@@ -59,6 +59,11 @@ namespace liftoff
 
     static void
     declare_parameters(ParameterHandler &prm);
+    /// declare_parameters() on the handler a scene is read into, which
+    /// this simulator's units watch for the entries the scene sets
+    /// (PhysicalUnits::watch()).
+    void
+    declare_scene(ParameterHandler &prm);
     /// Read and check everything that needs no mesh; throws with a message
     /// naming the offending parameter. Builds and writes nothing, so it
     /// may be called again with other parameters before run().
@@ -192,6 +197,10 @@ namespace liftoff
     /// refused or killed start-up changes nothing; then it replaces them.
     void
     take_over_output(const unsigned int step);
+    /// run() from the set-up to the end of the output, in the solver's
+    /// units (run() tells its errors in the scene's).
+    void
+    set_up_and_run(const Start start);
     /// Check the newest checkpoint against the scene; returns its step.
     unsigned int
     open_checkpoint();

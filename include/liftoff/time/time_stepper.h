@@ -68,6 +68,9 @@ namespace liftoff
       bool records_energies;
       /// The scene's clock at step 0 (a static analysis: the default).
       Clock clock;
+      /// A warning's text in the scene's units (PhysicalUnits'
+      /// in_scene_terms()); none: as the solver writes it.
+      std::function<std::string(const std::string &)> in_scene_terms;
     };
 
     /// Called once a static solve is done, to end the run there if a stop
@@ -209,6 +212,11 @@ namespace liftoff
     /// A static analysis whose rest state has no equilibrium.
     std::string               rest_warning;
     StaticEquilibrium::Result equilibrium;
+
+    /// `message` in the scene's units into `kept` (one of the warnings
+    /// above), and on std::cerr.
+    void
+    warn(std::string &kept, const std::string &message) const;
 
     /// Matrices, foundation points, loads and the layout of every vector
     /// on the current mesh; u, v and a are kept unless `keep_motion` is
