@@ -147,7 +147,8 @@ namespace liftoff
             << ',' << w * r[4] << ',' << w * r[5] << ',';
         if (!std::isnan(r[6]))
           out << r[6];
-        out << ',' << (units.scale(Quantity::force_per_length) * r[7] + 0.0) << '\n';
+        out << ',' << (units.scale(Quantity::force_per_length) * r[7] + 0.0)
+            << '\n';
       }
     file.flush();
   }
