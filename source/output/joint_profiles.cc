@@ -90,6 +90,9 @@ namespace liftoff
   }
 
 
+  // A row per joint point. The shear + 0.0: a free joint's -0 (0 times a
+  // negative jump) is written as 0. An lte far from the load is NaN,
+  // written empty.
   void
   JointProfiles::execute(const StepData &step)
   {
@@ -135,10 +138,9 @@ namespace liftoff
     using Quantity       = PhysicalUnits::Quantity;
     const double  length = units.scale(Quantity::length);
     const double  w      = units.scale(Quantity::deflection);
+    const double  shear  = units.scale(Quantity::force_per_length);
     std::ostream &out    = file.stream();
     out << std::setprecision(12);
-    // The shear + 0.0: a free joint's -0 (0 times a negative jump) is
-    // written as 0. An lte far from the load is NaN, written empty.
     for (const auto &r : rows)
       {
         out << units.scale(Quantity::time) * tau << ','
@@ -147,8 +149,7 @@ namespace liftoff
             << ',' << w * r[4] << ',' << w * r[5] << ',';
         if (!std::isnan(r[6]))
           out << r[6];
-        out << ',' << (units.scale(Quantity::force_per_length) * r[7] + 0.0)
-            << '\n';
+        out << ',' << (shear * r[7] + 0.0) << '\n';
       }
     file.flush();
   }
