@@ -55,6 +55,7 @@ namespace liftoff
     prm.leave_subsection();
 
     declare_slab_parameters(prm);
+    BaseLayer::declare_parameters(prm);
   }
 
 
@@ -112,6 +113,7 @@ namespace liftoff
                 ExcMessage("Plate/Poisson ratio must lie in (-1, 0.5)."));
     AssertThrow(shear_correction > 0,
                 ExcMessage("Plate/Shear correction factor must be > 0."));
+    base.parse_parameters(prm);
   }
 
 
@@ -182,24 +184,31 @@ namespace liftoff
   SectionCoefficients
   MindlinPlate::section(const unsigned int slab) const
   {
-    if (slab_sections.empty())
-      return {1.0,
-              shear_stiffness(),
-              1.0,
-              rotary_inertia(),
-              thickness_ratio,
-              1.0,
-              1.0};
-    AssertIndexRange(slab, slab_sections.size());
-    const double t = slab_sections[slab].thickness;
-    const double e = slab_sections[slab].modulus;
-    return {e * t * t * t,
-            e * t * shear_stiffness(),
-            t,
-            t * t * t * rotary_inertia(),
-            t * thickness_ratio,
-            e * t * t,
-            e};
+    double t = 1.0, e = 1.0;
+    if (!slab_sections.empty())
+      {
+        AssertIndexRange(slab, slab_sections.size());
+        t = slab_sections[slab].thickness;
+        e = slab_sections[slab].modulus;
+      }
+    // A uniform plate's are its own numbers, not products with 1.
+    const bool          uniform = slab_sections.empty();
+    SectionCoefficients alone;
+    alone.bending = uniform ? 1.0 : e * t * t * t;
+    alone.shear   = uniform ? shear_stiffness() : e * t * shear_stiffness();
+    alone.mass    = uniform ? 1.0 : t;
+    alone.rotary  = uniform ? rotary_inertia() : t * t * t * rotary_inertia();
+    alone.thickness_ratio = uniform ? thickness_ratio : t * thickness_ratio;
+    alone.thermal_moment  = uniform ? 1.0 : e * t * t;
+    alone.modulus         = uniform ? 1.0 : e;
+    // 6 M / H_s^2 at the bed-side face, its negative at the top.
+    const double per_moment =
+      6.0 / (alone.thickness_ratio * alone.thickness_ratio);
+    alone.top    = {-per_moment, 0};
+    alone.bottom = {per_moment, 0};
+    if (!base.present())
+      return alone;
+    return base.under(alone, poisson_ratio, shear_correction, thickness_ratio);
   }
 
 

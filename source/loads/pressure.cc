@@ -4,6 +4,8 @@
 #include <liftoff/loads/mirror_image.h>
 #include <liftoff/loads/pressure.h>
 
+#include <algorithm>
+
 namespace liftoff
 {
   void
@@ -67,9 +69,16 @@ namespace liftoff
   Pressure::use_plate(const MindlinPlate &plate)
   {
     slab_weights.clear();
-    if (is_self_weight)
-      for (unsigned int s = 0; s < plate.slab_sections.size(); ++s)
-        slab_weights.push_back(plate.section(s).mass);
+    if (!is_self_weight)
+      return;
+    // Slabs alike (slab_sections empty) share the first's section; a base
+    // adds its weight to it.
+    const std::size_t n_sections =
+      std::max<std::size_t>(plate.slab_sections.size(), 1);
+    if (plate.slab_sections.empty() && !plate.base.present())
+      return;
+    for (unsigned int s = 0; s < n_sections; ++s)
+      slab_weights.push_back(plate.section(s).mass);
   }
 
 
@@ -79,6 +88,8 @@ namespace liftoff
   {
     if (slab_weights.empty())
       return 1.0;
+    if (slab_weights.size() == 1)
+      return slab_weights[0];
     return slab_weights[discretization.geometry().slabs().slab_of(x)];
   }
 

@@ -28,10 +28,13 @@ namespace liftoff
                                             "sigma_xy",
                                             "sigma_max",
                                             "sigma_1_top",
-                                            "sigma_1_bottom"};
-    // The last two, the faces' own, are in the field files on request only
-    // (Output/Face stress fields).
+                                            "sigma_1_bottom",
+                                            "sigma_1_base_top",
+                                            "sigma_1_base_bottom"};
+    // The faces' own are in the field files on request only (Output/Face
+    // stress fields); the base's where there is one.
     constexpr unsigned int n_fields_by_default = 12;
+    constexpr unsigned int n_fields_of_slab    = 14;
 
     // The moments measured from the free curvature kappa_T: M_xx, M_yy and
     // the principal moments gain D (1 + nu) kappa_T; a nonlinear profile's
@@ -58,27 +61,42 @@ namespace liftoff
     }
 
 
-    /// 6 / Delta_s^2: the face stress 6 M / H_s^2 of a moment M of the
-    /// slab's section, in units of F0 / L^2.
+    /// The largest principal stress at a face by its law, from the
+    /// principal moments M_1 >= M_2 and the free moment of the slab's
+    /// temperature (both measured from the free curvature).
     double
-    stress_per_moment(const SectionCoefficients &section)
+    at_face(const FaceStressLaw &law,
+            const double         m_1,
+            const double         m_2,
+            const double         free)
     {
-      return 6.0 / (section.thickness_ratio * section.thickness_ratio);
+      double s = std::max(law.per_moment * m_1, law.per_moment * m_2);
+      // Only a base changes it (a slab alone: + 0 would turn -0 into 0).
+      if (law.per_free_moment != 0)
+        s += law.per_free_moment * free;
+      return s;
     }
 
 
-    /// The largest principal stress at the top face (z = -H/2) and at the
-    /// bed-side face (z = +H/2) from the principal moments M_1 >= M_2
-    /// (measured from the free curvature): -6 M_2 / H^2 and 6 M_1 / H^2,
-    /// plus a nonlinear profile's self-equilibrating stress of each face
-    /// (`thermal`, in the slab's section; none: nullptr).
+    /// The largest principal stress at each face of the section: at the
+    /// top face (z = -H/2) and the bed-side face (z = +H/2) of a slab alone
+    /// -6 M_2 / H^2 and 6 M_1 / H^2, plus a nonlinear profile's
+    /// self-equilibrating stress of each face (`thermal`, in the slab's
+    /// section, with its free moment `free`; none: nullptr).
     FaceStresses
-    face_stresses(const double       m_1,
-                  const double       m_2,
-                  const double       to_stress,
-                  const FreeBending *thermal)
+    face_stresses(const double               m_1,
+                  const double               m_2,
+                  const SectionCoefficients &section,
+                  const FreeBending         *thermal,
+                  const double               free)
     {
-      FaceStresses s{-to_stress * m_2, to_stress * m_1};
+      FaceStresses s{at_face(section.top, m_1, m_2, free),
+                     at_face(section.bottom, m_1, m_2, free)};
+      if (section.has_base)
+        {
+          s.base_top    = at_face(section.base_top, m_1, m_2, free);
+          s.base_bottom = at_face(section.base_bottom, m_1, m_2, free);
+        }
       // Added only with a temperature: + 0 would turn a -0 into 0.
       if (thermal != nullptr)
         {
@@ -89,35 +107,49 @@ namespace liftoff
     }
 
 
-    /// out[11..13]: sigma_max, sigma_1_top, sigma_1_bottom from M_1 and
-    /// M_2 (out[5], out[6]).
+    /// out[11..15]: sigma_max, sigma_1_top, sigma_1_bottom and the base's
+    /// from M_1 and M_2 (out[5], out[6]).
     void
-    set_face_stresses(const double       to_stress,
-                      const FreeBending *thermal,
-                      Vector<double>    &out)
+    set_face_stresses(const SectionCoefficients &section,
+                      const FreeBending         *thermal,
+                      const double               free,
+                      Vector<double>            &out)
     {
-      const FaceStresses s = face_stresses(out[5], out[6], to_stress, thermal);
-      out[11]              = std::max(s.bottom, s.top);
+      const FaceStresses s =
+        face_stresses(out[5], out[6], section, thermal, free);
+      out[11] = std::max(s.bottom, s.top);
+      if (section.has_base)
+        out[11] = std::max({out[11], s.base_top, s.base_bottom});
       if (out.size() > n_fields_by_default)
         {
           out[12] = s.top;
           out[13] = s.bottom;
         }
+      if (out.size() > n_fields_of_slab)
+        {
+          out[14] = s.base_top;
+          out[15] = s.base_bottom;
+        }
     }
 
 
+    /// The moments shifted by the free moment, the stresses at the
+    /// bed-side face (sigma_xx, sigma_yy) by its law.
     void
-    add_free_bending(const FreeBending &thermal,
-                     const double       nu,
-                     const double       to_stress,
-                     Vector<double>    &out)
+    add_free_bending(const FreeBending         &thermal,
+                     const double               nu,
+                     const SectionCoefficients &section,
+                     Vector<double>            &out)
     {
       const double m = free_moment(thermal, nu);
       for (const unsigned int k : {0, 1, 5, 6})
         out[k] += m;
-      out[8] += to_stress * m + thermal.bottom_stress;
-      out[9] += to_stress * m + thermal.bottom_stress;
-      set_face_stresses(to_stress, &thermal, out);
+      double shift = section.bottom.per_moment * m;
+      if (section.bottom.per_free_moment != 0)
+        shift += section.bottom.per_free_moment * m;
+      out[8] += shift + thermal.bottom_stress;
+      out[9] += shift + thermal.bottom_stress;
+      set_face_stresses(section, &thermal, m, out);
     }
 
 
@@ -186,7 +218,9 @@ namespace liftoff
       {"sigma_xy", Quantity::pressure},
       {"sigma_max", Quantity::pressure},
       {"sigma_1_top", Quantity::pressure},
-      {"sigma_1_bottom", Quantity::pressure}};
+      {"sigma_1_bottom", Quantity::pressure},
+      {"sigma_1_base_top", Quantity::pressure},
+      {"sigma_1_base_bottom", Quantity::pressure}};
     return table;
   }
 
@@ -201,8 +235,16 @@ namespace liftoff
   std::vector<std::string>
   StressResultants::get_names() const
   {
-    return {names.begin(),
-            names.begin() + (face_fields ? names.size() : n_fields_by_default)};
+    return {names.begin(), names.begin() + n_fields(face_fields)};
+  }
+
+
+  unsigned int
+  StressResultants::n_fields(const bool with_faces) const
+  {
+    if (!with_faces)
+      return n_fields_by_default;
+    return plate.base.present() ? names.size() : n_fields_of_slab;
   }
 
 
@@ -293,7 +335,7 @@ namespace liftoff
             gradient[q][PlateFields::w][d] - value[q][PlateFields::rotation(d)];
     const double              nu        = plate.poisson_ratio;
     const SectionCoefficients section   = plate.section(cell->material_id());
-    const double              to_stress = stress_per_moment(section);
+    const double              to_stress = section.bottom.per_moment;
     const double              shear     = section.shear;
     // D_s / D; the minus sign: z along w.
     const double bending = -section.bending;
@@ -318,10 +360,10 @@ namespace liftoff
         if (free_bending)
           add_free_bending(in_section(free_bending(points[q]), section),
                            nu,
-                           to_stress,
+                           section,
                            out);
         else
-          set_face_stresses(to_stress, nullptr, out);
+          set_face_stresses(section, nullptr, 0, out);
       }
   }
 
@@ -345,10 +387,9 @@ namespace liftoff
             out.q[q][d] = fields.grad_w[q][d] - fields.psi[q][d];
       }
     out.faces.resize(out.with_faces ? n : 0);
-    const double              nu        = plate.poisson_ratio;
-    const SectionCoefficients section   = plate.section(cell->material_id());
-    const double              bending   = -section.bending;
-    const double              to_stress = stress_per_moment(section);
+    const double              nu      = plate.poisson_ratio;
+    const SectionCoefficients section = plate.section(cell->material_id());
+    const double              bending = -section.bending;
     for (unsigned int q = 0; q < n; ++q)
       {
         const PlaneMoments m(bending,
@@ -362,18 +403,20 @@ namespace liftoff
         // The thermal stress of a face is wanted with the faces only; its
         // curvature always.
         FreeBending thermal;
+        double      free = 0;
         if (free_bending)
           {
             thermal = in_section(free_bending(fields.points()[q]), section);
-            const double free = free_moment(thermal, nu);
+            free    = free_moment(thermal, nu);
             out.m_1[q] += free;
             out.m_2[q] += free;
           }
         if (out.with_faces)
           out.faces[q] = face_stresses(out.m_1[q],
                                        out.m_2[q],
-                                       to_stress,
-                                       free_bending ? &thermal : nullptr);
+                                       section,
+                                       free_bending ? &thermal : nullptr,
+                                       free);
       }
   }
 
@@ -430,7 +473,7 @@ namespace liftoff
     evaluate(cell, values, computed);
 
     std::map<std::string, double> fields;
-    for (unsigned int k = 0; k < names.size(); ++k)
+    for (unsigned int k = 0; k < n_fields(true); ++k)
       fields[names[k]] = computed[0][k];
     return fields;
   }

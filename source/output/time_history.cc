@@ -8,6 +8,7 @@
 #include <liftoff/base/number_text.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/joint_springs.h>
+#include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/fem/plate_fields.h>
 #include <liftoff/time/plate_state.h>
 
@@ -345,6 +346,19 @@ namespace liftoff
                              + format_point(probe.point[0], probe.point[1])
                              + " of " + probe.quantity + " lies outside "
                              + disc.geometry().plate_description() + "."));
+    // The base's faces exist with a base only.
+    std::vector<std::string> quantities;
+    for (const auto &probe : quantity_probes)
+      quantities.push_back(probe.quantity);
+    for (const auto &probe : riding_probes)
+      quantities.push_back(probe.quantity);
+    for (const std::string &quantity : quantities)
+      AssertThrow(scene.plate.base.present()
+                    || quantity.rfind("sigma_1_base", 0) != 0,
+                  ExcMessage("Output/Probe quantities, Riding probes: "
+                             + quantity
+                             + " is a stress of the base's face, and the "
+                               "scene has no base (Base/Interface = none)."));
   }
 
 

@@ -36,15 +36,19 @@ import subprocess
 import sys
 import tempfile
 
-import numpy as np
-from scipy import integrate, special
+from scipy import integrate
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+from kelvin_square import KelvinSquare  # noqa: E402
 
 LIFTOFF = sys.argv[1]
 NU = 0.3
 ELL = 0.04
 GAMMA = ELL ** -4
 B = 0.03125
-Q = 1.0 / (2 * B) ** 2  # a unit force on the square
+KELVIN = KelvinSquare(ELL, NU, B)
+Q = KELVIN.q  # a unit force on the square
+green, at_centre, at_point = KELVIN.green, KELVIN.at_centre, KELVIN.at_point
 
 failures = 0
 
@@ -53,39 +57,6 @@ def check(ok, what):
     global failures
     print(("PASS " if ok else "FAIL ") + what)
     failures += not ok
-
-
-def green(dx, dy):
-    """w, M_xx, M_yy at offset (dx, dy) from a unit point load."""
-    r = math.hypot(dx, dy)
-    rho = r / ELL
-    w = -(ELL ** 2) / (2 * math.pi) * special.kei(rho)
-    kp = special.keip(rho) / rho
-    m_r = (special.ker(rho) - (1 - NU) * kp) / (2 * math.pi)
-    m_t = (NU * special.ker(rho) + (1 - NU) * kp) / (2 * math.pi)
-    c2, s2 = (dx / r) ** 2, (dy / r) ** 2
-    return np.array([w, m_r * c2 + m_t * s2, m_r * s2 + m_t * c2])
-
-
-def at_centre(k):
-    # Eight triangles 0 <= theta <= pi/4, 0 < r <= b / cos(theta), which
-    # the square's symmetries map onto each other; a swap of x and y is
-    # one of them, so M_xx = M_yy = their mean at the centre.
-    def integrand(r, theta):
-        g = green(r * math.cos(theta), r * math.sin(theta))
-        return (g[0] if k == 0 else 0.5 * (g[1] + g[2])) * r
-
-    value, _ = integrate.dblquad(
-        integrand, 0, math.pi / 4, 0, lambda t: B / math.cos(t),
-        epsabs=1e-13, epsrel=1e-10)
-    return 8 * Q * value
-
-
-def at_point(x, y, k):
-    value, _ = integrate.dblquad(
-        lambda sy, sx: green(x - sx, y - sy)[k], -B, B, -B, B,
-        epsabs=1e-13, epsrel=1e-10)
-    return Q * value
 
 
 def scene(cells, folder):

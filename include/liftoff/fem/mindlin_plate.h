@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/physical_units.h>
+#include <liftoff/fem/base_layer.h>
 
 #include <vector>
 
@@ -18,28 +19,6 @@ namespace liftoff
   {
     double thickness = 1.0;
     double modulus   = 1.0;
-  };
-
-
-  /// The coefficients of a cell's energies in the plate's units (D, rho H
-  /// and F0 of the plate), for its slab's section.
-  struct SectionCoefficients
-  {
-    /// D_s / D = (E_s / E) (H_s / H)^3.
-    double bending;
-    /// chi G_s H_s L^2 / D.
-    double shear;
-    /// rho H_s / (rho H), also the self-weight's factor.
-    double mass;
-    /// rho H_s^3 / 12 over rho H L^2.
-    double rotary;
-    /// H_s / L.
-    double thickness_ratio;
-    /// A temperature's moment D_s (1 + nu) alpha dT / H_s over the plate's
-    /// D (1 + nu) alpha dT / H: (E_s / E) (H_s / H)^2.
-    double thermal_moment;
-    /// E_s / E, the factor of a temperature's stresses.
-    double modulus;
   };
 
 
@@ -83,11 +62,14 @@ namespace liftoff
     /// slab number, the cells' material id; empty where every slab is the
     /// plate.
     std::vector<SlabSection> slab_sections;
+    /// The base under the slabs (Base), if any.
+    BaseLayer base;
     /// Whether some slab's section is not the plate's.
     bool
     has_slab_sections() const;
     /// The coefficients of the cells of slab `slab`; the plate's own where
-    /// the slabs are alike, so a uniform plate computes the same numbers.
+    /// the slabs are alike, so a uniform plate computes the same numbers;
+    /// with the base under it where there is one.
     SectionCoefficients
     section(const unsigned int slab) const;
     /// The slabs' sections (Slabs/Thicknesses, Modulus ratios) for the

@@ -31,6 +31,9 @@ namespace liftoff
   {
     double top    = 0;
     double bottom = 0;
+    /// The base's faces, where there is a base (BaseLayer).
+    double base_top    = 0;
+    double base_bottom = 0;
   };
 
   /**
@@ -118,6 +121,12 @@ namespace liftoff
               PrincipalValues                           &out) const;
 
   private:
+    /// How many of the fields the output has: the moments, shear forces
+    /// and bed-side stresses; `with_faces` the faces' (the base's too,
+    /// where there is one).
+    unsigned int
+    n_fields(const bool with_faces) const;
+
     const MindlinPlate                    &plate;
     const Mapping<2>                      &mapping;
     const TransverseShearStrain::Treatment treatment;

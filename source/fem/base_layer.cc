@@ -1,0 +1,177 @@
+#include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
+#include <liftoff/base/selection.h>
+#include <liftoff/fem/base_layer.h>
+
+#include <cmath>
+
+namespace liftoff
+{
+  namespace
+  {
+    const Selection<BaseLayer::Interface> interfaces = {
+      {"none", BaseLayer::Interface::none},
+      {"bonded", BaseLayer::Interface::bonded},
+      {"unbonded", BaseLayer::Interface::unbonded}};
+
+    /// One layer of a section through the thickness, z along w (into the
+    /// bed), in units of L and of the plate's E / (1 - nu^2) and rho.
+    struct Layer
+    {
+      double top, thickness, plane_modulus, shear_modulus, density;
+      /// The axis it bends about.
+      double axis;
+
+      double
+      middle() const
+      {
+        return top + 0.5 * thickness;
+      }
+      /// Its bending stiffness about its axis.
+      double
+      bending() const
+      {
+        const double offset = middle() - axis;
+        return plane_modulus
+               * (thickness * thickness * thickness / 12.0
+                  + thickness * offset * offset);
+      }
+      double
+      rotary() const
+      {
+        const double offset = middle() - axis;
+        return density
+               * (thickness * thickness * thickness / 12.0
+                  + thickness * offset * offset);
+      }
+      /// The stress law at depth z of the layer in a section of stiffness
+      /// D; `alone`: the stress per moment of the slab's own section at z
+      /// (0 in the base, which has no temperature).
+      FaceStressLaw
+      face(const double z, const double D, const double alone) const
+      {
+        const double per_moment = plane_modulus * (z - axis) / D;
+        return {per_moment, alone - per_moment};
+      }
+    };
+  } // namespace
+
+
+  void
+  BaseLayer::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Base");
+    prm.declare_entry(
+      "Interface",
+      "none",
+      interfaces.pattern(),
+      "How the slabs rest on a base layer under them, on the bed. none: no "
+      "base. bonded: one composite section (the layers bend about its "
+      "neutral axis; full shear transfer). unbonded: w shared, each layer "
+      "bends about its own mid-plane (D = D_slab + D_base, the moment shared "
+      "by stiffness; no shear transfer). Slip and friction between the "
+      "layers are not modelled."
+        + quantity("text"));
+    prm.declare_entry("Thickness",
+                      "0",
+                      Patterns::Double(0.0, 1.0),
+                      "H_b of the base: in m in an SI scene, in units of L "
+                      "(as Plate/Thickness ratio) in a dimensionless one; "
+                      "within (0, 1] L where there is a base."
+                        + quantity("length"));
+    prm.declare_entry("Modulus ratio",
+                      "1",
+                      Patterns::Double(1e-6, 1e6),
+                      "E_b / E, the base's Young's modulus over the plate's "
+                      "(Units/Young's modulus in an SI scene), within [1e-6, "
+                      "1e6]."
+                        + quantity("number"));
+    prm.declare_entry("Poisson ratio",
+                      "0.2",
+                      Patterns::Double(-1.0, 0.5),
+                      "nu_b of the base, in (-1, 0.5). The plate's Poisson "
+                      "ratio couples the composite's moments; nu_b sets "
+                      "the base's plane modulus E_b / (1 - nu_b^2) and its "
+                      "shear modulus."
+                        + quantity("number"));
+    prm.declare_entry("Density ratio",
+                      "1",
+                      Patterns::Double(0.0, 1e3),
+                      "rho_b / rho, the base's density over the plate's; "
+                      "its weight is part of Loads' self-weight."
+                        + quantity("number"));
+    prm.leave_subsection();
+  }
+
+
+  void
+  BaseLayer::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Base");
+    interface     = interfaces.parse(prm.get("Interface"), "Base/Interface");
+    thickness     = prm.get_double("Thickness");
+    modulus_ratio = prm.get_double("Modulus ratio");
+    poisson_ratio = prm.get_double("Poisson ratio");
+    density_ratio = prm.get_double("Density ratio");
+    const std::string thickness_text = prm.get("Thickness");
+    prm.leave_subsection();
+
+    AssertThrow(present() || thickness == 0,
+                ExcMessage("Base/Thickness = " + thickness_text
+                           + " is given but Base/Interface = none: name the "
+                             "interface (bonded or unbonded), or leave the "
+                             "thickness at 0."));
+    AssertThrow(!present() || thickness > 0,
+                ExcMessage("Base/Thickness must be > 0 with a base "
+                           "(Base/Interface is not none)."));
+    AssertThrow(poisson_ratio > -1.0 && poisson_ratio < 0.5,
+                ExcMessage("Base/Poisson ratio must lie in (-1, 0.5)."));
+  }
+
+
+  SectionCoefficients
+  BaseLayer::under(const SectionCoefficients &slab,
+                   const double               nu,
+                   const double               chi,
+                   const double               delta) const
+  {
+    // The plate's E / (1 - nu^2) is 12 / delta^3 and its rho is 1 / delta
+    // in the plate's units (D = 1, rho H = 1).
+    const double plate_modulus = 12.0 / (delta * delta * delta);
+    const double h_s           = slab.thickness_ratio;
+    const double h_b           = thickness;
+    const double e_s           = plate_modulus * slab.modulus;
+    const double e_b           = plate_modulus * modulus_ratio * (1 - nu * nu)
+                       / (1 - poisson_ratio * poisson_ratio);
+    Layer slab_layer{-0.5 * h_s, h_s, e_s, 0.5 * e_s * (1 - nu), 1 / delta, 0};
+    Layer base_layer{0.5 * h_s,
+                     h_b,
+                     e_b,
+                     0.5 * e_b * (1 - poisson_ratio),
+                     density_ratio / delta,
+                     0};
+    if (interface == Interface::bonded)
+      {
+        const double axis =
+          e_b * h_b * base_layer.middle() / (e_s * h_s + e_b * h_b);
+        slab_layer.axis = base_layer.axis = axis;
+      }
+    else
+      base_layer.axis = base_layer.middle();
+
+    SectionCoefficients composite = slab;
+    const double        D         = slab_layer.bending() + base_layer.bending();
+    composite.bending             = D;
+    composite.shear =
+      chi * (slab_layer.shear_modulus * h_s + base_layer.shear_modulus * h_b);
+    composite.mass        = (h_s + density_ratio * h_b) / delta;
+    composite.rotary      = slab_layer.rotary() + base_layer.rotary();
+    const double alone    = 6.0 / (h_s * h_s);
+    composite.top         = slab_layer.face(-0.5 * h_s, D, -alone);
+    composite.bottom      = slab_layer.face(0.5 * h_s, D, alone);
+    composite.base_top    = base_layer.face(0.5 * h_s, D, 0);
+    composite.base_bottom = base_layer.face(0.5 * h_s + h_b, D, 0);
+    composite.has_base    = true;
+    return composite;
+  }
+} // namespace liftoff
