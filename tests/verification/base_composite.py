@@ -15,6 +15,11 @@
   chi sum G_i H_i (a second scene that knows no base, its load and bed
   scaled by 1 / D): the same w, and moments and shear forces D times its
   own;
+- a slab curled by a linear temperature difference on a bonded and an
+  unbonded base, nearly free (a bed of k = 1e-3 D / L^4): the face
+  stresses of the restrained curl against the layered beam's closed form
+  (no axial force, no moment: curvature -E_s alpha dT H_s^2 / (12 D)
+  about the composite's axis or each layer's own);
 - both weights: a plate on a bilateral bed under its self-weight settles
   at q (H + rho_b / rho H_b) / (H k);
 - the mass: the plate bounces on the bilateral bed as a rigid body at
@@ -143,6 +148,48 @@ def thick_slab(work, interface):
               f" = D times the twin's: {error:.1e}")
 
 
+def restrained_curl(work, interface):
+    delta, h_b, e_b, alpha, dt = 0.02, 0.03, 0.5, 1e-3, -1.0
+    D, _, _, _ = section(interface, delta, h_b, e_b, NU)
+    e_s = 12 / delta ** 3
+    e_base = e_s * e_b
+    # The slab's thermal strain -alpha dT z / H (the top, z = -H/2, at
+    # dT / 2 above the middle); the curvature that leaves no moment.
+    kappa = -e_s * alpha * dt * delta ** 2 / (12 * D)
+    if interface == "bonded":
+        axis_s = axis_b = (e_base * h_b * 0.5 * (delta + h_b)
+                           / (e_s * delta + e_base * h_b))
+    else:
+        axis_s, axis_b = 0.0, 0.5 * (delta + h_b)
+    # Biaxial and isotropic: sigma = E (1 + nu) / (1 - nu^2) (eps - eps_T).
+    exact = {
+        "top": e_s * (1 + NU) * (kappa * (-delta / 2 - axis_s)
+                                 - alpha * dt / 2),
+        "bottom": e_s * (1 + NU) * (kappa * (delta / 2 - axis_s)
+                                    + alpha * dt / 2),
+        "base_top": e_base * (1 + NU) * kappa * (delta / 2 - axis_b),
+        "base_bottom": e_base * (1 + NU) * kappa * (delta / 2 + h_b - axis_b)}
+    probes = [f"sigma_1_{f}(0; 0)" for f in FACES]
+    row = first_row(run_scene_or_fail(LIFTOFF, work, f"curl_{interface}",
+                                      scene_text(
+        {"Analysis": {"Type": "static"},
+         "Plate": {"Thickness ratio": delta, "Poisson ratio": NU},
+         "Foundation": {"Model": "bilateral", "Stiffness": 1e-3},
+         "Discretization": {"Cells along x": 8, "Cells along y": 8},
+         "Loads": {"Temperature load 1": {"Magnitude": dt,
+                                          "Expansion coefficient": alpha}},
+         "Output": {"Write energies": "false",
+                    "Probe quantities": ", ".join(probes)}},
+        base(interface, h_b, e_b, NU))))
+    scale = max(abs(v) for v in exact.values())
+    for face in FACES:
+        value = row[f"sigma_1_{face}(0;0)"]
+        error = abs(value - exact[face]) / scale
+        check(error < 1e-3, f"{interface}, restrained curl: sigma_1_{face} "
+              f"{value:.6e} against the layered closed form "
+              f"{exact[face]:.6e}: {error:.1e} of the largest")
+
+
 def weights(work):
     delta, h_b, rho_b, stiffness, weight = 0.05, 0.04, 0.9, 200.0, 3.0
     _, _, mass, _ = section("bonded", delta, h_b, 0.5, 0.2, rho_b)
@@ -186,6 +233,7 @@ with tempfile.TemporaryDirectory() as work:
     for interface in ("bonded", "unbonded"):
         kirchhoff_limit(work, interface)
         thick_slab(work, interface)
+        restrained_curl(work, interface)
     weights(work)
     bounce(work)
 finish()
