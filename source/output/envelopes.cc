@@ -2,6 +2,7 @@
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mesh_refinement.h>
+#include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/output/envelopes.h>
 #include <liftoff/output/point_fields.h>
 #include <liftoff/output/resultant_sweep.h>
@@ -29,7 +30,8 @@ namespace liftoff
     using Values   = ResultantSweep::Values;
     using Quantity = PhysicalUnits::Quantity;
 
-    const std::array<Kind, 7> kinds = {
+    // The face stresses' are the last four, the base's last of all.
+    const std::array<Kind, 9> kinds = {
       {{"w_max", 1, [](const Values &v) { return v.w; }, Quantity::deflection},
        {"w_min", -1, [](const Values &v) { return v.w; }, Quantity::deflection},
        {"foundation_pressure_max",
@@ -45,7 +47,16 @@ namespace liftoff
        {"sigma_1_bottom_max",
         1,
         [](const Values &v) { return v.faces.bottom; },
+        Quantity::pressure},
+       {"sigma_1_base_top_max",
+        1,
+        [](const Values &v) { return v.faces.base_top; },
+        Quantity::pressure},
+       {"sigma_1_base_bottom_max",
+        1,
+        [](const Values &v) { return v.faces.base_bottom; },
         Quantity::pressure}}};
+    constexpr unsigned int n_kinds_without_faces = 5;
   } // namespace
 
 
@@ -67,14 +78,15 @@ namespace liftoff
       "false",
       Patterns::Bool(),
       "With Write envelopes, also the largest principal stress at the top "
-      "face (sigma_1_top_max) and at the bed-side face (sigma_1_bottom_max) "
-      "at every output point, with their times (costs the face stresses at "
-      "every output point per step).");
+      "face (sigma_1_top_max) and at the bed-side face (sigma_1_bottom_max), "
+      "and with a base at its faces (sigma_1_base_top_max, "
+      "sigma_1_base_bottom_max), at every output point, with their times "
+      "(costs the face stresses at every output point per step).");
   }
 
 
   void
-  Envelopes::parse_parameters(ParameterHandler &prm, const SceneView &)
+  Envelopes::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
     enabled           = prm.get_bool("Write envelopes");
     const bool stress = prm.get_bool("Write stress envelopes");
@@ -82,8 +94,9 @@ namespace liftoff
                 ExcMessage("Output/Write stress envelopes = true adds the face "
                            "stresses to the envelopes: it needs Output/Write "
                            "envelopes = true."));
-    // The face stresses' envelopes are the last of `kinds`.
-    const unsigned int n_kinds = stress ? kinds.size() : kinds.size() - 2;
+    const unsigned int n_kinds =
+      n_kinds_without_faces
+      + (stress ? FaceStresses::count(scene.plate.base.present()) : 0);
     envelopes.clear();
     for (unsigned int e = 0; e < n_kinds; ++e)
       envelopes.push_back({kinds[e].name, {}, {}});
@@ -93,7 +106,7 @@ namespace liftoff
   bool
   Envelopes::needs_face_stresses() const
   {
-    return enabled && envelopes.size() == kinds.size();
+    return enabled && envelopes.size() > n_kinds_without_faces;
   }
 
 

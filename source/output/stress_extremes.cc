@@ -2,6 +2,7 @@
 
 #include <liftoff/base/archives.h>
 #include <liftoff/fem/discretization.h>
+#include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/output/resultant_sweep.h>
 #include <liftoff/output/run_summary.h>
 #include <liftoff/output/scene_view.h>
@@ -18,7 +19,14 @@ namespace liftoff
 {
   namespace
   {
-    const std::array<const char *, 2> face_names = {{"top", "bottom"}};
+    /// A face's name in the summary: "top", "base top".
+    std::string
+    face_text(const unsigned int face)
+    {
+      std::string name = FaceStresses::name(face);
+      std::replace(name.begin(), name.end(), '_', ' ');
+      return name;
+    }
 
     /// A number with 3 significant digits and no exponent between 1e-3
     /// and 1e6, for the summary's line: 1.19, 1509, 0.004.
@@ -70,10 +78,13 @@ namespace liftoff
 
 
   void
-  StressExtremes::parse_parameters(ParameterHandler &prm, const SceneView &)
+  StressExtremes::parse_parameters(ParameterHandler &prm,
+                                   const SceneView  &scene)
   {
     writes_summary = prm.get_bool("Write stress extremes");
     writes_history = prm.get_bool("Write stress history");
+    n_faces        = FaceStresses::count(scene.plate.base.present());
+    run_maxima.assign(n_faces, {});
   }
 
 
@@ -98,20 +109,19 @@ namespace liftoff
       return;
     using Quantity = PhysicalUnits::Quantity;
     std::vector<HistoryColumns::Column> group;
-    for (const std::string face : face_names)
+    for (unsigned int face = 0; face < n_faces; ++face)
       {
-        const std::string name = "max_sigma_1_" + face;
+        const std::string name =
+          std::string("max_sigma_1_") + FaceStresses::name(face);
         group.push_back({name, Quantity::pressure});
         group.push_back({name + "_x", Quantity::length});
         group.push_back({name + "_y", Quantity::length});
         group.push_back({name + "_slab", Quantity::number});
       }
-    history.add_columns(group, [](const StepData &step) {
+    history.add_columns(group, [faces = n_faces](const StepData &step) {
       const unsigned int n_slabs =
         step.scene.discretization.geometry().slabs().n_slabs();
-      Maxima step_maxima;
-      for (auto &of_slab : step_maxima)
-        of_slab.resize(n_slabs);
+      Maxima step_maxima(faces, std::vector<LocatedMaximum>(n_slabs));
       consider_step(step, step_maxima);
       std::vector<double> values;
       for (const auto &of_slab : step_maxima)
@@ -148,9 +158,11 @@ namespace liftoff
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         const ResultantSweep::Values &v = values[k];
-        AssertIndexRange(v.slab, maxima[top].size());
-        maxima[top][v.slab].consider(v.faces.top, points[k], tau);
-        maxima[bottom][v.slab].consider(v.faces.bottom, points[k], tau);
+        for (unsigned int face = 0; face < maxima.size(); ++face)
+          {
+            AssertIndexRange(v.slab, maxima[face].size());
+            maxima[face][v.slab].consider(v.faces.of(face), points[k], tau);
+          }
       }
   }
 
@@ -185,7 +197,7 @@ namespace liftoff
 
 
   StressExtremes::Extreme
-  StressExtremes::largest(const Face face) const
+  StressExtremes::largest(const unsigned int face) const
   {
     return reduce(run_maxima[face], comm);
   }
@@ -202,15 +214,22 @@ namespace liftoff
     const double stress_scale = si ? 1e-6 * units.scale(Quantity::pressure) : 1;
     const std::string stress_unit =
       si ? "MPa" : units.unit_symbol(Quantity::pressure);
-    const double                 length = units.scale(Quantity::length);
-    const double                 time   = units.scale(Quantity::time);
-    const std::array<Extreme, 2> faces  = {{largest(top), largest(bottom)}};
-    const unsigned int           larger =
-      faces[bottom].where.value >= faces[top].where.value ? bottom : top;
+    const double         length = units.scale(Quantity::length);
+    const double         time   = units.scale(Quantity::time);
+    std::vector<Extreme> faces;
+    // Of equal values, the later face (the bottom before the top), as the
+    // slab alone has always chosen.
+    unsigned int larger = 0;
+    for (unsigned int face = 0; face < n_faces; ++face)
+      {
+        faces.push_back(largest(face));
+        if (faces[face].where.value >= faces[larger].where.value)
+          larger = face;
+      }
     const Extreme &e    = faces[larger];
     std::string    line = short_number(stress_scale * e.where.value) + " "
-                       + stress_unit + ", " + face_names[larger]
-                       + " face, slab " + std::to_string(e.slab + 1) + ", at ("
+                       + stress_unit + ", " + face_text(larger) + " face, slab "
+                       + std::to_string(e.slab + 1) + ", at ("
                        + short_number(length * e.where.point[0]) + ", "
                        + short_number(length * e.where.point[1]) + ")";
     if (si)
@@ -218,11 +237,11 @@ namespace liftoff
     if (is_dynamic)
       line += ", t = " + short_number(time * e.where.time) + (si ? " s" : "");
     summary.add("largest tension", line);
-    for (const unsigned int face : {top, bottom})
+    for (unsigned int face = 0; face < n_faces; ++face)
       {
         const Extreme &f = faces[face];
         summary.add(
-          std::string("largest tension, ") + face_names[face] + " face",
+          "largest tension, " + face_text(face) + " face",
           RunSummary::Section{
             {"sigma_1" + (si ? std::string(" [MPa]") : std::string()),
              stress_scale * f.where.value},

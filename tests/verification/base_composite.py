@@ -20,6 +20,11 @@
   stresses of the restrained curl against the layered beam's closed form
   (no axial force, no moment: curvature -E_s alpha dT H_s^2 / (12 D)
   about the composite's axis or each layer's own);
+- the design outputs of an SI slab on a bonded base under a wheel: the
+  largest tension of each of the four faces in summary.json and
+  history.csv is the probe's at the wheel's centre (where the bottom
+  faces' peak), and each is E_i (z - z_axis) / D M_1 there with the
+  section in metres and pascals; the envelopes have the base's faces;
 - both weights: a plate on a bilateral bed under its self-weight settles
   at q (H + rho_b / rho H_b) / (H k);
 - the mass: the plate bounces on the bilateral bed as a rigid body at
@@ -28,6 +33,7 @@
     base_composite.py LIFTOFF
 """
 
+import json
 import math
 import os
 import sys
@@ -190,6 +196,61 @@ def restrained_curl(work, interface):
               f"{exact[face]:.6e}: {error:.1e} of the largest")
 
 
+def design_outputs(work):
+    h_s, h_b, e, e_b, nu = 0.25, 0.15, 30e9, 0.3, 0.15
+    plane = e / (1 - nu ** 2)
+    axis = e_b * h_b * 0.5 * (h_s + h_b) / (h_s + e_b * h_b)
+    D = plane * (h_s ** 3 / 12 + h_s * axis ** 2
+                 + e_b * (h_b ** 3 / 12 + h_b * (0.5 * (h_s + h_b) - axis) ** 2))
+    depth = {"top": -h_s / 2, "bottom": h_s / 2, "base_top": h_s / 2,
+             "base_bottom": h_s / 2 + h_b}
+    probes = ["M_1(0; 0)"] + [f"sigma_1_{f}(0; 0)" for f in FACES]
+    folder = run_scene_or_fail(LIFTOFF, work, "design", scene_text(
+        {"Units": {"System": "SI", "Length": 6, "Width": 6, "Thickness": h_s,
+                   "Young's modulus": e, "Density": 2400,
+                   "Subgrade modulus": 50e6, "Gravity": 0},
+         "Analysis": {"Type": "static"},
+         "Plate": {"Poisson ratio": nu},
+         "Foundation": {"Model": "tensionless"},
+         "Discretization": {"Symmetry": "quarter", "Cells along x": 12,
+                            "Cells along y": 12},
+         "Loads": {"Pressure 1": {"Magnitude": 0.7e6,
+                                  "Region": "-0.1, 0.1, -0.1, 0.1"}},
+         "Output": {"Write energies": "false", "VTU interval": 0,
+                    "Write stress extremes": "true",
+                    "Write stress history": "true",
+                    "Write envelopes": "true",
+                    "Write stress envelopes": "true",
+                    "Probe quantities": ", ".join(probes)}},
+        base("bonded", h_b, e_b, nu)))
+    row = first_row(folder)
+    with open(os.path.join(folder, "summary.json")) as f:
+        summary = json.load(f)
+    m_1 = row["M_1(0;0) [N m/m]"]
+    for face in FACES:
+        probe = row[f"sigma_1_{face}(0;0) [Pa]"]
+        modulus = plane * (e_b if face.startswith("base") else 1)
+        own = modulus * (depth[face] - axis) / D * m_1
+        check(abs(probe / own - 1) < 1e-9, f"SI bonded: sigma_1_{face} at "
+              f"the wheel {probe:.6e} Pa = E_i (z - z_axis) / D M_1 "
+              f"{own:.6e}")
+        if not face.endswith("bottom"):
+            continue
+        text = face.replace("_", " ")
+        largest = summary[f"largest tension, {text} face"]["sigma_1 [MPa]"]
+        column = row[f"max_sigma_1_{face} [Pa]"]
+        # The csv's 12 digits.
+        check(abs(largest * 1e6 / probe - 1) < 1e-10
+              and abs(column / probe - 1) < 1e-10,
+              f"SI bonded: the largest tension of the {text} face "
+              f"{largest:.6f} MPa (summary), {column:.6e} Pa (history) is "
+              f"the wheel's")
+    with open(os.path.join(folder, "envelope.0000.vtu")) as f:
+        fields = f.read()
+    check(all(f"sigma_1_{face}_max" in fields for face in FACES),
+          "SI bonded: the stress envelopes of all four faces")
+
+
 def weights(work):
     delta, h_b, rho_b, stiffness, weight = 0.05, 0.04, 0.9, 200.0, 3.0
     _, _, mass, _ = section("bonded", delta, h_b, 0.5, 0.2, rho_b)
@@ -234,6 +295,7 @@ with tempfile.TemporaryDirectory() as work:
         kirchhoff_limit(work, interface)
         thick_slab(work, interface)
         restrained_curl(work, interface)
+    design_outputs(work)
     weights(work)
     bounce(work)
 finish()

@@ -17,7 +17,8 @@ namespace liftoff
   /**
    * Stresses as design quantities: the largest principal stress at each
    * face of the plate, the face away from the bed (top, where top-down
-   * cracks start) and the bed-side face (bottom, bottom-up cracks), each
+   * cracks start) and the bed-side face (bottom, bottom-up cracks), and
+   * with a base (BaseLayer) the base's top and bottom faces, each
    * slab's with its own thickness and with a temperature profile's stress
    * of that face (StressResultants' sigma_1_top and sigma_1_bottom, read at
    * the output points from the step's ResultantSweep). With `Write stress
@@ -34,12 +35,6 @@ namespace liftoff
   class StressExtremes : public Output
   {
   public:
-    enum Face : unsigned int
-    {
-      top    = 0,
-      bottom = 1
-    };
-
     /// The largest principal stress of a face over the plate (solver's
     /// units), with its point, time and slab (0, 1, ...).
     struct Extreme
@@ -77,9 +72,10 @@ namespace liftoff
     void
     add_to(RunSummary &summary) const override;
 
-    /// The largest of `face` over the steps so far (collective).
+    /// The largest of `face` (FaceStresses' order) over the steps so far
+    /// (collective).
     Extreme
-    largest(const Face face) const;
+    largest(const unsigned int face) const;
 
     /// The largest of one face's maxima over slabs and ranks (collective):
     /// slab by slab over the ranks, then over the slabs by LocatedMaximum's
@@ -88,13 +84,16 @@ namespace liftoff
     reduce(const std::vector<LocatedMaximum> &of_slab, const MPI_Comm comm);
 
   private:
-    /// Per face, per slab: the largest this rank has met.
-    using Maxima = std::array<std::vector<LocatedMaximum>, 2>;
+    /// Per face (FaceStresses' order), per slab: the largest this rank has
+    /// met.
+    using Maxima = std::vector<std::vector<LocatedMaximum>>;
 
-    bool          writes_summary = false;
-    bool          writes_history = false;
-    bool          is_dynamic     = false;
-    MPI_Comm      comm           = MPI_COMM_SELF;
+    bool writes_summary = false;
+    bool writes_history = false;
+    /// The slab's two faces, and the base's where there is one.
+    unsigned int  n_faces    = 2;
+    bool          is_dynamic = false;
+    MPI_Comm      comm       = MPI_COMM_SELF;
     PhysicalUnits units;
     Maxima        run_maxima;
 

@@ -34,6 +34,29 @@ namespace liftoff
     /// The base's faces, where there is a base (BaseLayer).
     double base_top    = 0;
     double base_bottom = 0;
+
+    /// The faces in the order of name(): the slab's top and bottom, then
+    /// the base's.
+    double
+    of(const unsigned int face) const
+    {
+      const double values[] = {top, bottom, base_top, base_bottom};
+      return values[face];
+    }
+    /// "top", "bottom", "base_top", "base_bottom": the faces in the names
+    /// of fields and columns (sigma_1_ + name).
+    static const char *
+    name(const unsigned int face)
+    {
+      const char *names[] = {"top", "bottom", "base_top", "base_bottom"};
+      return names[face];
+    }
+    /// How many faces a section has: the slab's two, and the base's.
+    static unsigned int
+    count(const bool with_base)
+    {
+      return with_base ? 4 : 2;
+    }
   };
 
   /**
