@@ -11,21 +11,36 @@ namespace liftoff
   void
   FoundationPoints::setup(const Discretization &disc, const bool with_gradients)
   {
+    const auto &fe = disc.dof_handler.get_fe();
+    setup(disc, with_gradients, {{PlateFields::bed_component(fe), 1.0}});
+  }
+
+
+  void
+  FoundationPoints::setup(const Discretization   &disc,
+                          const bool              with_gradients,
+                          const std::vector<Part> measured)
+  {
     mesh               = &disc;
     const auto     &fe = disc.dof_handler.get_fe();
     const QGauss<2> rule(fe.degree + 1);
     q_points_per_cell = rule.size();
 
     w_dofs.clear();
+    std::vector<double> signs;
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (fe.system_to_component_index(i).first == PlateFields::bed_component)
-        w_dofs.push_back(i);
+      for (const Part &part : measured)
+        if (fe.system_to_component_index(i).first == part.component)
+          {
+            w_dofs.push_back(i);
+            signs.push_back(part.factor);
+          }
 
     // Lagrange shape values at the Gauss points do not depend on the cell.
     values.reinit(q_points_per_cell, w_dofs.size());
     for (unsigned int q = 0; q < q_points_per_cell; ++q)
       for (unsigned int k = 0; k < w_dofs.size(); ++k)
-        values(q, k) = fe.shape_value(w_dofs[k], rule.point(q));
+        values(q, k) = signs[k] * fe.shape_value(w_dofs[k], rule.point(q));
 
     // Gradients only for a shear layer: they depend on the cell.
     FEValues<2>                          fe_values(disc.mapping(),

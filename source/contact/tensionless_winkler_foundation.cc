@@ -2,6 +2,7 @@
 
 #include <liftoff/base/archives.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
+#include <liftoff/fem/plate_fields.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,13 +31,30 @@ namespace liftoff
   void
   TensionlessWinklerFoundation::setup(const Discretization &disc)
   {
-    points.setup(disc, contact_law.has_layer());
+    points.setup(disc,
+                 contact_law.has_layer(),
+                 measured_fields(disc.dof_handler.get_fe()));
     contact_law.setup(points);
     contact_rule.use_pressure(contact_law.pressure());
     reset_status(points.n_points(),
                  contact_law.model() == ContactLaw::Model::none ? 0 : 1,
                  disc.mpi_communicator);
     term.setup(points, contact_law.layer_modulus());
+  }
+
+
+  std::vector<FoundationPoints::Part>
+  TensionlessWinklerFoundation::measured_fields(
+    const FiniteElement<2> &fe) const
+  {
+    return {{PlateFields::bed_component(fe), 1.0}};
+  }
+
+
+  ContactLaw &
+  TensionlessWinklerFoundation::own_law()
+  {
+    return contact_law;
   }
 
 

@@ -12,7 +12,8 @@ namespace liftoff
     const Selection<BaseLayer::Interface> interfaces = {
       {"none", BaseLayer::Interface::none},
       {"bonded", BaseLayer::Interface::bonded},
-      {"unbonded", BaseLayer::Interface::unbonded}};
+      {"unbonded", BaseLayer::Interface::unbonded},
+      {"tensionless", BaseLayer::Interface::tensionless}};
 
     /// One layer of a section through the thickness, z along w (into the
     /// bed), in units of L and of the plate's E / (1 - nu^2) and rho.
@@ -69,9 +70,24 @@ namespace liftoff
       "base. bonded: one composite section (the layers bend about its "
       "neutral axis; full shear transfer). unbonded: w shared, each layer "
       "bends about its own mid-plane (D = D_slab + D_base, the moment shared "
-      "by stiffness; no shear transfer). Slip and friction between the "
-      "layers are not modelled."
+      "by stiffness; no shear transfer). tensionless: the base is a plate "
+      "of its own (w_base, psi_x_base, psi_y_base) and the slab rests on it "
+      "by springs of Interface stiffness that push but never pull, so the "
+      "slab lifts off the base where it curls or rebounds. Slip and "
+      "friction between the layers are not modelled."
         + quantity("text"));
+    prm.declare_entry("Interface stiffness",
+                      "0",
+                      Patterns::Double(0.0, 1e300),
+                      "k_i of tensionless: the pressure between slab and "
+                      "base per unit of w_slab - w_base where they touch "
+                      "(Pa/m in an SI scene; in units of D / L^4, as "
+                      "Foundation/Stiffness, in a dimensionless one); > 0 "
+                      "with Interface = tensionless. A stiff interface "
+                      "(k_i large against the base's k_b = E_b / H_b) "
+                      "approaches unbonded without separation where the "
+                      "slab is pressed."
+                        + quantity("pressure per length"));
     prm.declare_entry("Thickness",
                       "0",
                       Patterns::Double(0.0, 1.0),
@@ -113,6 +129,7 @@ namespace liftoff
     modulus_ratio = prm.get_double("Modulus ratio");
     poisson_ratio = prm.get_double("Poisson ratio");
     density_ratio = prm.get_double("Density ratio");
+    interface_stiffness              = prm.get_double("Interface stiffness");
     const std::string thickness_text = prm.get("Thickness");
     prm.leave_subsection();
 
@@ -124,8 +141,39 @@ namespace liftoff
     AssertThrow(!present() || thickness > 0,
                 ExcMessage("Base/Thickness must be > 0 with a base "
                            "(Base/Interface is not none)."));
+    AssertThrow((interface == Interface::tensionless)
+                  == (interface_stiffness > 0),
+                ExcMessage("Base/Interface stiffness is the springs of "
+                           "Base/Interface = tensionless: give it (> 0) "
+                           "with that interface and leave it at 0 with "
+                           "another."));
     AssertThrow(poisson_ratio > -1.0 && poisson_ratio < 0.5,
                 ExcMessage("Base/Poisson ratio must lie in (-1, 0.5)."));
+  }
+
+
+  SectionCoefficients
+  BaseLayer::own_section(const double nu,
+                         const double chi,
+                         const double delta) const
+  {
+    const double plate_modulus = 12.0 / (delta * delta * delta);
+    const double h             = thickness;
+    const double e             = plate_modulus * modulus_ratio * (1 - nu * nu)
+                     / (1 - poisson_ratio * poisson_ratio);
+    const Layer layer{
+      0, h, e, 0.5 * e * (1 - poisson_ratio), density_ratio / delta, 0.5 * h};
+    SectionCoefficients own;
+    own.bending         = layer.bending();
+    own.shear           = chi * layer.shear_modulus * h;
+    own.mass            = density_ratio * h / delta;
+    own.rotary          = layer.rotary();
+    own.thickness_ratio = h;
+    own.thermal_moment  = 0;
+    own.modulus         = modulus_ratio;
+    own.top             = {-6.0 / (h * h), 0};
+    own.bottom          = {6.0 / (h * h), 0};
+    return own;
   }
 
 

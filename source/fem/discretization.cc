@@ -48,7 +48,7 @@ namespace liftoff
                                    const PhysicalUnits &units)
   {
     plate_geometry.parse_parameters(prm, plate, units);
-    plate_element.parse_parameters(prm);
+    plate_element.parse_parameters(prm, plate.base.n_layers());
     // Isoparametric: a mapping of higher degree than the element's (Q2
     // under Q1 cells) makes w = x no function of the element, and a free
     // plate resisted a rigid tilt (a load's resultant 3 % off its point).
@@ -186,8 +186,8 @@ namespace liftoff
 
     make_constraints();
 
-    Table<2, DoFTools::Coupling> every_component(PlateElement::n_components,
-                                                 PlateElement::n_components);
+    const unsigned int n_components = dof_handler.get_fe().n_components();
+    Table<2, DoFTools::Coupling> every_component(n_components, n_components);
     every_component.fill(DoFTools::always);
     // The dynamic pattern (a vector per row) lives only until the
     // compressed one is built from it.
@@ -236,10 +236,20 @@ namespace liftoff
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     plate_geometry.slabs().tie(dof_handler, constraints);
 
-    const Functions::ZeroFunction<2> zero(PlateElement::n_components);
+    const unsigned int layers = PlateFields::n_layers(dof_handler.get_fe());
+    const Functions::ZeroFunction<2> zero(dof_handler.get_fe().n_components());
+    // A support or a symmetry plane holds every layer alike.
     for (const auto &[id, mask] : plate_geometry.held_components())
       VectorTools::interpolate_boundary_values(
-        mapping(), dof_handler, id, zero, constraints, mask);
+        mapping(),
+        dof_handler,
+        id,
+        zero,
+        constraints,
+        PlateFields::mask(mask[PlateFields::w],
+                          mask[PlateFields::psi_x],
+                          mask[PlateFields::psi_y],
+                          layers));
     hold_projected_rotations();
     constraints.close();
     // Collective: what depends on it (PlateMatrices::quadratic_form's
@@ -272,13 +282,19 @@ namespace liftoff
     // sees the face. deal.II's name for psi x n = 0 (psi . t = 0) is
     // compute_normal_flux_constraints, for psi . n = 0 it is
     // compute_no_normal_flux_constraints.
-    const unsigned int psi_x = 1;
-    if (!along.empty())
-      VectorTools::compute_normal_flux_constraints(
-        dof_handler, psi_x, along, constraints, mapping());
-    if (!across.empty())
-      VectorTools::compute_no_normal_flux_constraints(
-        dof_handler, psi_x, across, constraints, mapping());
+    // Every layer's rotation alike.
+    for (unsigned int layer = 0;
+         layer < PlateFields::n_layers(dof_handler.get_fe());
+         ++layer)
+      {
+        const unsigned int psi_x = PlateFields::rotation(0, layer);
+        if (!along.empty())
+          VectorTools::compute_normal_flux_constraints(
+            dof_handler, psi_x, along, constraints, mapping());
+        if (!across.empty())
+          VectorTools::compute_no_normal_flux_constraints(
+            dof_handler, psi_x, across, constraints, mapping());
+      }
   }
 
 
@@ -306,9 +322,13 @@ namespace liftoff
             if (!along)
               direction = cross_product_2d(direction);
             for (const unsigned int v : face->vertex_indices())
-              held_directions[{face->vertex_dof_index(v, 1),
-                               face->vertex_dof_index(v, 2)}]
-                .push_back(direction);
+              for (unsigned int layer = 0;
+                   layer < PlateFields::n_layers(dof_handler.get_fe());
+                   ++layer)
+                held_directions
+                  [{face->vertex_dof_index(v, PlateFields::rotation(0, layer)),
+                    face->vertex_dof_index(v, PlateFields::rotation(1, layer))}]
+                    .push_back(direction);
           }
     for (const auto &[psi, directions] : held_directions)
       for (const Tensor<1, 2> &direction : directions)

@@ -4,11 +4,46 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/fem/initial_conditions.h>
+#include <liftoff/fem/plate_fields.h>
 
 #include <cstdlib>
 
 namespace liftoff
 {
+  namespace
+  {
+    /// The slab's (w, psi_x, psi_y) of a Function given for them, in each
+    /// of `layers` layers: a base of its own starts where the slab does, in
+    /// contact with it.
+    class InEveryLayer : public Function<2>
+    {
+    public:
+      InEveryLayer(const Function<2> &slab, const unsigned int layers)
+          : Function<2>(PlateFields::n_components_of(layers))
+          , slab(slab)
+      {}
+
+      void
+      vector_value(const Point<2> &p, Vector<double> &out) const override
+      {
+        Vector<double> values(PlateFields::n_components);
+        slab.vector_value(p, values);
+        for (unsigned int c = 0; c < out.size(); ++c)
+          out[c] = values[c % PlateFields::per_layer];
+      }
+
+      double
+      value(const Point<2> &p, const unsigned int component) const override
+      {
+        return slab.value(p, component % PlateFields::per_layer);
+      }
+
+    private:
+      const Function<2> &slab;
+    };
+  } // namespace
+
+
   void
   InitialConditions::declare_parameters(ParameterHandler &prm)
   {
@@ -66,7 +101,9 @@ namespace liftoff
     else
       VectorTools::interpolate(disc.mapping(),
                                disc.dof_handler,
-                               *field.function,
+                               InEveryLayer(*field.function,
+                                            PlateFields::n_layers(
+                                              disc.dof_handler.get_fe())),
                                values);
     disc.constraints.distribute(values);
   }

@@ -125,7 +125,9 @@ namespace liftoff
   {
     discretization = &disc;
     segments.clear();
-    w_dofs = DoFTools::extract_dofs(disc.dof_handler, PlateFields::w_mask());
+    w_dofs =
+      DoFTools::extract_dofs(disc.dof_handler,
+                             PlateFields::w_mask(disc.dof_handler.get_fe()));
     const SlabLayout &slabs = disc.geometry().slabs();
     has_springs             = false;
     for (unsigned int j = 0; j < slabs.joints().size(); ++j)

@@ -96,7 +96,7 @@ namespace liftoff
     const double refinement   = std::pow(2.0, discretization.initial_level());
     const double nx           = geometry.coarse_cells_along(0) * refinement;
     const double ny           = geometry.coarse_cells_along(1) * refinement;
-    const double n_components = PlateElement::n_components;
+    const double n_components = discretization.element().fe().n_components();
     n_cells                   = nx * ny;
     n_dofs                    = n_components * (p * nx + 1) * (p * ny + 1);
     // A node couples with the nodes of the cells around it: (2p+1)^2 at a

@@ -159,6 +159,13 @@ namespace liftoff
       per_slab("Modulus ratios", 1.0, 1e-6, 1e6);
     prm.leave_subsection();
 
+    AssertThrow(base.n_layers() == 1 || n_slabs == 1,
+                ExcMessage("Base/Interface = tensionless is built for one "
+                           "slab on its base (not yet under joints): the "
+                           "scene has "
+                           + std::to_string(n_slabs)
+                           + " slabs. Use bonded or unbonded, whose base "
+                             "is jointed with the slabs."));
     slab_sections.clear();
     for (unsigned int s = 0; s < n_slabs; ++s)
       slab_sections.push_back({thickness[s], modulus[s]});
@@ -206,7 +213,7 @@ namespace liftoff
       6.0 / (alone.thickness_ratio * alone.thickness_ratio);
     alone.top    = {-per_moment, 0};
     alone.bottom = {per_moment, 0};
-    if (!base.present())
+    if (!base.is_composite())
       return alone;
     return base.under(alone, poisson_ratio, shear_correction, thickness_ratio);
   }

@@ -142,6 +142,14 @@ namespace liftoff
   {}
 
 
+  PatchIntegrator &
+  PatchIntegrator::on_layer(const unsigned int new_layer)
+  {
+    layer = new_layer;
+    return *this;
+  }
+
+
   BoundingBox<2>
   PatchIntegrator::reference_part(
     const DoFHandler<2>::active_cell_iterator &cell,
@@ -458,8 +466,13 @@ namespace liftoff
           {
             const std::array<double, 3> f = density(values.quadrature_point(q));
             for (unsigned int i = 0; i < n_dofs; ++i)
-              cell_rhs(i) += f[fe.system_to_component_index(i).first]
-                             * values.shape_value(i, q) * values.JxW(q);
+              {
+                // The density acts on its layer's (w, psi_x, psi_y) only.
+                const unsigned int c = fe.system_to_component_index(i).first;
+                if (c / PlateFields::per_layer == layer)
+                  cell_rhs(i) += f[c % PlateFields::per_layer]
+                                 * values.shape_value(i, q) * values.JxW(q);
+              }
           }
         cell->get_dof_indices(dof_indices);
         discretization.constraints.distribute_local_to_global(cell_rhs,

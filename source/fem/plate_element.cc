@@ -50,8 +50,10 @@ namespace liftoff
 
 
   void
-  PlateElement::parse_parameters(ParameterHandler &prm)
+  PlateElement::parse_parameters(ParameterHandler  &prm,
+                                 const unsigned int layers)
   {
+    const unsigned int n_components = PlateFields::n_components_of(layers);
     prm.enter_subsection("Discretization");
     fe_degree       = prm.get_integer("Polynomial degree");
     shear_treatment = treatments.parse(prm.get("Shear integration"),

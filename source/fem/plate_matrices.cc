@@ -18,18 +18,21 @@ namespace liftoff
     // fe_values, added to the cell matrices.
     void
     add_bending_and_inertia(const FEValues<2>         &fe_values,
-                            const MindlinPlate        &plate,
+                            const unsigned int         layer,
+                            const double               nu,
                             const SectionCoefficients &section,
                             FullMatrix<double>        &cell_stiffness,
                             FullMatrix<double>        &cell_mass)
     {
-      const FEValuesExtractors::Scalar w = PlateFields::w_extractor(),
+      const FEValuesExtractors::Scalar w = PlateFields::w_extractor(layer),
                                        psi_x =
-                                         PlateFields::rotation_extractor(0),
+                                         PlateFields::rotation_extractor(0,
+                                                                         layer),
                                        psi_y =
-                                         PlateFields::rotation_extractor(1);
-      const double       nu       = plate.poisson_ratio;
-      const double       twisting = plate.twisting_stiffness();
+                                         PlateFields::rotation_extractor(1,
+                                                                         layer);
+      // (1 - nu) / 2, MindlinPlate::twisting_stiffness() of the layer.
+      const double       twisting = 0.5 * (1.0 - nu);
       const double       rotary   = section.rotary;
       const unsigned int n_dofs   = cell_stiffness.m();
       for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
@@ -65,6 +68,24 @@ namespace liftoff
         }
     }
 
+    // The mass couples w with w, psi_x with psi_x, psi_y with psi_y only
+    // (translational and rotary inertia), and so do the constraints
+    // (hanging nodes and edges tie a component to itself): its own pattern
+    // holds a third of the plate's entries. The entries between other
+    // components are exact zeros, which distribute_local_to_global skips.
+    void
+    reinit_mass(const Discretization &disc, LA::MPI::SparseMatrix &mass)
+    {
+      const unsigned int n_components =
+        disc.dof_handler.get_fe().n_components();
+      Table<2, DoFTools::Coupling> same_component(n_components, n_components);
+      same_component.fill(DoFTools::none);
+      for (unsigned int c = 0; c < n_components; ++c)
+        same_component(c, c) = DoFTools::always;
+      disc.reinit_matrix(mass, same_component);
+    }
+
+
     // The transverse shear energy of one cell with the strains of the
     // scene's treatment.
     void
@@ -90,18 +111,7 @@ namespace liftoff
   {
     discretization = &disc;
     disc.reinit_matrix(stiffness);
-    // The mass couples w with w, psi_x with psi_x, psi_y with psi_y only
-    // (translational and rotary inertia), and so do the constraints
-    // (hanging nodes and edges tie a component to itself): its own
-    // pattern holds a third of the plate's entries. The entries between
-    // other components are exact zeros, which distribute_local_to_global
-    // skips.
-    Table<2, DoFTools::Coupling> same_component(PlateElement::n_components,
-                                                PlateElement::n_components);
-    same_component.fill(DoFTools::none);
-    for (unsigned int c = 0; c < PlateElement::n_components; ++c)
-      same_component(c, c) = DoFTools::always;
-    disc.reinit_matrix(mass, same_component);
+    reinit_mass(disc, mass);
 
     const auto           &fe     = disc.dof_handler.get_fe();
     const unsigned int    p      = fe.degree;
@@ -115,6 +125,12 @@ namespace liftoff
                                        fe,
                                        disc.element().shear_integration());
 
+    // A base of its own (tensionless) is a second layer of the same kind.
+    const unsigned int        layers = PlateFields::n_layers(fe);
+    const SectionCoefficients base =
+      plate.base.own_section(plate.poisson_ratio,
+                             plate.shear_correction,
+                             plate.thickness_ratio);
     FullMatrix<double>                   cell_stiffness(n_dofs, n_dofs);
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
@@ -124,12 +140,21 @@ namespace liftoff
         cell_stiffness = 0;
         cell_mass      = 0;
         fe_values.reinit(cell);
-        shear_strain.reinit(cell);
-
-        const SectionCoefficients section = plate.section(cell->material_id());
-        add_bending_and_inertia(
-          fe_values, plate, section, cell_stiffness, cell_mass);
-        add_shear(shear_strain, section.shear, cell_stiffness);
+        for (unsigned int layer = 0; layer < layers; ++layer)
+          {
+            const SectionCoefficients section =
+              layer == 0 ? plate.section(cell->material_id()) : base;
+            add_bending_and_inertia(fe_values,
+                                    layer,
+                                    layer == 0 ? plate.poisson_ratio
+                                               : plate.base.poisson_ratio,
+                                    section,
+                                    cell_stiffness,
+                                    cell_mass);
+            shear_strain.set_layer(layer);
+            shear_strain.reinit(cell);
+            add_shear(shear_strain, section.shear, cell_stiffness);
+          }
 
         cell->get_dof_indices(dof_indices);
         disc.constraints.distribute_local_to_global(cell_stiffness,

@@ -90,14 +90,25 @@ namespace liftoff
   }
 
 
+  void
+  TransverseShearStrain::set_layer(const unsigned int new_layer)
+  {
+    layer = new_layer;
+  }
+
+
   Tensor<1, 2>
   TransverseShearStrain::cartesian_strain(const FEValues<2> &values,
                                           const unsigned int i,
-                                          const unsigned int q)
+                                          const unsigned int q) const
   {
-    const FEValuesExtractors::Scalar w     = PlateFields::w_extractor(),
-                                     psi_x = PlateFields::rotation_extractor(0),
-                                     psi_y = PlateFields::rotation_extractor(1);
+    const FEValuesExtractors::Scalar w = PlateFields::w_extractor(layer),
+                                     psi_x =
+                                       PlateFields::rotation_extractor(0,
+                                                                       layer),
+                                     psi_y =
+                                       PlateFields::rotation_extractor(1,
+                                                                       layer);
     return values[w].gradient(i, q)
            - Tensor<1, 2>(
              {values[psi_x].value(i, q), values[psi_y].value(i, q)});

@@ -61,7 +61,9 @@ namespace liftoff
             const double g =
               (law.has_gap() ? law.gap_at(input.evaluation_points[q]) : 0.0);
             const double w =
-              input.solution_values[q][PlateFields::bed_component] - g;
+              input.solution_values[q][PlateFields::bed_component(
+                input.solution_values[q].size())]
+              - g;
             computed[q][0] = law.spring_pressure(w);
             computed[q][1] = std::max(-w, 0.0);
           }
@@ -491,12 +493,14 @@ namespace liftoff
                              const LA::MPI::Vector &velocity) const
   {
     plane.attach_dof_handler(disc.dof_handler);
-    plane.add_data_vector(solution, PlateFields::names());
+    const unsigned int layers =
+      PlateFields::n_layers(disc.dof_handler.get_fe());
+    plane.add_data_vector(solution, PlateFields::names(layers));
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      scalar(PlateFields::n_components,
+      scalar(PlateFields::n_components_of(layers),
              DataComponentInterpretation::component_is_scalar);
     plane.add_data_vector(velocity,
-                          PlateFields::names("_dot"),
+                          PlateFields::names(layers, "_dot"),
                           DataOut<2>::type_dof_data,
                           scalar);
     const FoundationPressure pressure(foundation.law());

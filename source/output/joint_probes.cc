@@ -199,7 +199,7 @@ namespace liftoff
                                     | update_quadrature_points);
             fe_values.reinit(cell);
             std::vector<Vector<double>> computed,
-              u(1, Vector<double>(PlateFields::n_components));
+              u(1, Vector<double>(cell->get_fe().n_components()));
             resultants.evaluate(cell, fe_values, computed);
             fe_values.get_function_values(ghosted_u, u);
             out[side]     = u[0][PlateFields::w];

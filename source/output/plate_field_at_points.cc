@@ -20,13 +20,15 @@ namespace liftoff
     for (auto &sum : sums)
       sum.resize(points.size());
     AssertThrow(system.n_base_elements() == 1
-                  && system.n_components() == PlateFields::n_components,
+                  && system.n_components() % PlateFields::per_layer == 0,
                 ExcInternalError());
+    // The slab's fields: a base of its own has its components after them.
     for (unsigned int i = 0; i < system.n_dofs_per_cell(); ++i)
       {
         const auto [component, base_index] =
           system.system_to_component_index(i);
-        shape_functions[component].emplace_back(i, base_index);
+        if (component < PlateFields::n_components)
+          shape_functions[component].emplace_back(i, base_index);
       }
   }
 

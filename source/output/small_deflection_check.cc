@@ -43,7 +43,9 @@ namespace liftoff
     if (!is_checked)
       return;
     const IndexSet w_dofs =
-      DoFTools::extract_dofs(discretization.dof_handler, PlateFields::w_mask());
+      DoFTools::extract_dofs(discretization.dof_handler,
+                             PlateFields::w_mask(
+                               discretization.dof_handler.get_fe()));
     for (const types::global_dof_index i : w_dofs)
       w_entries.push_back(
         discretization.locally_owned_dofs.index_within_set(i));

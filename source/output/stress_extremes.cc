@@ -83,7 +83,7 @@ namespace liftoff
   {
     writes_summary = prm.get_bool("Write stress extremes");
     writes_history = prm.get_bool("Write stress history");
-    n_faces        = FaceStresses::count(scene.plate.base.present());
+    n_faces        = FaceStresses::count(scene.plate.base.is_composite());
     run_maxima.assign(n_faces, {});
   }
 

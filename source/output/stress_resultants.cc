@@ -244,7 +244,7 @@ namespace liftoff
   {
     if (!with_faces)
       return n_fields_by_default;
-    return plate.base.present() ? names.size() : n_fields_of_slab;
+    return plate.base.is_composite() ? names.size() : n_fields_of_slab;
   }
 
 
@@ -435,11 +435,11 @@ namespace liftoff
                              const FEValues<2>                  &values,
                              std::vector<Vector<double>>        &computed) const
   {
-    const unsigned int          n = values.n_quadrature_points;
-    std::vector<Vector<double>> point_values(
-      n, Vector<double>(PlateFields::n_components));
+    const unsigned int          n            = values.n_quadrature_points;
+    const unsigned int          n_components = cell->get_fe().n_components();
+    std::vector<Vector<double>> point_values(n, Vector<double>(n_components));
     std::vector<std::vector<Tensor<1, 2>>> gradients(
-      n, std::vector<Tensor<1, 2>>(PlateFields::n_components));
+      n, std::vector<Tensor<1, 2>>(n_components));
     values.get_function_values(solution, point_values);
     values.get_function_gradients(solution, gradients);
     computed.resize(n, Vector<double>(names.size()));

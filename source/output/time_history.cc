@@ -324,6 +324,7 @@ namespace liftoff
       scene.notes << "liftoff: no probe: 0, 0 lies in the annulus's hole.\n";
     // Only a scene with dashpots dissipates.
     write_dissipated     = scene.bed.law().has_damping();
+    has_interface        = scene.interface != nullptr;
     const LoadSet &loads = scene.loads;
     follow(loads.moving_load_names(), [&loads](const double tau) {
       return loads.moving_load_positions(tau);
@@ -483,6 +484,8 @@ namespace liftoff
       add_energy_columns();
     if (write_resultant)
       add_resultant_columns();
+    if (has_interface)
+      add_interface_columns();
     add_quantity_probe_columns();
     if (write_moment_extremes)
       columns.add({{"max_M_1", Quantity::moment},
@@ -607,6 +610,26 @@ namespace liftoff
 
 
   void
+  TimeHistory::add_interface_columns()
+  {
+    using Quantity = PhysicalUnits::Quantity;
+    columns.add({{"interface_contact_fraction", Quantity::number},
+                 {"interface_resultant", Quantity::force},
+                 {"interface_max_pressure", Quantity::pressure}},
+                [this](const StepData &step) {
+                  const Bed &springs = *step.scene.interface;
+                  const auto r =
+                    springs.diagnostics().resultant(step.state.ghosted_u,
+                                                    ghosted_velocity);
+                  return std::vector<double>{
+                    springs.diagnostics().contact_area_fraction(),
+                    r.force,
+                    r.largest_pressure};
+                });
+  }
+
+
+  void
   TimeHistory::add_quantity_probe_columns()
   {
     std::vector<std::string> quantities;
@@ -707,7 +730,9 @@ namespace liftoff
         // the sign the reflection gives the field.
         probe.sign = mirror_sign(probe.quantity, probe.point, image);
       }
-    w_dofs = DoFTools::extract_dofs(disc.dof_handler, PlateFields::w_mask());
+    w_dofs =
+      DoFTools::extract_dofs(disc.dof_handler,
+                             PlateFields::w_mask(disc.dof_handler.get_fe()));
     gap_at_w_dofs.clear();
     if (write_resultant)
       disc.reinit_ghosted_vector(ghosted_velocity);
@@ -724,7 +749,8 @@ namespace liftoff
     DoFTools::map_dofs_to_support_points(disc.mapping(),
                                          disc.dof_handler,
                                          points,
-                                         PlateFields::w_mask());
+                                         PlateFields::w_mask(
+                                           disc.dof_handler.get_fe()));
     for (const auto i : w_dofs)
       gap_at_w_dofs.push_back(step.scene.bed.law().gap_at(points.at(i)));
   }

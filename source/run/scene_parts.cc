@@ -66,6 +66,7 @@ namespace liftoff
     plate.parse_parameters(prm);
     discretization.parse_parameters(prm, plate, units);
     plate.parse_slab_sections(prm, discretization.geometry());
+    interface_springs.use_base(plate.base);
     mesh_refinement.parse_parameters(prm);
     foundation.parse_parameters(prm);
     joint_springs.parse_parameters(prm);
@@ -165,6 +166,9 @@ namespace liftoff
   std::vector<const SystemTerm *>
   SceneParts::system_terms() const
   {
+    // A base of its own is one slab on it (MindlinPlate refuses joints).
+    if (plate.base.n_layers() == 2)
+      return {&plate_term, &foundation, &interface_springs};
     // Only a plate of several slabs has joints to pass forces.
     if (!joint_dowels.sites().empty())
       return {&plate_term, &foundation, &joint_springs, &joint_dowels};
@@ -184,6 +188,7 @@ namespace liftoff
     return {plate,
             discretization,
             foundation,
+            plate.base.n_layers() == 2 ? &interface_springs : nullptr,
             joint_springs,
             joint_dowels,
             loads,

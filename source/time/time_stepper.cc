@@ -144,8 +144,10 @@ namespace liftoff
     state_.ghosted_rest = state_.rest;
     largest_eigenvalue  = 0;
     if (controller.is_enabled())
-      w_entries = DoFTools::extract_dofs(discretization.dof_handler,
-                                         PlateFields::w_mask());
+      w_entries =
+        DoFTools::extract_dofs(discretization.dof_handler,
+                               PlateFields::w_mask(
+                                 discretization.dof_handler.get_fe()));
   }
 
 

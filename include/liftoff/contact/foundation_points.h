@@ -36,6 +36,19 @@ namespace liftoff
     /// only `with_gradients`.
     void
     setup(const Discretization &discretization, const bool with_gradients);
+    /// A field the points measure: `factor` times a component.
+    struct Part
+    {
+      unsigned int component;
+      double       factor;
+    };
+    /// The same points measuring the sum of the `measured` fields (the
+    /// bed's: its component, 1; an interface's: the slab's w, 1, and the
+    /// base's, -1) instead of the bed's w: "w" below is that sum.
+    void
+    setup(const Discretization   &discretization,
+          const bool              with_gradients,
+          const std::vector<Part> measured);
 
     const Discretization &
     discretization() const;

@@ -146,6 +146,14 @@ namespace liftoff
     load(InputArchive &archive) override;
 
   protected:
+    /// What its springs measure at the points: the bed's w (the lowest
+    /// layer's).
+    virtual std::vector<FoundationPoints::Part>
+    measured_fields(const FiniteElement<2> &fe) const;
+    /// Its law, set by a term that is not the bed (InterfaceSprings).
+    ContactLaw &
+    own_law();
+
     /// w_h - e at the Gauss points, e of the pressure set last.
     void
     point_values(const LA::MPI::Vector &ghosted_u,

@@ -54,9 +54,12 @@ namespace liftoff
    * concrete, granular) and how the slabs rest on it: bonded (one
    * composite section bending about its neutral axis) or unbonded without
    * separation (w shared, each layer bending about its own mid-plane, so
-   * D = D_s + D_b and the moment is shared by stiffness). The bed acts
-   * under the base. Slip and friction between the layers are not modelled:
-   * bonded is full shear transfer, unbonded none.
+   * D = D_s + D_b and the moment is shared by stiffness), or unbonded and
+   * tensionless (the base a second plate layer with its own w, psi_x,
+   * psi_y, joined to the slab by springs k_i that push but never pull,
+   * InterfaceSprings). The bed acts under the base. Slip and friction
+   * between the layers are not modelled: bonded is full shear transfer,
+   * the others none.
    */
   class BaseLayer
   {
@@ -65,7 +68,8 @@ namespace liftoff
     {
       none,
       bonded,
-      unbonded
+      unbonded,
+      tensionless
     };
 
     static void
@@ -78,6 +82,24 @@ namespace liftoff
     {
       return interface != Interface::none;
     }
+    /// Whether the slab and base are one section (bonded, unbonded): one
+    /// layer of fields.
+    bool
+    is_composite() const
+    {
+      return interface == Interface::bonded || interface == Interface::unbonded;
+    }
+    /// The layers of fields: 2 where the slab can lift off the base (its
+    /// own w, psi_x, psi_y), else 1.
+    unsigned int
+    n_layers() const
+    {
+      return interface == Interface::tensionless ? 2 : 1;
+    }
+    /// The base's own section, as a layer of its own (tensionless), in the
+    /// plate's units; nu, chi and delta the plate's.
+    SectionCoefficients
+    own_section(const double nu, const double chi, const double delta) const;
 
     /// The section of a slab (its coefficients alone, `slab`) on this
     /// base; nu and chi are the plate's, delta its H / L.
@@ -95,5 +117,8 @@ namespace liftoff
     double poisson_ratio = 0.2;
     /// rho_b / rho.
     double density_ratio = 1;
+    /// k_i, the interface springs' modulus (per unit area, per unit of
+    /// w_slab - w_base), in the plate's units D / L^4 (tensionless).
+    double interface_stiffness = 0;
   };
 } // namespace liftoff

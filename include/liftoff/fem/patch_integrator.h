@@ -121,8 +121,14 @@ namespace liftoff
     std::vector<Point<2>>
     quadrature_points(const Segment &segment) const;
 
+    /// The integrals of the densities go to the fields of `layer`
+    /// (PlateFields: 0 the slab, the default; 1 a base).
+    PatchIntegrator &
+    on_layer(const unsigned int layer);
+
   private:
     const Discretization &discretization;
+    unsigned int          layer = 0;
     /// The ordinary rule of a cell and the 1d rule its clipped rules are
     /// made of (the same number of points).
     const QGauss<2> cell_rule;

@@ -22,14 +22,14 @@ namespace liftoff
   class PlateElement
   {
   public:
-    static constexpr unsigned int n_components = PlateFields::n_components;
-
     /// Entries in "Discretization": Polynomial degree, Element, Shear
     /// integration.
     static void
     declare_parameters(ParameterHandler &prm);
+    /// The element of `layers` layers (PlateFields), each (w, psi_x,
+    /// psi_y).
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const unsigned int layers = 1);
 
     /// The element the parameters name (after parse_parameters()).
     const FESystem<2> &

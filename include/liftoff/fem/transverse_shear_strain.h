@@ -56,6 +56,10 @@ namespace liftoff
                           const Treatment         treatment,
                           const Quadrature<2>    &points);
 
+    /// The strains of layer `layer`'s fields (PlateFields; 0, the slab,
+    /// until set) at the next reinit().
+    void
+    set_layer(const unsigned int layer);
     void
     reinit(const DoFHandler<2>::active_cell_iterator &cell);
 
@@ -70,6 +74,7 @@ namespace liftoff
 
   private:
     const Treatment treatment;
+    unsigned int    layer = 0;
     FEValues<2>     integration_values;
     /// For mitc: values at the tying points of the xi- and eta-components,
     /// and the interpolation weights from tying points to integration
@@ -78,9 +83,9 @@ namespace liftoff
     std::array<FullMatrix<double>, 2>           interpolation;
     Table<2, Tensor<1, 2>>                      strains;
 
-    static Tensor<1, 2>
+    Tensor<1, 2>
     cartesian_strain(const FEValues<2> &values,
                      const unsigned int i,
-                     const unsigned int q);
+                     const unsigned int q) const;
   };
 } // namespace liftoff

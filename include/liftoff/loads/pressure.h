@@ -67,5 +67,7 @@ namespace liftoff
     /// The self-weight's H_s / H by slab number, where the slabs differ.
     bool                is_self_weight = false;
     std::vector<double> slab_weights;
+    /// rho_b H_b / (rho H) of a base of its own (tensionless), 0 if none.
+    double base_weight = 0;
   };
 } // namespace liftoff

@@ -30,6 +30,10 @@ namespace liftoff
     /// The foundation under the plate: its law (gap, dashpots, pressure)
     /// and its diagnostics (resultant, contact).
     const Bed &bed;
+    /// The springs between the slab and a base it can lift off (Base/
+    /// Interface = tensionless), with the bed's law and diagnostics; none:
+    /// nullptr.
+    const Bed *interface;
     /// The springs along the joints between slabs and the dowels across
     /// them (a plate of one slab has neither).
     const JointSprings   &joints;

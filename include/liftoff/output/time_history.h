@@ -174,6 +174,8 @@ namespace liftoff
     void
     add_resultant_columns();
     void
+    add_interface_columns();
+    void
     add_quantity_probe_columns();
     void
     add_moving_load_columns();
@@ -190,11 +192,14 @@ namespace liftoff
     /// The groups of add_columns().
     std::vector<
       std::pair<std::vector<HistoryColumns::Column>, HistoryColumns::Values>>
-                                 other_columns;
-    std::vector<Point<2>>        probe_points;
-    bool                         write_energies        = true;
-    bool                         write_dissipated      = false;
-    bool                         write_resultant       = false;
+                          other_columns;
+    std::vector<Point<2>> probe_points;
+    bool                  write_energies   = true;
+    bool                  write_dissipated = false;
+    bool                  write_resultant  = false;
+    /// A base the slab can lift off: its interface's contact, resultant
+    /// and largest pressure.
+    bool                         has_interface         = false;
     bool                         write_moment_extremes = false;
     MindlinPlate                 plate;
     std::vector<PointFunctional> probes;

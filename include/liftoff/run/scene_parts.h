@@ -5,6 +5,7 @@
 #include <liftoff/base/physical_units.h>
 #include <liftoff/base/section_timer.h>
 #include <liftoff/contact/active_set_iteration.h>
+#include <liftoff/contact/interface_springs.h>
 #include <liftoff/contact/joint_dowels.h>
 #include <liftoff/contact/tensionless_winkler_foundation.h>
 #include <liftoff/fem/discretization.h>
@@ -82,13 +83,16 @@ namespace liftoff
     PlateMatrices                matrices;
     PlateTerm                    plate_term{matrices, plate};
     TensionlessWinklerFoundation foundation;
-    JointSprings                 joint_springs;
-    JointDowels                  joint_dowels;
-    LoadSet                      loads;
-    NewmarkIntegrator            newmark;
-    EnergyCheck                  energy_check;
-    MeshRefinement               mesh_refinement;
-    ActiveSetIteration           active_set;
+    /// Between the slab and a base it can lift off (Base/Interface =
+    /// tensionless); in the term list only then.
+    InterfaceSprings   interface_springs;
+    JointSprings       joint_springs;
+    JointDowels        joint_dowels;
+    LoadSet            loads;
+    NewmarkIntegrator  newmark;
+    EnergyCheck        energy_check;
+    MeshRefinement     mesh_refinement;
+    ActiveSetIteration active_set;
 
   private:
     /// `Analysis/Type = dynamic` (else static).

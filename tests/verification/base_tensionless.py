@@ -1,0 +1,164 @@
+#!/usr/bin/env python3
+"""A slab on a base it can lift off (Base/Interface = tensionless: the
+base's own w, psi_x, psi_y and interface springs k_i that push but never
+pull), each case against a scene that does not have that interface:
+
+- a very stiff interface (k_i = 1.2e8 D / L^4, 3e8 times the bed's) under
+  a thin slab pressed everywhere (a uniform pressure and a square load) is
+  the unbonded base without separation (D = D_slab + D_base, w shared): w
+  at the load, the slab's M_xx there against its share D_slab / D of the
+  section's, and the interface in contact everywhere (k_i 100 times
+  softer leaves 5.5e-3 in the moment);
+- a very thin and soft base (H_b = H / 100, E_b = E / 1000, nearly
+  weightless) under a stiff interface is the slab alone on the bed;
+- a slab lifting off a rigid base (a base 100 times as stiff as the slab on
+  a bed 1e8 times the interface's modulus) is the slab alone on a
+  tensionless bed of modulus k_i: w at three points, the interface's
+  contact fraction that slab's contact fraction, its resultant the load;
+- equilibrium under a load and both weights (static): the bed carries the
+  load and the weights of slab and base, the interface the load and the
+  slab's weight.
+
+    base_tensionless.py LIFTOFF
+"""
+
+import os
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
+from checks import check, finish  # noqa: E402
+from scenes import read_history, run_scene_or_fail, scene_text  # noqa: E402
+
+LIFTOFF = os.path.abspath(sys.argv[1])
+DELTA, NU = 0.05, 0.3
+B = 0.0625
+PROBES = ["M_xx(0; 0)"]
+POINTS = "0, 0; 0.25, 0.25; 0, 0.45"
+
+
+def slab(stiffness, model, cells=8, loads=None, output=None, delta=DELTA):
+    sections = {
+        "Analysis": {"Type": "static"},
+        "Plate": {"Thickness ratio": delta, "Poisson ratio": NU},
+        "Foundation": {"Model": model, "Stiffness": stiffness},
+        "Discretization": {"Symmetry": "quarter", "Cells along x": cells,
+                           "Cells along y": cells},
+        "Loads": loads or {},
+        "Output": {"Write energies": "false",
+                   "Probe quantities": ", ".join(PROBES)}}
+    sections["Output"].update(output or {})
+    return sections
+
+
+def base(interface, thickness, modulus, density=1.0, k_i=0.0):
+    entries = {"Interface": interface, "Thickness": thickness,
+               "Modulus ratio": modulus, "Poisson ratio": NU,
+               "Density ratio": density}
+    if k_i:
+        entries["Interface stiffness"] = k_i
+    return {"Base": entries}
+
+
+def run(work, name, *parts):
+    history = read_history(run_scene_or_fail(LIFTOFF, work, name,
+                                             scene_text(*parts)))
+    return {k: v[-1] for k, v in history.items()}
+
+
+def compare(what, value, reference, tolerance):
+    error = abs(value / reference - 1)
+    check(error < tolerance, f"{what}: {value:.8e} against {reference:.8e}: "
+          f"{error:.1e} < {tolerance:.0e}")
+
+
+PRESSED = {"Pressure 1": {"Magnitude": 1, "Region": "whole plate"},
+           "Pressure 2": {"Magnitude": 64,
+                          "Region": f"{-B}, {B}, {-B}, {B}"}}
+
+
+def stiff_interface(work, cells=8):
+    # Thin layers: each layer's own shear strain (which the unbonded
+    # section shares) is negligible.
+    delta, h_b, e_b = 0.005, 0.004, 0.5
+    # The base's own modulus E_b / H_b and its bending stiffness in the
+    # plate's units (E / (1 - nu^2) = 12 / delta^3, D = 1).
+    k_b = e_b * 12 / delta ** 3 / h_b
+    d_b = e_b * (h_b / delta) ** 3
+    scene = slab(0.4, "bilateral", cells, loads=PRESSED, delta=delta)
+    separate = run(work, "stiff", scene,
+                   base("tensionless", h_b, e_b, k_i=1e-2 * k_b))
+    shared = run(work, "unbonded", scene, base("unbonded", h_b, e_b))
+    compare("stiff interface: w(0, 0) against unbonded", separate["w(0;0)"],
+            shared["w(0;0)"], 1e-3)
+    # The slab's own moment against its share D_slab / (D_slab + D_base)
+    # of the section's.
+    compare("stiff interface: the slab's M_xx(0, 0) against its share of "
+            "unbonded's", separate["M_xx(0;0)"],
+            shared["M_xx(0;0)"] / (1 + d_b), 1e-3)
+    check(separate["interface_contact_fraction"] == 1,
+          "stiff interface: pressed everywhere, in contact everywhere "
+          f"({separate['interface_contact_fraction']})")
+
+
+def thin_soft_base(work):
+    scene = slab(400, "tensionless", loads=PRESSED)
+    layered = run(work, "thin", scene,
+                  base("tensionless", DELTA / 100, 1e-3, 1e-3, k_i=1e9))
+    alone = run(work, "alone", scene)
+    compare("thin soft base: w(0, 0) against the slab alone",
+            layered["w(0;0)"], alone["w(0;0)"], 1e-3)
+    compare("thin soft base: M_xx(0, 0) against the slab alone",
+            layered["M_xx(0;0)"], alone["M_xx(0;0)"], 1e-3)
+
+
+def rigid_base(work):
+    k_i = 400.0
+    loads = {"Pressure 1": {"Magnitude": 64,
+                            "Region": f"{-B}, {B}, {0.5 - 2 * B}, 0.5"}}
+    output = {"Probe points": POINTS}
+    layered = run(work, "rigid", slab(1e8 * k_i, "bilateral", loads=loads,
+                                      output=output),
+                  {"Discretization": {"Symmetry": "half"}},
+                  base("tensionless", 0.05, 100, k_i=k_i))
+    alone = run(work, "on_k_i", slab(k_i, "tensionless", loads=loads,
+                                     output=output),
+                {"Discretization": {"Symmetry": "half"}})
+    for point in ("0;0", "0.25;0.25", "0;0.45"):
+        compare(f"rigid base: w({point}) against the slab on a tensionless "
+                f"bed of k_i", layered[f"w({point})"], alone[f"w({point})"],
+                1e-3)
+    compare("rigid base: the interface's contact fraction against the "
+            "slab's on k_i", layered["interface_contact_fraction"],
+            alone["contact_fraction"], 2e-2)
+    check(alone["contact_fraction"] < 0.9,
+          f"rigid base: the slab lifts off ({alone['contact_fraction']:.3f} "
+          "in contact)")
+
+
+def equilibrium(work):
+    h_b, rho_b, weight, load = 0.04, 0.9, 2.0, 8.0
+    scene = slab(400, "tensionless", loads={
+        "Self weight": weight,
+        "Pressure 1": {"Magnitude": load / (2 * B) ** 2,
+                       "Region": f"{-B}, {B}, {-B}, {B}"}},
+        output={"Write foundation resultant": "true"})
+    row = run(work, "weights", scene,
+              {"Discretization": {"Symmetry": "full"}},
+              base("tensionless", h_b, 0.5, rho_b, k_i=1e6))
+    slab_weight = weight * 1.0
+    base_weight = weight * rho_b * h_b / DELTA
+    compare("equilibrium: the bed's resultant against the load and both "
+            "weights", row["resultant"], load + slab_weight + base_weight,
+            1e-9)
+    compare("equilibrium: the interface's resultant against the load and "
+            "the slab's weight", row["interface_resultant"],
+            load + slab_weight, 1e-9)
+
+
+with tempfile.TemporaryDirectory() as work:
+    stiff_interface(work)
+    thin_soft_base(work)
+    rigid_base(work)
+    equilibrium(work)
+finish()
