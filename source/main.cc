@@ -488,7 +488,9 @@ namespace
         int       code           = 128 + waiting_signal;
         if (waiting_signal == 0)
           {
-            clock.start_scene();
+            // A scene run alone is left as it always was.
+            if (command.batch)
+              clock.start_scene();
             code = run_scene(name, command, comm);
           }
         if (command.batch)

@@ -22,6 +22,16 @@ scene() { # NAME MAGNITUDE END_TIME [CELLS]
     'subsection Output' "  set Directory = out-$1" '  set VTU interval = 0' \
     '  set Profile points = 5' '  set Profile times = 0.05' 'end' > "$1.prm"
 }
+# same_as_alone FOLDER WHAT: scenes a and c of FOLDER wrote the files of
+# their runs alone.
+same_as_alone() {
+  for s in a c; do
+    for f in history.csv profiles.csv; do
+      cmp -s "alone/out-$s/$f" "$1/out-$s/$f"
+      check $? "$2, scene $s: $f is the run alone's, byte for byte"
+    done
+  done
+}
 mkdir -p alone batch
 (cd alone && scene a 1 0.1 && scene c -2 0.08 &&
   "$liftoff" -q a.prm > a.txt 2>&1 && "$liftoff" -q c.prm > c.txt 2>&1)
@@ -30,11 +40,8 @@ check $? "the scenes run alone"
   "$liftoff" -q --batch a.prm b.prm c.prm > out.txt 2> err.txt)
 status=$?
 [ "$status" -eq 1 ]; check $? "a batch with a refused scene exits 1: $status"
+same_as_alone batch "batch"
 for s in a c; do
-  for f in history.csv profiles.csv; do
-    cmp -s "alone/out-$s/$f" "batch/out-$s/$f"
-    check $? "scene $s: $f of the batch is the run alone's, byte for byte"
-  done
   grep -q '^status: completed' "batch/out-$s/summary.txt" 2>/dev/null
   check $? "scene $s completed in the batch"
 done
@@ -50,12 +57,7 @@ mkdir -p worker
   echo "$? $start $(date +%s.%N)" > status.txt)
 read -r status start end < worker/status.txt
 [ "$status" -eq 1 ]; check $? "a worker with a refused scene exits 1: $status"
-for s in a c; do
-  for f in history.csv profiles.csv; do
-    cmp -s "alone/out-$s/$f" "worker/out-$s/$f"
-    check $? "worker, scene $s: $f is the run alone's, byte for byte"
-  done
-done
+same_as_alone worker "worker"
 grep -q '^liftoff: batch: started, cpu [0-9.]* s$' worker/out.txt
 check $? "the worker says when it is ready, with its start-up's CPU time"
 codes=$(sed -n 's/^liftoff: batch: \(.*\): exit \([0-9]*\), wall .*/\1 \2/p' worker/out.txt | tr '\n' ' ')
