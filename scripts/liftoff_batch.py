@@ -18,6 +18,7 @@ import concurrent.futures
 import os
 import shutil
 import signal
+import threading
 import time
 
 import numpy as np
@@ -27,9 +28,12 @@ from liftoff_runs import parse_summary, read_table, used_parameters
 from liftoff_workers import Workers
 
 TIME_STEP = "Time integration/Time step"
-# Kept in each run's folder: the process's wall and CPU seconds, which the
-# run's own summary.txt cannot know (start-up and exit lie outside it).
+# Kept in each run's folder: its wall and CPU seconds as a process of its
+# own, and the scene's wall seconds in its worker and the worker's
+# start-up, which the run's own summary.txt cannot know.
 TIMING = "study_timing.txt"
+# Guards the creation of a tool's pool of workers (args.workers).
+WORKERS_LOCK = threading.Lock()
 
 
 def run_directory(run, args):
@@ -61,8 +65,9 @@ def make(run, args):
     wall and CPU seconds in the worker, and the start-up that the worker's
     process paid once, which a run alone would pay too."""
     directory = run_directory(run, args)
-    if getattr(args, "workers", None) is None:
-        args.workers = Workers(args.executable, args.ranks)
+    with WORKERS_LOCK:
+        if getattr(args, "workers", None) is None:
+            args.workers = Workers(args.executable, args.ranks)
     cost = args.workers.run(run["scene"], directory)
     if cost.code != 0 and failed_to_start(directory):
         # Open MPI's start-up, not the run, failed (seen 2 times in 435
