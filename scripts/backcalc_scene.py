@@ -5,8 +5,8 @@ values set."""
 import os
 import threading
 
-from liftoff_runs import (parse_parameters, read_csv, run_scene,
-                          scene_including)
+from liftoff_runs import parse_parameters, read_csv, scene_including
+from liftoff_workers import Workers
 
 DEFLECTOMETER = "Loads/Deflectometer 1"
 
@@ -126,6 +126,9 @@ class SceneRuns:
             + ", ".join("%r" % float(r) for r in offsets)]
         self.warnings = {}
         self.lock = threading.Lock()
+        # The runs go through liftoff workers (one process each, its
+        # start-up paid once), the fit's side-by-side runs each in its own.
+        self.workers = Workers(args.executable)
 
     def run(self, overrides, number):
         """The run's output folder, after the run."""
@@ -143,8 +146,7 @@ class SceneRuns:
         # not, and is run once more.
         for attempt in (1, 2):
             try:
-                code = run_scene(self.args.executable, text, folder,
-                                 check=False)
+                code = self.workers.run(text, folder).code
             except OSError as e:
                 raise BackcalcError("--executable %s cannot be run: %s"
                                     % (self.args.executable, e))

@@ -4,10 +4,12 @@ together: what scripts/liftoff-study and scripts/liftoff-damage share.
 A tool builds its runs (dicts with "label", "scene" (the text), "work": a
 relative cost), then execute() makes each in args.output/runs/LABEL (or
 with args.reuse keeps one that holds the same scene and a completed
-summary), --jobs of them at a time, printing the plan and "k of N" with the
-time left; a failed run ends it, named. The tool's own files are written
-under temporary names and published together (write_files), so that an
-interrupted tool leaves the earlier files or all of the new ones. A folder
+summary), --jobs of them at a time in liftoff workers (liftoff_workers.py:
+one process each, start-up paid once), printing the plan and "k of N" with
+the time left; a failed run is named when the others are done. The tool's
+own files are written under temporary names and published together
+(write_files), so that an interrupted tool leaves the earlier files or all
+of the new ones. A folder
 holds one tool's results: claim() refuses an earlier one unless --reuse or
 --overwrite.
 """
@@ -16,18 +18,22 @@ import concurrent.futures
 import os
 import shutil
 import signal
+import threading
 import time
 
 import numpy as np
 
 from liftoff_qoi import StudyError
-from liftoff_runs import (parse_summary, read_table, run_scene_timed,
-                          used_parameters)
+from liftoff_runs import parse_summary, read_table, used_parameters
+from liftoff_workers import Workers
 
 TIME_STEP = "Time integration/Time step"
-# Kept in each run's folder: the process's wall and CPU seconds, which the
-# run's own summary.txt cannot know (start-up and exit lie outside it).
+# Kept in each run's folder: its wall and CPU seconds as a process of its
+# own, and the scene's wall seconds in its worker and the worker's
+# start-up, which the run's own summary.txt cannot know.
 TIMING = "study_timing.txt"
+# Guards the creation of a tool's pool of workers (args.workers).
+WORKERS_LOCK = threading.Lock()
 
 
 def run_directory(run, args):
@@ -54,27 +60,32 @@ def is_reusable(run, args):
 
 
 def make(run, args):
-    """Run the scene in its own process (a thread may call this while
-    others run) and keep the process's wall and CPU seconds with it."""
+    """Run the scene in one of the tool's liftoff workers (a thread may
+    call this while others run) and keep its times with it: the scene's
+    wall and CPU seconds in the worker, and the start-up that the worker's
+    process paid once, which a run alone would pay too."""
     directory = run_directory(run, args)
-    code, elapsed, cpu = run_scene_timed(args.executable, run["scene"],
-                                         directory, ranks=args.ranks)
-    if code != 0 and failed_to_start(directory):
+    with WORKERS_LOCK:
+        if getattr(args, "workers", None) is None:
+            args.workers = Workers(args.executable, args.ranks)
+    cost = args.workers.run(run["scene"], directory)
+    if cost.code != 0 and failed_to_start(directory):
         # Open MPI's start-up, not the run, failed (seen 2 times in 435
         # runs on the shared 2-core machine at load 6): once more.
-        code, elapsed, cpu = run_scene_timed(args.executable, run["scene"],
-                                             directory, ranks=args.ranks)
-    if code in (128 + signal.SIGINT, 128 + signal.SIGTERM):
+        cost = args.workers.run(run["scene"], directory)
+    if cost.code in (128 + signal.SIGINT, 128 + signal.SIGTERM):
         # The run was stopped as the tool was (Ctrl-C reaches the whole
         # process group): the tool's interruption, not the run's failure,
         # whichever of the two the tool notices first.
         raise KeyboardInterrupt
-    if code != 0:
+    if cost.code != 0:
         raise StudyError("run %s failed (exit %d)%s; see %s"
-                         % (run["label"], code, reason(directory),
+                         % (run["label"], cost.code, reason(directory),
                             os.path.join(directory, "log.txt")))
     write_atomic(os.path.join(directory, TIMING),
-                 "process: %r\ncpu: %r\n" % (elapsed, cpu))
+                 "process: %r\ncpu: %r\nscene: %r\nstart-up: %r\n"
+                 % (cost.process_wall(), cost.process_cpu(), cost.wall,
+                    cost.start_up_wall))
 
 
 def reason(directory):
@@ -122,6 +133,9 @@ def load(run, args):
         "run_wall": float(values["wall time [s]"]),
         "process_wall": float(times["process"]),
         "process_cpu": float(times["cpu"]),
+        # The scene's own time in its worker (a timing kept before the
+        # workers has the process's only).
+        "scene_wall": float(times.get("scene", times["process"])),
         "it_mean": float(values["active-set iterations per step, mean"]),
         "it_max": int(values["active-set iterations per step, max"]),
         # With automatic steps only: the steps taken and those that stayed
@@ -147,8 +161,9 @@ def duration(seconds):
 
 class Progress:
     """The plan, and "k of N" with the time so far and an estimate of the
-    time left. A run's process time is taken as a + b * work: a the
-    start-up (process time less the wall time the run reports), b * work
+    time left. A run's time in its worker is taken as a + b * work: a what
+    lies outside the wall time the run reports (reading the scene, writing
+    the results; the worker's start-up is paid once, not per run), b * work
     the run itself, with b the reported wall time of the runs made so far
     over their work (dofs times steps up to a factor; the large runs weigh
     most). The sum over the runs not yet made is divided by the runs made
@@ -159,7 +174,7 @@ class Progress:
         self.tool = tool
         self.slots = slots
         self.start = time.perf_counter()
-        self.made = []          # (work, process wall, run's own wall)
+        self.made = []          # (work, time in the worker, run's own wall)
         self.done = 0
 
     def plan(self, args, axes):
@@ -184,8 +199,8 @@ class Progress:
         """Seconds left for the runs not yet made, or None."""
         if not self.made:
             return None
-        work, process, wall = map(np.array, zip(*self.made))
-        a = max(0.0, float(np.mean(process - wall)))
+        work, scene, wall = map(np.array, zip(*self.made))
+        a = max(0.0, float(np.mean(scene - wall)))
         b = wall.sum() / work.sum()
         pending = [r["work"] for r in self.runs
                    if not r["reused"] and "process_wall" not in r]
@@ -194,7 +209,7 @@ class Progress:
     def report(self, run):
         self.done += 1
         if not run["reused"]:
-            self.made.append((run["work"], run["process_wall"],
+            self.made.append((run["work"], run["scene_wall"],
                               run["run_wall"]))
         left = self.left()
         print("[%d of %d] %-24s dofs %7d  steps %5d  process %8.3f s%s   "
@@ -237,16 +252,26 @@ def execute(runs, args, check_first, tool="liftoff-study"):
                      key=lambda run: -run["work"])
     with concurrent.futures.ThreadPoolExecutor(slots) as pool:
         futures = {pool.submit(make, run, args): run for run in pending}
+        failures = []
         try:
             for future in concurrent.futures.as_completed(futures):
-                future.result()
+                try:
+                    future.result()
+                except StudyError as e:
+                    # The other runs go on: each made is kept for --reuse
+                    # once the failed one's scene is mended.
+                    failures.append(e)
+                    continue
                 finish(futures[future])
         except BaseException:
-            # Runs already started finish; none is started after a failure.
+            # Interrupted: runs already started finish; none is started.
             for future in futures:
                 future.cancel()
             raise
-
+    if failures:
+        raise StudyError("%s%s" % (failures[0], "" if len(failures) == 1
+                                   else " (and %d other runs failed)"
+                                   % (len(failures) - 1)))
 
 
 def write_atomic(path, text):

@@ -8,7 +8,14 @@
 #include <liftoff/run/stop_signal.h>
 #include <liftoff/version.h>
 
+#include <sys/resource.h>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -34,7 +41,14 @@ namespace
     "                                    this process, each into its own\n"
     "                                    output directory as if run alone; a\n"
     "                                    scene that fails does not stop the\n"
-    "                                    others (exit code 1 if any failed)\n"
+    "                                    others (exit code 1 if any failed);\n"
+    "                                    after each, one line on standard\n"
+    "                                    output: its name, exit code, wall\n"
+    "                                    and CPU seconds\n"
+    "       liftoff --batch -            the same with the scenes' file names\n"
+    "                                    read from standard input, one a\n"
+    "                                    line, each run as it arrives (a\n"
+    "                                    tool's worker)\n"
     "       liftoff --quiet ...          no progress line, and one status\n"
     "                                    line instead of the summary, which\n"
     "                                    stays in summary.txt (also -q; with\n"
@@ -208,10 +222,10 @@ namespace
       command.error = "one scene file at a time, not "
                       + std::to_string(scenes.size())
                       + " (--batch runs several).";
-    else if (command.error.empty() && command.batch
+    else if (command.error.empty() && command.batch && scenes.size() > 1
              && std::count(scenes.begin(), scenes.end(), "-") > 0)
-      command.error = "--batch reads its scenes from files, not from "
-                      "standard input (-).";
+      command.error = "--batch reads its scenes from files, or (--batch -) "
+                      "their names from standard input, not both.";
     command.scene_names = scenes;
     return command;
   }
@@ -311,6 +325,196 @@ namespace
     return report_failure(
       failure, scene_name, is_adaptive, stopping_signal, comm);
   }
+
+
+  // The scenes to run: the command line's, or with `--batch -` the file
+  // names that standard input brings, one a line, read on rank 0 as each
+  // is wanted, so that a tool can keep one process as a worker and send it
+  // a scene whenever it has one (start-up, mostly the dynamic loader, is
+  // then paid once per worker).
+  class SceneNames
+  {
+  public:
+    SceneNames(const CommandLine &command, const MPI_Comm comm)
+        : names(command.scene_names)
+        , from_input(command.batch && names.size() == 1 && names[0] == "-")
+        , comm(comm)
+    {}
+
+    // The next scene's name into `name`; false when there is none.
+    bool
+    next(std::string &name)
+    {
+      if (!from_input)
+        {
+          if (index == names.size())
+            return false;
+          name = names[index++];
+          ++n_taken;
+          return true;
+        }
+      bool has_name = false;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        while (!has_name && std::getline(std::cin, name))
+          has_name = !name.empty();
+      has_name = dealii::Utilities::MPI::broadcast(comm, has_name, 0);
+      name     = dealii::Utilities::MPI::broadcast(comm, name, 0);
+      n_taken += has_name;
+      return has_name;
+    }
+
+    // How many scenes next() has given.
+    std::size_t
+    taken() const
+    {
+      return n_taken;
+    }
+
+    // How many named scenes follow, for a message; unknown from input.
+    std::string
+    left() const
+    {
+      return from_input ? "the scenes still to come on standard input"
+                        : std::to_string(names.size() - index) + " scene(s)";
+    }
+
+  private:
+    const std::vector<std::string> names;
+    const bool                     from_input;
+    const MPI_Comm                 comm;
+    std::size_t                    index   = 0;
+    std::size_t                    n_taken = 0;
+  };
+
+
+  double
+  cpu_seconds()
+  {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval &t) {
+      return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec;
+    };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+  }
+
+
+  // A scene's wall and CPU seconds in a batch (CPU summed over the ranks,
+  // as a process's under mpirun would be), printed in one line when it
+  // ends: a tool that runs its scenes through one process still knows what
+  // each cost, and the process's start-up apart ("started" with the CPU
+  // it took).
+  class BatchClock
+  {
+  public:
+    explicit BatchClock(const MPI_Comm comm)
+        : comm(comm)
+    {}
+
+    void
+    started() const
+    {
+      print("liftoff: batch: started, cpu " + seconds(cpu_seconds()));
+    }
+
+    void
+    start_scene()
+    {
+      // summary.txt reports the process's peak memory; in a batch that
+      // would be an earlier scene's. What the earlier scenes freed goes
+      // back to the system first (malloc keeps it otherwise: 390 MB of
+      // a larger scene stayed resident), then Linux resets the mark to
+      // what is resident on this write; where it cannot, the mark stays
+      // the process's.
+#ifdef __GLIBC__
+      malloc_trim(0);
+#endif
+      std::ofstream("/proc/self/clear_refs") << "5";
+      wall_start = std::chrono::steady_clock::now();
+      cpu_start  = cpu_seconds();
+    }
+
+    void
+    end_scene(const std::string &name, const int code) const
+    {
+      const std::chrono::duration<double> wall =
+        std::chrono::steady_clock::now() - wall_start;
+      const double cpu =
+        dealii::Utilities::MPI::sum(cpu_seconds() - cpu_start, comm);
+      print("liftoff: batch: " + name + ": exit " + std::to_string(code)
+            + ", wall " + seconds(wall.count()) + ", cpu " + seconds(cpu));
+    }
+
+  private:
+    static std::string
+    seconds(const double value)
+    {
+      std::ostringstream text;
+      text.precision(6);
+      text << std::fixed << value << " s";
+      return text.str();
+    }
+
+    void
+    print(const std::string &line) const
+    {
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cout << line << std::endl;
+    }
+
+    const MPI_Comm                        comm;
+    std::chrono::steady_clock::time_point wall_start;
+    double                                cpu_start = 0;
+  };
+
+
+  // Runs the scenes one after the other; the exit code: 0, 1 if a scene
+  // failed (named at the end of a batch), or 128 + signal if one was
+  // stopped, which starts no further scene.
+  int
+  run_scenes(const CommandLine &command, const MPI_Comm comm)
+  {
+    const bool  is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    SceneNames  names(command, comm);
+    BatchClock  clock(comm);
+    std::string name;
+    std::vector<std::string> failed;
+    if (command.batch)
+      clock.started();
+    while (names.next(name))
+      {
+        // A signal while a worker waited for its next scene.
+        const int waiting_signal = liftoff::StopSignal::received(comm);
+        int       code           = 128 + waiting_signal;
+        if (waiting_signal == 0)
+          {
+            // A scene run alone is left as it always was.
+            if (command.batch)
+              clock.start_scene();
+            code = run_scene(name, command, comm);
+          }
+        if (command.batch)
+          clock.end_scene(name, code);
+        if (code > 128)
+          {
+            if (command.batch && is_root)
+              std::cerr << "liftoff: batch interrupted: " << names.left()
+                        << " not run." << std::endl;
+            return code;
+          }
+        if (code != 0)
+          failed.push_back(name);
+      }
+    if (command.batch && !failed.empty() && is_root)
+      {
+        std::cerr << "liftoff: batch: " << failed.size() << " of "
+                  << names.taken() << " scenes failed:";
+        for (const std::string &f : failed)
+          std::cerr << ' ' << f;
+        std::cerr << std::endl;
+      }
+    return failed.empty() ? 0 : 1;
+  }
 } // namespace
 
 
@@ -331,34 +535,8 @@ main(int argc, char **argv)
                   << usage << std::endl;
       return 2;
     }
-
   // SIGINT / SIGTERM end the run after the current step with complete
   // files and the exit code 128 + signal; a batch starts no further scene.
   liftoff::StopSignal::install();
-  std::vector<std::string> failed;
-  for (unsigned int i = 0; i < command.scene_names.size(); ++i)
-    {
-      const int code = run_scene(command.scene_names[i], command, comm);
-      if (code > 128)
-        {
-          if (command.batch && i + 1 < command.scene_names.size()
-              && dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-            std::cerr << "liftoff: batch interrupted: "
-                      << command.scene_names.size() - i - 1
-                      << " scene(s) not run." << std::endl;
-          return code;
-        }
-      if (code != 0)
-        failed.push_back(command.scene_names[i]);
-    }
-  if (command.batch && !failed.empty()
-      && dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-    {
-      std::cerr << "liftoff: batch: " << failed.size() << " of "
-                << command.scene_names.size() << " scenes failed:";
-      for (const std::string &name : failed)
-        std::cerr << ' ' << name;
-      std::cerr << std::endl;
-    }
-  return failed.empty() ? 0 : 1;
+  return run_scenes(command, comm);
 }
