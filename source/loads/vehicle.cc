@@ -36,6 +36,21 @@ namespace liftoff
                                "circle, as practice takes it) or rectangle "
                                "(PCA's equivalent)."));
     }
+
+
+    // The Wheel shape `text` of a vehicle with `tyres` (none: Wheels); a
+    // tyre presses its contact area, which practice takes as a circle.
+    std::optional<PatchLoad::Shape>
+    wheel_shape(const std::string                   &text,
+                const std::string                   &parameter,
+                const std::vector<AxleGroups::Tyre> &tyres)
+    {
+      if (text != "default")
+        return wheel_shapes.parse(text, parameter);
+      if (tyres.empty())
+        return std::nullopt;
+      return PatchLoad::Shape::disc;
+    }
   } // namespace
 
 
@@ -87,15 +102,9 @@ namespace liftoff
     const double                        magnitude = prm.get_double("Magnitude");
     const LoadHistory                   history = LoadHistory::read(prm, name);
     const auto                          path    = LoadPath::read(prm, name);
-    const std::string                   wheels_text = prm.get("Wheels");
-    const std::vector<AxleGroups::Tyre> tyres = AxleGroups::read(prm, name);
-    // A tyre presses its contact area, which practice takes as a circle.
-    const auto shape =
-      prm.get("Wheel shape") == "default"
-        ? (tyres.empty()
-             ? std::nullopt
-             : std::optional<PatchLoad::Shape>(PatchLoad::Shape::disc))
-        : wheel_shapes.parse(prm.get("Wheel shape"), name + "/Wheel shape");
+    const std::vector<AxleGroups::Tyre> tyres   = AxleGroups::read(prm, name);
+    const auto                          shape =
+      wheel_shape(prm.get("Wheel shape"), name + "/Wheel shape", tyres);
     // Axles size each tyre by its load and pressure.
     const std::array<double, 2> size =
       (shape && tyres.empty() ? PatchLoad::parse_size(prm.get("Wheel size"),
@@ -104,7 +113,7 @@ namespace liftoff
                               : std::array<double, 2>{{0, 0}});
     AssertThrow(path != nullptr, ExcMessage(name + "/Path must not be empty."));
     const std::vector<std::array<double, 3>> wheels =
-      parse_wheels(wheels_text, name + "/Wheels");
+      parse_wheels(prm.get("Wheels"), name + "/Wheels");
     AssertThrow(tyres.empty() || magnitude == 0.0,
                 ExcMessage(name + "/Magnitude = " + prm.get("Magnitude")
                            + " and " + name
