@@ -399,7 +399,6 @@ namespace liftoff
           }
       }
 
-
       // The dimensionless twin reads no physical entry.
       void
       reset_physical_entries() const
