@@ -8,9 +8,13 @@
         doc/figures/tutorial-2-jointed-truck.png
     /usr/bin/python3 scripts/tutorial_figures.py study \\
         study-tutorial-4 doc/figures/tutorial-4-study.png
+    /usr/bin/python3 scripts/tutorial_figures.py engineer \\
+        output-engineer-history doc/figures/pavement-engineer.png
 
 first-slab and jointed-truck read history.csv and profiles.csv of a run,
-study reads study.csv of scripts/liftoff-study. Each also prints the
+study reads study.csv of scripts/liftoff-study, engineer history.csv of
+prm/pavement-engineer.prm run with Output/Write stress history = true
+(each face's largest principal stress per step, in Pa). Each also prints the
 numbers the tutorial quotes. Stresses are 6 M / H^2 of the moments liftoff
 writes (N m/m), with H the scene's thickness (read from used_parameters.prm).
 """
@@ -186,9 +190,50 @@ def study(folder, figure):
             row["error:peak:max_M_1 [N m/m]"], row["process_wall"]))
 
 
+def engineer(run, figure):
+    """Each face's largest tension per step and where it lies along x,
+    beside the truck's axles (the steering axle on the path's point, the
+    tandem's two 5 m behind it, 1.3 m apart) and the joints."""
+    h = pandas.read_csv(os.path.join(run, "history.csv"))
+    t = h["t [s]"]
+    fig, ax = plt.subplots(1, 2, figsize=(11, 3.8))
+    for face, style in (("top", "-"), ("bottom", "--")):
+        column = "max_sigma_1_%s [Pa]" % face
+        ax[0].plot(t, h[column] * 1e-6, style, label="%s face" % face)
+        ax[1].plot(t, h["max_sigma_1_%s_x [m]" % face], style,
+                   label="largest tension, %s face" % face)
+        row = peak(h, column)
+        print("largest tension %.3g MPa, %s face, slab %d, at (%.3g, %.3g) m,"
+              " t = %g s; at t = 0: %.3g MPa" % (
+                  row[column] * 1e-6, face,
+                  row["max_sigma_1_%s_slab" % face],
+                  row["max_sigma_1_%s_x [m]" % face],
+                  row["max_sigma_1_%s_y [m]" % face], row["t [s]"],
+                  h[column][0] * 1e-6))
+    ax[0].set_ylabel("largest principal stress [MPa]")
+    ax[0].set_xlabel("t [s]")
+    ax[0].legend(fontsize=7)
+    front = h["vehicle_1_x [m]"]
+    for offset, label in ((0, "steering axle"), (-4.35, "tandem's axles"),
+                          (-5.65, None)):
+        ax[1].plot(t, front + offset, ":", color="grey", label=label)
+    for joint in (-2.75, 2.75):
+        ax[1].axhline(joint, color="k", lw=0.5)
+    ax[1].set_ylim(-7.25, 7.25)
+    ax[1].set_xlabel("t [s]")
+    ax[1].set_ylabel("x [m] (joints at -2.75 and 2.75 m)")
+    ax[1].legend(fontsize=7)
+    for a in ax:
+        a.grid(alpha=0.3)
+    fig.suptitle("The engineer's scene: the largest tension of each face and "
+                 "where it lies (prm/pavement-engineer.prm)")
+    fig.tight_layout()
+    fig.savefig(figure, dpi=100)
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 4 or sys.argv[1] not in ("first-slab",
-                                                 "jointed-truck", "study"):
+    modes = {"first-slab": first_slab, "jointed-truck": jointed_truck,
+             "study": study, "engineer": engineer}
+    if len(sys.argv) != 4 or sys.argv[1] not in modes:
         sys.exit(__doc__)
-    {"first-slab": first_slab, "jointed-truck": jointed_truck,
-     "study": study}[sys.argv[1]](sys.argv[2], sys.argv[3])
+    modes[sys.argv[1]](sys.argv[2], sys.argv[3])

@@ -4,6 +4,7 @@
 
 #include <liftoff/base/output_files.h>
 #include <liftoff/base/scene_input.h>
+#include <liftoff/run/output_directory.h>
 #include <liftoff/run/simulator.h>
 #include <liftoff/run/stop_signal.h>
 #include <liftoff/version.h>
@@ -307,6 +308,7 @@ namespace
       try
         {
           simulator.declare_scene(prm);
+          liftoff::OutputDirectory::name_after_scene(prm, scene_name);
           read_scene(scene_name, comm).parse_into(prm, scene_name);
           simulator.parse_parameters(prm);
           prm.enter_subsection("Mesh refinement");

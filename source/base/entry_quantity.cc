@@ -17,6 +17,7 @@ namespace liftoff
   {
     const std::string tag_start = "[quantity: ";
     const std::string if_set    = " (if set)";
+    const std::string si_start  = "[SI default: ";
   } // namespace
 
 
@@ -61,6 +62,7 @@ namespace liftoff
         {Quantity::angle_degrees, "angle in degrees", "degree", "degree"},
         {Quantity::temperature_difference, "temperature difference", "K", "K"},
         {Quantity::thermal_expansion, "thermal expansion", "1/K", "F0*L/(D*K)"},
+        {Quantity::frequency, "frequency", "rad/s", "1/t0"},
         {Quantity::mu, "mu", "1", "mu"},
         {Quantity::Delta, "Delta", "1", "Delta"},
         {Quantity::Gamma, "Gamma", "1", "Gamma"},
@@ -167,6 +169,33 @@ namespace liftoff
                                     tail.size(),
                                     tail)
                 == 0;
+  }
+
+
+  std::string
+  tagged(const std::string &number, const Quantity quantity)
+  {
+    return number + " [" + dimensionless_scales(quantity) + "]";
+  }
+
+
+  std::string
+  si_default(const std::string &value)
+  {
+    return " " + si_start + value + "]";
+  }
+
+
+  std::string
+  si_default_of(const std::string &documentation)
+  {
+    const auto start = documentation.rfind(si_start);
+    if (start == std::string::npos)
+      return "";
+    const auto from = start + si_start.size();
+    const auto end  = documentation.find(']', from);
+    return end == std::string::npos ? ""
+                                    : documentation.substr(from, end - from);
   }
 
 

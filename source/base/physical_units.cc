@@ -60,6 +60,36 @@ namespace liftoff
     }
 
 
+    /// `message` with each number or point tagged with its solver's unit
+    /// (tagged(): "3.1e-05 [F0^2*L^2/D]", "(0.6, 0.25) [L]") in the units
+    /// `scale` gives, with their symbol ("0.012 J", "(8.7, 3.6) m").
+    std::string
+    with_tagged_numbers(const std::string                     &message,
+                        const std::function<double(Quantity)> &scale)
+    {
+      static const std::string number =
+        R"([-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)";
+      static const std::regex tag("(?:\\((" + number + "), (" + number
+                                  + ")\\)|(" + number + R"()) \[([^\]]+)\])");
+      return replace_matches(message, tag, [&](const std::smatch &m) {
+        auto q = Quantity::number;
+        while (q < Quantity::mu && dimensionless_scales(q) != m[4].str())
+          q = static_cast<Quantity>(static_cast<int>(q) + 1);
+        if (q == Quantity::mu || q == Quantity::text)
+          return m[0].str();
+        const auto in_scene = [&](const std::string &x) {
+          return std::stod(x) * scale(q);
+        };
+        return (m[3].matched
+                  ? format_number(in_scene(m[3].str()))
+                  : "("
+                      + format_point(in_scene(m[1].str()), in_scene(m[2].str()))
+                      + ")")
+               + " " + si_symbol(q);
+      });
+    }
+
+
     using System                         = PhysicalUnits::System;
     using Quantity                       = PhysicalUnits::Quantity;
     const Selection<System> system_names = {{"dimensionless",
@@ -90,15 +120,17 @@ namespace liftoff
     using Entry = DeclaredEntry;
 
     // Whether the scene must be watched for setting `entry`: a group an SI
-    // scene must not set, or an entry whose default stays dimensionless (a
-    // disc's radius L / 2) unless the scene sets it.
+    // scene must not set, an entry whose default stays dimensionless (a
+    // disc's radius L / 2) unless the scene sets it, or one whose default
+    // in an SI scene is another (si_default()).
     bool
     is_watched(const Entry &entry)
     {
       const auto quantities = declared_quantities(entry.documentation);
-      return !quantities.empty()
-             && (is_group(quantities[0])
-                 || converts_only_if_set(entry.documentation));
+      return !si_default_of(entry.documentation).empty()
+             || (!quantities.empty()
+                 && (is_group(quantities[0])
+                     || converts_only_if_set(entry.documentation)));
     }
 
     // Sets `path` of `prm` to `value`, which the scene gave as `written`; a
@@ -406,14 +438,20 @@ namespace liftoff
                         Patterns::Double(0.0, 1e100),
                         documentation);
     };
-    declare("Length", "0", "SI: L, the plate (a mesh file) along x [m].");
-    declare("Width", "0", "SI: the rectangle along y [m]; 0: = Length.");
+    declare("Length",
+            "0",
+            "SI: L, the plate (a mesh file) along x [m]; 0: the sum of "
+            "Slabs/Slab lengths, if given.");
+    declare("Width",
+            "0",
+            "SI: the rectangle along y [m]; 0: the sum of Slabs/Slab widths, "
+            "if given, else = Length.");
     declare("Thickness", "0", "SI: H [m].");
     declare("Young's modulus",
             "0",
             "SI: E [Pa]; with Plate/Poisson ratio nu, D = E H^3 / (12 (1 - "
             "nu^2)) and the shear modulus E / (2 (1 + nu)).");
-    declare("Density", "0", "SI: rho [kg/m^3].");
+    declare("Density", "2400", "SI: rho [kg/m^3]; concrete's by default.");
     declare("Gravity",
             "9.81",
             "SI: g [m/s^2]; the plate's weight rho g H [Pa] acts as "
@@ -454,6 +492,22 @@ namespace liftoff
   }
 
 
+  void
+  PhysicalUnits::take_si_defaults(ParameterHandler &scene) const
+  {
+    scene.enter_subsection("Units");
+    const System written =
+      system_names.parse(scene.get("System"), "Units/System");
+    scene.leave_subsection();
+    if (written != System::si)
+      return;
+    for (const auto &[path, entry] : declared_entries(scene))
+      if (const std::string value = si_default_of(entry.documentation);
+          !value.empty() && !is_set(path))
+        set_entry(scene, path, value, path + " = " + value);
+  }
+
+
   bool
   PhysicalUnits::is_set(const std::string &path) const
   {
@@ -468,9 +522,11 @@ namespace liftoff
     scene.enter_subsection("Units");
     system = system_names.parse(scene.get("System"), "Units/System");
     length = scene.get_double("Length");
-    width  = scene.get_double("Width");
+    if (length == 0.0)
+      length = outline.length_of_slabs;
+    width = scene.get_double("Width");
     if (width == 0.0)
-      width = length;
+      width = outline.width_of_slabs > 0 ? outline.width_of_slabs : length;
     thickness        = scene.get_double("Thickness");
     youngs_modulus   = scene.get_double("Young's modulus");
     density          = scene.get_double("Density");
@@ -760,6 +816,9 @@ namespace liftoff
       }
     message = with_written_numbers(message);
     message = with_seconds(message, t0);
+    message = with_tagged_numbers(message, [this](const Quantity q) {
+      return scale(q);
+    });
     // A group the message names is an entry the scene cannot set.
     for (const auto &[path, group] : group_entries)
       if (const auto at = message.find(path); at != std::string::npos)
@@ -900,6 +959,8 @@ namespace liftoff
         return w / t0;
       case Quantity::angular_velocity:
         return w / (length * t0);
+      case Quantity::frequency:
+        return 1 / t0;
       default:
         return 1;
       }

@@ -43,7 +43,9 @@ namespace liftoff
     prm.declare_entry("Steel modulus",
                       "0",
                       Patterns::Double(0.0),
-                      "The bar's Young's modulus E_d." + quantity("pressure"));
+                      "The bar's Young's modulus E_d; steel's 200 GPa by "
+                      "default in an SI scene."
+                        + si_default("200e9") + quantity("pressure"));
     prm.declare_entry("Steel Poisson ratio",
                       "0.3",
                       Patterns::Double(0.0, 0.5),
@@ -54,7 +56,10 @@ namespace liftoff
                       Patterns::Double(0.0),
                       "K, the concrete's reaction per unit area of the bar's "
                       "projection per unit deflection of the bar (N/m^3 in "
-                      "an SI scene; 0.8 to 1.5e12 for concrete)."
+                      "an SI scene: 0.08e12 to 0.41e12 for concrete, the "
+                      "0.3 to 1.5e6 pci of Huang, Pavement analysis and "
+                      "design, 2004; by default 407e9, 1.5e6 pci)."
+                        + si_default("407e9")
                         + quantity("pressure per length"));
     prm.declare_entry("Joint opening",
                       "0",

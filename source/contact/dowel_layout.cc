@@ -89,8 +89,9 @@ namespace liftoff
                       Patterns::Double(0.0),
                       "The distance between neighbouring dowels, used when "
                       "Positions is empty: dowels from Edge distance to the "
-                      "length of the joint less Edge distance."
-                        + quantity("length"));
+                      "length of the joint less Edge distance; 0.3 m (12 in) "
+                      "by default in an SI scene."
+                        + si_default("0.3") + quantity("length"));
     prm.declare_entry("Edge distance",
                       "0",
                       Patterns::Double(0.0),

@@ -43,7 +43,9 @@ namespace liftoff
     prm.declare_entry("Poisson ratio",
                       "0.1",
                       Patterns::Double(-1.0, 0.5),
-                      "nu, in (-1, 0.5)." + quantity("number"));
+                      "nu, in (-1, 0.5); concrete's 0.15 by default in an "
+                      "SI scene."
+                        + si_default("0.15") + quantity("number"));
     prm.declare_entry("Shear correction factor",
                       "0.8333333333333333",
                       Patterns::Double(0.0, 1.0),

@@ -75,6 +75,28 @@ namespace liftoff
     const Selection<Symmetry> symmetries = {{"full", Symmetry::full},
                                             {"half", Symmetry::half},
                                             {"quarter", Symmetry::quarter}};
+
+    // The sum of Slabs/`entry` as the scene writes it, 0 if it is empty or
+    // not numbers (which SlabLayout refuses by name later).
+    double
+    sum_of_slab_sizes(ParameterHandler &scene, const std::string &entry)
+    {
+      scene.enter_subsection("Slabs");
+      const std::string text = scene.get(entry);
+      scene.leave_subsection();
+      double sum = 0;
+      try
+        {
+          for (const double size : Utilities::string_to_double(
+                 Utilities::split_string_list(text, ',')))
+            sum += size;
+        }
+      catch (...)
+        {
+          return 0;
+        }
+      return std::isfinite(sum) && sum > 0 ? sum : 0;
+    }
   } // namespace
 
 
@@ -189,7 +211,9 @@ namespace liftoff
     scene.enter_subsection("Discretization");
     const std::string shape = scene.get("Shape");
     scene.leave_subsection();
-    outline.is_rectangle = shape == "rectangle";
+    outline.is_rectangle    = shape == "rectangle";
+    outline.length_of_slabs = sum_of_slab_sizes(scene, "Slab lengths");
+    outline.width_of_slabs  = sum_of_slab_sizes(scene, "Slab widths");
     // A mesh file's outline is its own; its length along x is checked
     // against Units/Length where the mesh is read (parse_parameters()).
     if (shape == "mesh file")

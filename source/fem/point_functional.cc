@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/fem/point_functional.h>
 
@@ -106,8 +107,10 @@ namespace liftoff
     {
       const MPI_Comm    comm = discretization.mpi_communicator;
       const std::string outside =
-        "The point (" + format_point(point[0], point[1])
-        + ") lies outside the meshed part of the " + "plate.";
+        "The point "
+        + tagged("(" + format_point(point[0], point[1]) + ")",
+                 Quantity::position)
+        + " lies outside the meshed part of the plate.";
       AssertThrow(discretization.geometry().is_on_modelled_part(point),
                   ExcMessage(outside));
       const auto [cell, unit, distance] =

@@ -130,16 +130,18 @@ namespace liftoff
       "dual (a pair at each end) or gear (one dual pair on the path: an "
       "aircraft's main gear, prm/gears/), the load per axle a force "
       "shared equally by the axle's tyres. E.g. 'single, single, 50e3; "
-      "tandem, dual, 80e3' (a steering axle and a tandem). Empty: the "
+      "tandem, dual, 80e3' (a steering axle and a tandem). The vehicle "
+      "faces the direction its Path heads at the start (+x if it stands "
+      "then), and keeps it: a path that turns is refused. Empty: the "
       "Wheels entry."
         + quantity("text, text, force"));
     prm.declare_entry("Tyre pressure",
                       "0",
                       Patterns::Double(0.0),
                       "p, the contact pressure of every tyre of Axles (> 0 "
-                      "with Axles): a tyre's contact area is its load / p "
-                      "(e.g. 0.7e6 Pa)."
-                        + quantity("pressure"));
+                      "with Axles): a tyre's contact area is its load / p; "
+                      "a truck's 0.7 MPa by default in an SI scene."
+                        + si_default("0.7e6") + quantity("pressure"));
     prm.declare_entry("Track width",
                       "1.8",
                       Patterns::Double(0.0),

@@ -52,6 +52,20 @@ namespace liftoff
   }
 
 
+  void
+  Load::keep_heading(const Tensor<1, 2> &direction)
+  {
+    heading = direction;
+  }
+
+
+  const std::optional<Tensor<1, 2>> &
+  Load::kept_heading() const
+  {
+    return heading;
+  }
+
+
   const LoadPath *
   Load::path() const
   {

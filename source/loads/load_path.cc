@@ -1,8 +1,10 @@
 #include <liftoff/base/entry_quantity.h>
+#include <liftoff/base/number_text.h>
 #include <liftoff/base/scene_input.h>
 #include <liftoff/loads/load_history.h>
 #include <liftoff/loads/load_path.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace liftoff
@@ -60,6 +62,32 @@ namespace liftoff
   {
     return Point<2>(function->value(Point<1>(tau), 0),
                     function->value(Point<1>(tau), 1));
+  }
+
+
+  std::optional<Tensor<1, 2>>
+  LoadPath::heading_at(const double tau) const
+  {
+    if (!names_tau_)
+      return std::nullopt;
+    // The secant over a step of the order of a time step: exact on a
+    // straight path, whose round-off it divides by its length (a tangent
+    // by a step near round-off would turn a diagonal by 1e-9), and a path
+    // that starts from rest (x = a tau^2) still heads somewhere.
+    const double       h     = 1e-3;
+    const Point<2>     here  = at(tau);
+    const Tensor<1, 2> ahead = at(tau + h) - here;
+    if (!(ahead.norm() > 1e-13 * (1 + here.norm())))
+      return std::nullopt;
+    return ahead / ahead.norm();
+  }
+
+
+  std::string
+  LoadPath::heading_text(const Tensor<1, 2> &heading)
+  {
+    return "(" + format_number(heading[0]) + ", " + format_number(heading[1])
+           + ")";
   }
 
 

@@ -226,6 +226,7 @@ namespace liftoff
             touches
             || (other->path() == &path && other->touches(geometry, tau));
       }
+    require_heading_kept(load, times);
     AssertThrow(touches,
                 ExcMessage(path.owner() + "/Path = <"
                            + abbreviated(path.expression())
@@ -233,6 +234,30 @@ namespace liftoff
                              "time from tau = 0 to the End time: it would "
                              "carry nothing. Move the path onto "
                            + plate_named(geometry) + "."));
+  }
+
+
+  void
+  LoadSet::require_heading_kept(const Load                &load,
+                                const std::vector<double> &times) const
+  {
+    // The loads on one path share its heading: the first one's is theirs.
+    const auto &kept = load.kept_heading();
+    if (!kept)
+      return;
+    const LoadPath &path = *load.path();
+    for (const double tau : times)
+      if (const auto heading = path.heading_at(tau);
+          heading && (*heading - *kept).norm() > 1e-6)
+        AssertThrow(
+          false,
+          ExcMessage(path.owner() + "/Path = <" + abbreviated(path.expression())
+                     + "> turns: it heads " + LoadPath::heading_text(*kept)
+                     + " at the start and " + LoadPath::heading_text(*heading)
+                     + " at tau = " + time_text(tau)
+                     + ", but the axles of Axles keep the direction they "
+                       "start in. Give a straight path, or the wheels one "
+                       "by one in Wheels."));
   }
 
 

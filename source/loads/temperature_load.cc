@@ -27,8 +27,9 @@ namespace liftoff
                           "0",
                           Patterns::Double(),
                           "alpha, the coefficient of thermal expansion "
-                          "(> 0; 1/K in SI): the free curvature is alpha dT "
-                          "/ H in both directions."
+                          "(> 0; 1/K in SI, concrete's 1e-5 by default): the "
+                          "free curvature is alpha dT / H in both directions."
+                            + si_default("1e-5")
                             + quantity("thermal expansion"));
         prm.declare_entry("Intensity",
                           "1",

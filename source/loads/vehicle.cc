@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace liftoff
 {
@@ -35,6 +36,21 @@ namespace liftoff
                                "circle, as practice takes it) or rectangle "
                                "(PCA's equivalent)."));
     }
+
+
+    // The Wheel shape `text` of a vehicle with `tyres` (none: Wheels); a
+    // tyre presses its contact area, which practice takes as a circle.
+    std::optional<PatchLoad::Shape>
+    wheel_shape(const std::string                   &text,
+                const std::string                   &parameter,
+                const std::vector<AxleGroups::Tyre> &tyres)
+    {
+      if (text != "default")
+        return wheel_shapes.parse(text, parameter);
+      if (tyres.empty())
+        return std::nullopt;
+      return PatchLoad::Shape::disc;
+    }
   } // namespace
 
 
@@ -57,10 +73,13 @@ namespace liftoff
           "together."
             + quantity("length, length, number"));
         prm.declare_entry("Wheel shape",
-                          "point",
-                          wheel_shapes.pattern(),
+                          "default",
+                          Patterns::Selection("default|"
+                                              + wheel_shapes.names()),
                           "A point load, or a patch load of the wheel's "
-                          "force spread over its area.");
+                          "force spread over its area; default: a disc for "
+                          "each tyre of Axles, a point for each wheel of "
+                          "Wheels.");
         prm.declare_entry("Wheel size",
                           "0.1, 0.1",
                           PatchLoad::size_pattern(),
@@ -79,14 +98,13 @@ namespace liftoff
   std::vector<std::unique_ptr<Load>>
   Vehicle::read(ParameterHandler &prm, const std::string &section)
   {
-    const std::string name        = "Loads/" + section;
-    const double      magnitude   = prm.get_double("Magnitude");
-    const LoadHistory history     = LoadHistory::read(prm, name);
-    const auto        path        = LoadPath::read(prm, name);
-    const std::string wheels_text = prm.get("Wheels");
-    const auto        shape =
-      wheel_shapes.parse(prm.get("Wheel shape"), name + "/Wheel shape");
-    const std::vector<AxleGroups::Tyre> tyres = AxleGroups::read(prm, name);
+    const std::string                   name      = "Loads/" + section;
+    const double                        magnitude = prm.get_double("Magnitude");
+    const LoadHistory                   history = LoadHistory::read(prm, name);
+    const auto                          path    = LoadPath::read(prm, name);
+    const std::vector<AxleGroups::Tyre> tyres   = AxleGroups::read(prm, name);
+    const auto                          shape =
+      wheel_shape(prm.get("Wheel shape"), name + "/Wheel shape", tyres);
     // Axles size each tyre by its load and pressure.
     const std::array<double, 2> size =
       (shape && tyres.empty() ? PatchLoad::parse_size(prm.get("Wheel size"),
@@ -95,7 +113,7 @@ namespace liftoff
                               : std::array<double, 2>{{0, 0}});
     AssertThrow(path != nullptr, ExcMessage(name + "/Path must not be empty."));
     const std::vector<std::array<double, 3>> wheels =
-      parse_wheels(wheels_text, name + "/Wheels");
+      parse_wheels(prm.get("Wheels"), name + "/Wheels");
     AssertThrow(tyres.empty() || magnitude == 0.0,
                 ExcMessage(name + "/Magnitude = " + prm.get("Magnitude")
                            + " and " + name
@@ -107,9 +125,13 @@ namespace liftoff
     if (magnitude == 0.0 && tyres.empty())
       return loads;
 
+    // Axles face the direction of travel; Wheels are typed in the plate's
+    // axes.
+    const Tensor<1, 2> heading =
+      path->heading_at(0).value_or(Tensor<1, 2>({1, 0}));
     const std::vector<Contact> contacts =
       tyres.empty() ? shared_contacts(wheels, magnitude, shape, size)
-                    : tyre_contacts(tyres, shape);
+                    : tyre_contacts(tyres, shape, heading, name);
     for (unsigned int k = 0; k < contacts.size(); ++k)
       {
         const std::string wheel = name + ", wheel " + std::to_string(k + 1);
@@ -129,6 +151,8 @@ namespace liftoff
                                                       *shape,
                                                       contacts[k].size,
                                                       contacts[k].offset));
+        if (!tyres.empty())
+          loads.back()->keep_heading(heading);
       }
     return loads;
   }
@@ -156,8 +180,24 @@ namespace liftoff
 
   std::vector<Vehicle::Contact>
   Vehicle::tyre_contacts(const std::vector<AxleGroups::Tyre>   &tyres,
-                         const std::optional<PatchLoad::Shape> &shape)
+                         const std::optional<PatchLoad::Shape> &shape,
+                         const Tensor<1, 2>                    &heading,
+                         const std::string                     &name)
   {
+    // A rectangle is integrated in the plate's axes: it can turn only by
+    // a quarter.
+    const bool across = std::abs(heading[1]) > 1 - 1e-9;
+    AssertThrow(shape != PatchLoad::Shape::rectangle || across
+                  || std::abs(heading[0]) > 1 - 1e-9,
+                ExcMessage(name
+                           + "/Wheel shape = rectangle: PCA's rectangles lie "
+                             "along x or y, but "
+                           + name + "/Path heads "
+                           + LoadPath::heading_text(heading)
+                           + " at tau = 0; give Wheel shape = disc, or a "
+                             "path along x or y."));
+    // The vehicle's axes, forward and to its left, in the plate's.
+    const Tensor<1, 2>   left({-heading[1], heading[0]});
     std::vector<Contact> contacts;
     for (const AxleGroups::Tyre &tyre : tyres)
       {
@@ -174,7 +214,12 @@ namespace liftoff
           }
         else
           size.fill(std::sqrt(4 * area / M_PI));
-        contacts.push_back({tyre.offset, tyre.force, tyre.pressure, size});
+        if (across)
+          std::swap(size[0], size[1]);
+        contacts.push_back({tyre.offset[0] * heading + tyre.offset[1] * left,
+                            tyre.force,
+                            tyre.pressure,
+                            size});
       }
     return contacts;
   }

@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mindlin_plate.h>
 #include <liftoff/output/resultant_sweep.h>
@@ -65,7 +66,9 @@ namespace liftoff
       "its point (of the meshed part), slab and time, in MPa in an SI "
       "scene (F0/L^2 in a dimensionless one); each slab's stress with its "
       "own thickness and with a temperature profile's stress of the face "
-      "(costs a pass over the output points of the field files per step).");
+      "(costs a pass over the output points of the field files per step). "
+      "On by default in an SI scene: the design quantity of a pavement."
+        + si_default("true"));
     prm.declare_entry(
       "Write stress history",
       "false",

@@ -162,17 +162,38 @@ namespace liftoff
   void
   OutputDirectory::declare_parameters(dealii::ParameterHandler &prm)
   {
-    prm.declare_entry("Directory",
-                      "output",
-                      dealii::Patterns::Anything(),
-                      "Folder for all results, created if needed (empty: write "
-                      "no files). A run owns it while it runs and refuses it "
-                      "if it holds an earlier run's results, unless started "
-                      "with `liftoff --overwrite` (which removes them) or "
-                      "`--resume`. Only the files liftoff writes are ever "
-                      "touched. `#` starts a comment in a parameter file, "
-                      "so a name cannot hold it: `run#3` is read as `run`."
-                        + quantity("text"));
+    prm.declare_entry(
+      "Directory",
+      "output",
+      dealii::Patterns::Anything(),
+      "Folder for all results, created if needed (empty: write "
+      "no files); output-NAME for a scene file NAME.prm, output "
+      "for a scene from standard input. A run owns it while it runs and "
+      "refuses it "
+      "if it holds an earlier run's results, unless started "
+      "with `liftoff --overwrite` (which removes them) or "
+      "`--resume`. Only the files liftoff writes are ever "
+      "touched. `#` starts a comment in a parameter file, "
+      "so a name cannot hold it: `run#3` is read as `run`."
+        + quantity("text"));
+  }
+
+
+  void
+  OutputDirectory::name_after_scene(dealii::ParameterHandler &prm,
+                                    const std::string        &scene_file)
+  {
+    if (scene_file == "-")
+      return;
+    std::string name = std::filesystem::path(scene_file).filename().string();
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, ".prm") == 0)
+      name.resize(name.size() - 4);
+    // `#` would start a comment in used_parameters.prm.
+    if (name.empty() || name.find('#') != std::string::npos)
+      return;
+    prm.enter_subsection("Output");
+    prm.set("Directory", "output-" + name);
+    prm.leave_subsection();
   }
 
 

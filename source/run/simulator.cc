@@ -54,6 +54,7 @@ namespace liftoff
   void
   Simulator::parse_parameters(ParameterHandler &prm)
   {
+    units.take_si_defaults(prm);
     units.parse_parameters(prm, SceneParts::outline_for_units(prm));
     ParameterHandler &scene = units.solver_scene(prm, declare_parameters);
     units.explain_errors_of([&]() {

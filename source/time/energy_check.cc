@@ -113,13 +113,19 @@ namespace liftoff
   std::string
   EnergyCheck::describe_violation() const
   {
-    std::ostringstream text;
-    text.precision(3);
-    text << "the energy balance error at step " << first_step << " ("
-         << first_error << ") is " << std::abs(first_error) / first_scale
-         << " of the run's energy scale " << first_scale
-         << ", above Energy check/Tolerance = " << tolerance;
-    return text.str();
+    // Three digits, each energy tagged with its unit for the scene's.
+    const auto number = [](const double x) {
+      std::ostringstream text;
+      text.precision(3);
+      text << x;
+      return text.str();
+    };
+    return "the energy balance error at step " + std::to_string(first_step)
+           + " (" + tagged(number(first_error), Quantity::energy) + ") is "
+           + number(std::abs(first_error) / first_scale)
+           + " of the run's energy scale "
+           + tagged(number(first_scale), Quantity::energy)
+           + ", above Energy check/Tolerance = " + number(tolerance);
   }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/base/output_files.h>
 #include <liftoff/fem/discretization.h>
@@ -173,8 +174,10 @@ namespace liftoff
                   + format_number(limit) + " of Newmark's method with Beta = "
                   + format_number(newmark.beta)
                   + " < Gamma/2 = " + format_number(0.5 * newmark.gamma)
-                  + " (omega_max^2 of M^-1 (K + K_f) estimated as "
-                  + format_number(largest_eigenvalue)
+                  + " (omega_max, the largest frequency of M^-1 (K + K_f), "
+                    "estimated as "
+                  + tagged(format_number(std::sqrt(largest_eigenvalue)),
+                           Quantity::frequency)
                   + (n_new_meshes > 0 ? " on the mesh refined at step "
                                           + std::to_string(state_.clock.step())
                                       : std::string())
@@ -340,9 +343,10 @@ namespace liftoff
       causes.push_back(
         "Time integration/Time step = <"
         + format_number(state_.clock.time_step())
-        + "> is long for the bed: the plate swings on it at "
-          "sqrt(Gamma) = "
-        + format_number(omega) + ", so Time step * sqrt(Gamma) = "
+        + "> is long for the bed: the plate swings on it at omega = "
+          "sqrt(k / (rho H)) = "
+        + tagged(format_number(omega), Quantity::frequency)
+        + ", so Time step * omega = "
         + format_number(state_.clock.time_step() * omega)
         + " > 1; use a step below dtau = " + format_number(1 / omega));
     const double tolerance = active_set.linear_solver().relative_tolerance();

@@ -22,11 +22,19 @@ commands run, shortened, and each answers a check it can be held to:
    run of the scene itself (to 1e-9), it comes during the pulse (t < 10
    ms), and the two meshes differ by less than 1 % (0.34 % measured), as
    the tutorial says.
+5. pavement-engineer, the engineer's scene: 40 lines or fewer (issue 65),
+   cut at 0.25 s (the tandem has rolled onto the curled free end), against
+   the same scene with every value it leaves to the SI defaults written out
+   here (concrete's density, nu and alpha, the dowels' steel, support and
+   spacing, the tyres' pressure and discs, the plate's size from the
+   slabs', the stress extremes): the same history.csv to the byte, and a
+   summary.json with the largest tension of each face in MPa.
 
     tutorial_scenes.py LIFTOFF SOURCE_DIR
 """
 
 import csv
+import json
 import os
 import subprocess
 import sys
@@ -166,6 +174,99 @@ def study(liftoff, source, work):
           % (at, 100 * abs(coarse / fine - 1)))
 
 
+# prm/pavement-engineer.prm with every SI default it relies on written out,
+# as the scene of 64 lines read before the defaults (00ab6ff).
+ENGINEER_SPELLED_OUT = """subsection Units
+  set System = SI
+  set Length = 14.5
+  set Width = 4.8
+  set Thickness = 0.25
+  set Young's modulus = 30e9
+  set Density = 2400
+  set Subgrade modulus = 50e6
+end
+subsection Plate
+  set Poisson ratio = 0.15
+end
+subsection Foundation
+  set Damping ratio = 0.05
+end
+subsection Discretization
+  set Cells along x = 58
+  set Cells along y = 8
+  set Polynomial degree = 2
+end
+subsection Slabs
+  set Slab lengths = 4.5, 5.5, 4.5
+  set Slab widths = 1.2, 3.6
+  set Shear stiffness = 5e8
+  subsection Dowels
+    set Joints = x1, x2
+    set Spacing = 0.3
+    set Diameter = 0.032
+    set Steel modulus = 200e9
+    set Modulus of dowel support = 407e9
+    set Joint opening = 0.006
+  end
+end
+subsection Loads
+  subsection Temperature load 1
+    set Magnitude = -10
+    set Expansion coefficient = 1e-5
+    set Permanent = true
+  end
+  subsection Vehicle 1
+    set Axles = single, single, 50e3; tandem, dual, 80e3
+    set Tyre pressure = 0.7e6
+    set Wheel shape = disc
+    set Group spacings = 5
+    set Path = -7.45 + 20*t; 0.6
+  end
+end
+subsection Time integration
+  set Time step = 1e-3
+  set End time = 0.25
+end
+subsection Output
+  set Directory = %s
+  set VTU interval = 0
+  set Write stress extremes = true
+end
+"""
+
+
+def engineer(liftoff, prm, work):
+    scene = os.path.join(prm, "pavement-engineer.prm")
+    with open(scene) as f:
+        n_lines = len(f.read().splitlines())
+    check(n_lines <= 40, "pavement-engineer: %d lines (<= 40)" % n_lines)
+    short = os.path.join(work, "engineer")
+    run_scene(liftoff, scene_including(scene, [
+        "Time integration/End time=0.25", "Output/VTU interval=0"], short),
+        short)
+    spelled = os.path.join(work, "engineer-spelled-out")
+    run_scene(liftoff, ENGINEER_SPELLED_OUT % spelled, spelled)
+    histories = []
+    for folder in (short, spelled):
+        with open(os.path.join(folder, "history.csv"), "rb") as f:
+            histories.append(f.read())
+    check(histories[0] == histories[1] and len(histories[0]) > 0,
+          "pavement-engineer: history.csv of the 40 lines = that of the "
+          "scene with every SI default written out (%d and %d bytes)"
+          % tuple(len(h) for h in histories))
+    with open(os.path.join(short, "summary.json")) as f:
+        summary = json.load(f)
+    faces = [summary.get("largest tension, %s face" % face, {})
+             for face in ("top", "bottom")]
+    ok = all("sigma_1 [MPa]" in face and face["sigma_1 [MPa]"] > 0
+             for face in faces)
+    check(ok and " MPa, " in summary.get("largest tension", ""),
+          "pavement-engineer: the summary gives each face's largest tension "
+          "in MPa (top %s, bottom %s; %s)" % (
+              faces[0].get("sigma_1 [MPa]"), faces[1].get("sigma_1 [MPa]"),
+              summary.get("largest tension")))
+
+
 def main(liftoff, source):
     liftoff = os.path.abspath(liftoff)
     prm = os.path.join(source, "prm")
@@ -174,6 +275,7 @@ def main(liftoff, source):
     jointed_truck(liftoff, prm, work)
     deflectometer(liftoff, source, work)
     study(liftoff, source, work)
+    engineer(liftoff, prm, work)
     finish()
 
 

@@ -13,6 +13,9 @@
 //   scene's divided by the unit computed here from doc/model.md's scales
 //   (L, t0 = L^2 sqrt(rho H / D), F0 = D / L, w in L, psi in rad), to
 //   round-off.
+// - A message's numbers tagged with their solver's unit (a point, an
+//   energy, a frequency: the messages of PointFunctional, the energy check
+//   and the stability limit) read in m, J and rad/s against these scales.
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -26,6 +29,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "test_tools.h"
@@ -198,6 +202,39 @@ LIFTOFF_TEST_MAIN(argc, argv)
   checks.less("entries of a unit an SI scene gives unconverted",
               probes.size() - converted,
               0.5);
+  // A number a message tags with its solver's unit (tagged(): a class that
+  // knows no units) in the SI scene's: a point in L, an energy in
+  // F0^2 L^2 / D = F0 L here (F0 = D / L), a frequency in 1 / t0.
+  const std::string message = units.in_scene_terms(
+    "The point " + liftoff::tagged("(0.25, -0.125)", Q::position)
+    + " lies outside; error " + liftoff::tagged("2e-06", Q::energy)
+    + "; omega = " + liftoff::tagged("100", Q::frequency) + ".");
+  std::cout << message << std::endl;
+  std::smatch found;
+  const bool  is_read = std::regex_match(
+    message,
+    found,
+    std::regex(R"(The point \((\S+), (\S+)\) m lies outside; error (\S+) J; )"
+                R"(omega = (\S+) rad/s\.)"));
+  double tag_error = 1;
+  if (is_read)
+    {
+      tag_error                          = 0;
+      const std::vector<double> expected = {1.25,
+                                            -0.625,
+                                            2e-6 * F0 * L,
+                                            100 / t0};
+      for (unsigned int i = 0; i < expected.size(); ++i)
+        tag_error =
+          std::max(tag_error,
+                   std::abs(std::stod(found[i + 1].str()) - expected[i])
+                     / std::abs(expected[i]));
+    }
+  checks.less("tagged numbers of a message in the SI scene's units (m, J, "
+              "rad/s), relative error",
+              tag_error,
+              1e-7);
+
   // Eight of each numbered load kind, whose entries of a unit are about
   // five each: a walk that missed the families would see a dozen.
   checks.within("entries of a unit in the scene (every numbered load)",

@@ -12,7 +12,12 @@ geometry it declares, computed here:
   and PCA's rectangles 0.8712 l x 0.6 l of that area: the deflections at
   the tyres' centres and between them agree to round-off;
 - the aircraft gears of prm/gears/, included in a vehicle: the same
-  against their data read here (spacings, pressure, load per axle).
+  against their data read here (spacings, pressure, load per axle);
+- the direction of travel: the preset driven along y (discs and PCA's
+  rectangles, turned a quarter) and along a diagonal (discs) against its
+  tyres typed at the declared geometry turned here to the path's
+  direction, the front ahead and the first tyre of an axle on the
+  vehicle's left.
 
     axle_presets.py LIFTOFF
 """
@@ -90,19 +95,31 @@ def equilibrium(work):
               f"the tyres' centre {centre:.9f}")
 
 
+def turned(placed, heading):
+    """PLACED tyres (dx forward, dy to the left, force) in the plate's axes
+    for a vehicle that heads along the unit vector HEADING."""
+    hx, hy = heading
+    return [(dx * hx - dy * hy, dx * hy + dy * hx, f) for dx, dy, f in placed]
+
+
 def against_wheels(work, shape, groups=((2, "dual", 80e3), (3, "gear", 40e3)),
-                   gear=None, spacing=(DUAL, AXLE), pressure=PRESSURE):
+                   gear=None, spacing=(DUAL, AXLE), pressure=PRESSURE,
+                   heading=(1.0, 0.0), base=BASE, path=(2.5, -0.3)):
     """The preset against its tyres typed as Wheels (all carry the same
-    load); `gear`: a file of prm/gears/ that gives the preset."""
-    placed = tyres(groups, [4.0], dual=spacing[0], axle=spacing[1])
+    load); `gear`: a file of prm/gears/ that gives the preset; `heading`:
+    the direction of the path (the static run is at its start, t = 0)."""
+    placed = turned(tyres(groups, [4.0], dual=spacing[0], axle=spacing[1]),
+                    heading)
     force = placed[0][2]
     area = force / pressure
     if shape == "disc":
         size = f"{math.sqrt(4 * area / math.pi):.17g}"
     else:
         side = math.sqrt(area / (0.8712 * 0.6))
-        size = f"{0.8712 * side:.17g}, {0.6 * side:.17g}"
-    path = (2.5, -0.3)
+        sides = (0.8712 * side, 0.6 * side)
+        if abs(heading[1]) == 1:
+            sides = sides[::-1]
+        size = f"{sides[0]:.17g}, {sides[1]:.17g}"
     probes = [(path[0] + dx, path[1] + dy) for dx, dy, _ in placed[::3]]
     probes += [(path[0] - 0.65, path[1]), (path[0] - 4, path[1] + 0.5)]
     output = {"Probe points": "; ".join(f"{x:.6f}, {y:.6f}"
@@ -111,20 +128,22 @@ def against_wheels(work, shape, groups=((2, "dual", 80e3), (3, "gear", 40e3)),
                "Tyre pressure": pressure}
     if gear is not None:
         vehicle = {"GEAR": gear}
-    text = scene_text(BASE, {"Loads": {"Vehicle 1": {
-        **vehicle, "Wheel shape": shape, "Path": f"{path[0]}; {path[1]}"}},
+    moving = f"{path[0]} + {heading[0]}*t; {path[1]} + {heading[1]}*t"
+    text = scene_text(base, {"Loads": {"Vehicle 1": {
+        **vehicle, "Wheel shape": shape, "Path": moving}},
         "Output": output}).replace("set GEAR =", "include")
     name = shape + ("" if gear is None else "_" + os.path.basename(gear))
+    name += "" if heading == (1.0, 0.0) else f"_heading_{heading[0]}_{heading[1]}"
     preset = read_history(run_scene_or_fail(LIFTOFF, work, "preset_" + name,
                                             text))
     typed = read_history(run_scene_or_fail(LIFTOFF, work, "typed_" + name,
-                                           scene_text(BASE, {
+                                           scene_text(base, {
         "Loads": {"Vehicle 1": {
             "Magnitude": force,
             "Wheels": "; ".join(f"{dx:.17g}, {dy:.17g}, 1"
                                 for dx, dy, _ in placed),
             "Wheel shape": shape, "Wheel size": size,
-            "Path": f"{path[0]}; {path[1]}"}},
+            "Path": moving}},
         "Output": output})))
     columns = [c for c in preset if c.startswith("w(")]
     scale = max(abs(preset[c][-1]) for c in columns)
@@ -158,9 +177,22 @@ def gears(work):
                        float(data["Tyre pressure"]))
 
 
+def headings(work):
+    """A lane along y (the vehicle heads -y, so its left is +x) and a
+    diagonal, on a square plate that holds the turned vehicle."""
+    square = {**BASE, "Units": {**BASE["Units"], "Width": 12},
+              "Discretization": {"Cells along x": 24, "Cells along y": 24}}
+    for shape in ("disc", "rectangle"):
+        against_wheels(work, shape, heading=(0.0, -1.0), base=square,
+                       path=(-0.4, -2.5))
+    against_wheels(work, "disc", heading=(0.6, 0.8), base=square,
+                   path=(2.0, 2.5))
+
+
 with tempfile.TemporaryDirectory() as work:
     equilibrium(work)
     against_wheels(work, "disc")
     against_wheels(work, "rectangle")
     gears(work)
+    headings(work)
 finish()

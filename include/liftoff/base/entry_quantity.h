@@ -40,6 +40,7 @@ namespace liftoff
     angle_degrees,          ///< degrees in both systems
     temperature_difference, ///< K in both systems
     thermal_expansion,      ///< per K, in units of F0 L / D
+    frequency,              ///< an angular frequency, 1 / t0
     // The dimensionless groups an SI scene gives by the entries of Units
     // (is_group()).
     mu,
@@ -107,6 +108,38 @@ namespace liftoff
   /// and only a value the scene sets is in SI units.
   bool
   converts_only_if_set(const std::string &documentation);
+
+  /**
+   * A number (or a point "(x, y)") in a message, tagged with the
+   * dimensionless scales of its `quantity` (dimensionless_scales()):
+   * "(0.6, 0.25) [L]", "3.1e-05 [F0^2*L^2/D]". A dimensionless scene reads
+   * it so, in the units of doc/model.md; PhysicalUnits::in_scene_terms()
+   * writes it in an SI scene's units ("(8.7, 3.6) m", "0.012 J"), so a
+   * message of a class that knows no units speaks the scene's.
+   */
+  std::string
+  tagged(const std::string &number, const Quantity quantity);
+
+  /**
+   * The words of an entry's documentation, before its quantity(), that give
+   * its default in a scene in SI units, " [SI default: 200e9]": a value
+   * that only SI fixes (a steel's modulus in Pa, concrete's expansion in
+   * 1/K), which a dimensionless scene, whose units are the slab's, must
+   * give itself (the declared default stays its default). The class that
+   * declares the entry gives it, as in
+   *
+   *   prm.declare_entry("Steel modulus", "0", Patterns::Double(0.0),
+   *                     "E_d." + si_default("200e9") + quantity("pressure"));
+   *
+   * and PhysicalUnits writes it, converted, into the dimensionless twin of
+   * an SI scene that leaves the entry out. `liftoff --parameters` shows it.
+   */
+  std::string
+  si_default(const std::string &value);
+
+  /// The value si_default() put in `documentation`; empty if none.
+  std::string
+  si_default_of(const std::string &documentation);
 
   /// An entry as ParameterHandler declares it.
   struct DeclaredEntry

@@ -47,6 +47,10 @@ namespace liftoff
       /// The plate is the rectangle Units/Length x Units/Width: points
       /// given in metres are checked against it (PlateGeometry).
       bool is_rectangle = true;
+      /// The sums of the slabs' lengths and widths the scene gives in
+      /// metres (PlateGeometry; 0: none), which Units/Length and Width
+      /// left out are, so that a pavement of given slabs says its size once.
+      double length_of_slabs = 0, width_of_slabs = 0;
       /// Entries of Units the scene must give (> 0), each with the choice
       /// that needs it, as the message ends ("a Foundation/Model other
       /// than none").
@@ -68,6 +72,14 @@ namespace liftoff
     /// scene is read into `scene`; the counts are this object's.
     void
     watch(ParameterHandler &scene);
+
+    /// In an SI scene, sets each entry the scene leaves out that has an
+    /// SI default (si_default(): a steel's modulus, concrete's nu) to it,
+    /// so that every part, used_parameters.prm and the checkpoint read the
+    /// values the run uses. Called once the scene is read, before
+    /// parse_parameters() and the outline.
+    void
+    take_si_defaults(ParameterHandler &scene) const;
 
     /// Reads `Units`; refuses a scene that mixes physical entries with
     /// the dimensionless ones they replace, naming both, or that lacks an

@@ -14,14 +14,15 @@ namespace liftoff
    * A vehicle's wheels from its axle groups, as a pavement engineer gives
    * them: single, tandem or tridem axles on single or dual tyres (or an
    * aircraft's gear, one dual assembly on the path), each with its load
-   * per axle, and the tyre pressure. The wheels lie behind the path's
-   * point along -x (the vehicle faces +x): the first group's middle is at
-   * the path's point, each next group `Group spacings` behind the one
-   * before; a group's axles `Axle spacing` apart; an axle's two ends
-   * `Track width` apart (between the middles of its dual pairs), the two
-   * tyres of a pair `Dual spacing` apart. An axle's load is shared equally
-   * by its tyres; a tyre's contact area is its load / Tyre pressure
-   * (Vehicle makes it a disc or PCA's equivalent rectangle).
+   * per axle, and the tyre pressure. The tyres' offsets are in the
+   * vehicle's axes, x forward and y to its left (Vehicle turns them to
+   * the path's direction of travel); the wheels lie behind the path's
+   * point: the first group's middle is at the path's point, each next group
+   * `Group spacings` behind the one before; a group's axles `Axle spacing`
+   * apart; an axle's two ends `Track width` apart (between the middles of its
+   * dual pairs), the two tyres of a pair `Dual spacing` apart. An axle's load
+   * is shared equally by its tyres; a tyre's contact area is its load / Tyre
+   * pressure (Vehicle makes it a disc or PCA's equivalent rectangle).
    *
    * The defaults of the spacings are typical road vehicles' in metres, for
    * an SI scene (a dimensionless scene gives its own, in units of L).

@@ -60,6 +60,15 @@ namespace liftoff
     Point<2>
     path_point_at(const double tau) const;
 
+    /// A wheel of a vehicle's axles faces the direction its path heads at
+    /// tau = 0, `heading`: its offset is turned to it, and the path must
+    /// keep it (LoadSet refuses one that turns).
+    void
+    keep_heading(const Tensor<1, 2> &heading);
+    /// That direction; none for a load whose offset is in the plate's axes.
+    const std::optional<Tensor<1, 2>> &
+    kept_heading() const;
+
     /// Whether some of it acts on the plate at tau: exactly on the
     /// rectangle; on other shapes a load is on the plate if one of 17 x
     /// 17 points over its area (65 along a line) is.
@@ -190,8 +199,10 @@ namespace liftoff
     /// A point load's Position when it stands.
     Point<2> standing_point;
     /// A wheel's from its vehicle's path.
-    Tensor<1, 2>    offset;
-    LA::MPI::Vector fixed_part;
+    Tensor<1, 2> offset;
+    /// keep_heading().
+    std::optional<Tensor<1, 2>> heading;
+    LA::MPI::Vector             fixed_part;
   };
 
   /// Subsection `section` of a load: Magnitude (`unit`, its quantity

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace liftoff
@@ -32,6 +33,16 @@ namespace liftoff
 
     Point<2>
     at(const double tau) const;
+
+    /// The direction of travel at tau, a unit vector; none where the path
+    /// stands (at tau and just after it).
+    std::optional<Tensor<1, 2>>
+    heading_at(const double tau) const;
+
+    /// "(x, y)" of a heading for messages, rounded: a quarter turn's
+    /// round-off (0.9999999999999999) is not news.
+    static std::string
+    heading_text(const Tensor<1, 2> &heading);
 
     /// Whether it names tau (otherwise the load stands at its one point).
     bool

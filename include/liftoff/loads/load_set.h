@@ -189,5 +189,10 @@ namespace liftoff
     require_path_on_plate(const Load                &load,
                           const std::vector<double> &times,
                           const PlateGeometry       &geometry) const;
+    /// Refuse the path of `load`, whose offset keeps a heading (a tyre of
+    /// Axles), if it heads another way at one of `times`.
+    void
+    require_heading_kept(const Load                &load,
+                         const std::vector<double> &times) const;
   };
 } // namespace liftoff

@@ -47,10 +47,13 @@ namespace liftoff
                     const std::optional<PatchLoad::Shape>    &shape,
                     const std::array<double, 2>              &size);
     /// The tyres of Axles, a disc or PCA's rectangle of area force /
-    /// pressure each.
+    /// pressure each, the vehicle facing `heading` (a unit vector; a
+    /// rectangle only along x or y, else refused naming `name`'s entries).
     static std::vector<Contact>
     tyre_contacts(const std::vector<AxleGroups::Tyre>   &tyres,
-                  const std::optional<PatchLoad::Shape> &shape);
+                  const std::optional<PatchLoad::Shape> &shape,
+                  const Tensor<1, 2>                    &heading,
+                  const std::string                     &name);
     /// "dx, dy, share; ..." or refused naming `parameter`.
     static std::vector<std::array<double, 3>>
     parse_wheels(const std::string &text, const std::string &parameter);

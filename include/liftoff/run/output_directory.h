@@ -39,6 +39,14 @@ namespace liftoff
     /// `Directory`, the folder's name, in the subsection `Output`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Makes output-NAME the Directory of the scene file `scene_file`
+    /// (.../NAME.prm) unless the scene sets one: two scenes run side by
+    /// side never share a folder. A scene from standard input ("-") keeps
+    /// `output`. Called after declare_parameters(), before the scene is
+    /// read.
+    static void
+    name_after_scene(dealii::ParameterHandler &prm,
+                     const std::string        &scene_file);
 
     /// Lock the folder `path`, creating it if `create`; a folder that does
     /// not exist and is not created is not locked (there is nothing in it
