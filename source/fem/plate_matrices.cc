@@ -24,13 +24,7 @@ namespace liftoff
                             FullMatrix<double>        &cell_stiffness,
                             FullMatrix<double>        &cell_mass)
     {
-      const FEValuesExtractors::Scalar w = PlateFields::w_extractor(layer),
-                                       psi_x =
-                                         PlateFields::rotation_extractor(0,
-                                                                         layer),
-                                       psi_y =
-                                         PlateFields::rotation_extractor(1,
-                                                                         layer);
+      const auto [w, psi_x, psi_y] = PlateFields::extractors(layer);
       // (1 - nu) / 2, MindlinPlate::twisting_stiffness() of the layer.
       const double       twisting = 0.5 * (1.0 - nu);
       const double       rotary   = section.rotary;

@@ -102,13 +102,7 @@ namespace liftoff
                                           const unsigned int i,
                                           const unsigned int q) const
   {
-    const FEValuesExtractors::Scalar w = PlateFields::w_extractor(layer),
-                                     psi_x =
-                                       PlateFields::rotation_extractor(0,
-                                                                       layer),
-                                     psi_y =
-                                       PlateFields::rotation_extractor(1,
-                                                                       layer);
+    const auto [w, psi_x, psi_y] = PlateFields::extractors(layer);
     return values[w].gradient(i, q)
            - Tensor<1, 2>(
              {values[psi_x].value(i, q), values[psi_y].value(i, q)});

@@ -17,18 +17,27 @@ pull), each case against a scene that does not have that interface:
   contact fraction that slab's contact fraction, its resultant the load;
 - equilibrium under a load and both weights (static): the bed carries the
   load and the weights of slab and base, the interface the load and the
-  slab's weight.
+  slab's weight;
+- a dynamic pulse on the settled pair, which rebounds off the base: the
+  interface lets go (its contact fraction falls below 1), the energy
+  balance holds, a quarter model gives the full plate's history, a run
+  stopped and resumed gives the same history.csv byte for byte, and two
+  ranks give every column within 1e-9.
 
     base_tensionless.py LIFTOFF
 """
 
+import filecmp
 import os
 import sys
 import tempfile
 
+import numpy as np
+
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
-from scenes import read_history, run_scene_or_fail, scene_text  # noqa: E402
+from scenes import (read_history, run_scene, run_scene_or_fail,  # noqa: E402
+                    scene_text)
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 DELTA, NU = 0.05, 0.3
@@ -156,9 +165,63 @@ def equilibrium(work):
             load + slab_weight, 1e-9)
 
 
+def pulse(symmetry, end_time=0.08):
+    return scene_text(
+        {"Plate": {"Thickness ratio": DELTA, "Poisson ratio": NU},
+         "Foundation": {"Model": "tensionless", "Stiffness": 400},
+         # The same cells: 8 along each side of the quarter.
+         "Discretization": {"Symmetry": symmetry,
+                            "Cells along x": 16 if symmetry == "full" else 8,
+                            "Cells along y": 16 if symmetry == "full" else 8},
+         "Loads": {"Self weight": 2,
+                   "Pressure 1": {"Magnitude": 400,
+                                  "Region": f"{-B}, {B}, {-B}, {B}",
+                                  "Time history":
+                                  "sin(pi * tau / 0.02)^2 * (tau < 0.02)"}},
+         "Time integration": {"Time step": 0.001, "End time": end_time}},
+        base("tensionless", 0.04, 0.5, k_i=1e4))
+
+
+def dynamic(work):
+    full = run_scene_or_fail(LIFTOFF, work, "pulse_full", pulse("full"))
+    h = read_history(full)
+    check(min(h["interface_contact_fraction"]) < 0.99,
+          "pulse: the slab lets go of the base (interface contact fraction "
+          f"down to {min(h['interface_contact_fraction']):.3f})")
+    scale = max(np.max(np.abs(h[c])) for c in ("kinetic", "strain", "work"))
+    worst = np.max(np.abs(h["balance_error"])) / scale
+    check(worst < 1e-2, f"pulse: the energy balance within {worst:.1e} of "
+          "the energy scale")
+    quarter = read_history(run_scene_or_fail(LIFTOFF, work, "pulse_quarter",
+                                             pulse("quarter")))
+    for column in ("w(0;0)", "interface_contact_fraction",
+                   "interface_resultant", "contact_fraction"):
+        error = np.max(np.abs(quarter[column] - h[column])) / max(
+            np.max(np.abs(h[column])), 1e-300)
+        check(error < 1e-9, f"pulse: quarter model's {column} the full "
+              f"plate's within {error:.1e}")
+    run_scene_or_fail(LIFTOFF, work, "pulse_resumed", pulse("quarter", 0.04))
+    folder, result = run_scene(LIFTOFF, work, "pulse_resumed",
+                               pulse("quarter"), ["--resume"])
+    check(result.returncode == 0 and filecmp.cmp(
+        os.path.join(folder, "history.csv"),
+        os.path.join(work, "pulse_quarter", "history.csv"), shallow=False),
+        "pulse: stopped at tau = 0.04 and resumed, history.csv byte for "
+        "byte the whole run's")
+    two, result = run_scene(LIFTOFF, work, "pulse_two", pulse("quarter"),
+                            ranks=2)
+    other = read_history(two) if result.returncode == 0 else {}
+    worst = max((np.max(np.abs(quarter[c] - other[c]))
+                 / max(np.max(np.abs(quarter[c])), 1e-300)
+                 for c in quarter if c != "balance_error"), default=1.0)
+    check(result.returncode == 0 and worst < 1e-9,
+          f"pulse: two ranks give every column within {worst:.1e}")
+
+
 with tempfile.TemporaryDirectory() as work:
     stiff_interface(work)
     thin_soft_base(work)
     rigid_base(work)
     equilibrium(work)
+    dynamic(work)
 finish()

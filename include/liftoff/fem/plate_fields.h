@@ -84,6 +84,19 @@ namespace liftoff
       return FEValuesExtractors::Scalar(rotation(axis, layer));
     }
 
+    /// The extractors of one layer's fields.
+    struct Extractors
+    {
+      FEValuesExtractors::Scalar w, psi_x, psi_y;
+    };
+    static Extractors
+    extractors(const unsigned int layer)
+    {
+      return {w_extractor(layer),
+              rotation_extractor(0, layer),
+              rotation_extractor(1, layer)};
+    }
+
     /// The mask of the fields named true (w, psi_x, psi_y) in every one of
     /// `layers` layers: a support or a symmetry plane holds both layers.
     static ComponentMask
