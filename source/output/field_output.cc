@@ -29,18 +29,23 @@ namespace liftoff
     /// Pressure of the springs on the plate, Gamma (w - g)^+ (Gamma (w - g)
     /// when bilateral): what the foundation's springs carry, positive in
     /// compression; and the uplift (g - w)^+, the gap between plate and bed
-    /// where the plate is lifted.
+    /// where the plate is lifted. The same for the springs between a slab
+    /// and its base, with w_slab - w_base for w (`between_layers`).
     class FoundationPressure : public DataPostprocessor<2>
     {
     public:
-      explicit FoundationPressure(const ContactLaw &law)
+      FoundationPressure(const ContactLaw              &law,
+                         const std::vector<std::string> names,
+                         const bool                     between_layers)
           : law(law)
+          , names(names)
+          , between_layers(between_layers)
       {}
 
       std::vector<std::string>
       get_names() const override
       {
-        return {"foundation_pressure", "uplift"};
+        return names;
       }
 
       UpdateFlags
@@ -58,11 +63,13 @@ namespace liftoff
       {
         for (unsigned int q = 0; q < input.solution_values.size(); ++q)
           {
-            const double g =
+            const Vector<double> &u = input.solution_values[q];
+            const double          g =
               (law.has_gap() ? law.gap_at(input.evaluation_points[q]) : 0.0);
             const double w =
-              input.solution_values[q][PlateFields::bed_component(
-                input.solution_values[q].size())]
+              (between_layers
+                 ? u[PlateFields::w_of(0)] - u[PlateFields::w_of(1)]
+                 : u[PlateFields::bed_component(u.size())])
               - g;
             computed[q][0] = law.spring_pressure(w);
             computed[q][1] = std::max(-w, 0.0);
@@ -70,7 +77,9 @@ namespace liftoff
       }
 
     private:
-      const ContactLaw &law;
+      const ContactLaw              &law;
+      const std::vector<std::string> names;
+      const bool                     between_layers;
     };
 
 
@@ -189,7 +198,16 @@ namespace liftoff
         {"displacement", Quantity::deflection},
         {"foundation_pressure", Quantity::pressure},
         {"uplift", Quantity::deflection},
-        {"contact_status", Quantity::number}};
+        {"contact_status", Quantity::number},
+        {"w_base", Quantity::deflection},
+        {"psi_x_base", Quantity::rotation},
+        {"psi_y_base", Quantity::rotation},
+        {"w_base_dot", Quantity::velocity},
+        {"psi_x_base_dot", Quantity::angular_velocity},
+        {"psi_y_base_dot", Quantity::angular_velocity},
+        {"interface_pressure", Quantity::pressure},
+        {"interface_gap", Quantity::deflection},
+        {"interface_contact_status", Quantity::number}};
       quantities.insert(StressResultants::quantities().begin(),
                         StressResultants::quantities().end());
       return quantities;
@@ -503,8 +521,24 @@ namespace liftoff
                           PlateFields::names(layers, "_dot"),
                           DataOut<2>::type_dof_data,
                           scalar);
-    const FoundationPressure pressure(foundation.law());
+    const FoundationPressure pressure(foundation.law(),
+                                      {"foundation_pressure", "uplift"},
+                                      false);
     plane.add_data_vector(solution, pressure);
+    // A base the slab can lift off: its springs' pressure, the gap between
+    // slab and base, and which cells of the interface are in contact.
+    std::unique_ptr<FoundationPressure> on_base;
+    Vector<float>                       base_contact;
+    if (interface != nullptr)
+      {
+        on_base = std::make_unique<FoundationPressure>(
+          interface->law(),
+          std::vector<std::string>{"interface_pressure", "interface_gap"},
+          true);
+        plane.add_data_vector(solution, *on_base);
+        base_contact = interface->diagnostics().contact_fraction_per_cell();
+        plane.add_data_vector(base_contact, "interface_contact_status");
+      }
     const StressResultants resultants(plate,
                                       disc.mapping(),
                                       disc.element().shear_integration(),
@@ -617,6 +651,7 @@ namespace liftoff
   FieldOutput::setup(const SceneView &scene, const std::string &folder)
   {
     directory = folder;
+    interface = scene.interface;
     mesh_changed(scene);
   }
 

@@ -93,6 +93,9 @@ namespace liftoff
     load(InputArchive &archive) override;
 
   private:
+    /// The springs between the slab and a base it can lift off (none:
+    /// nullptr), whose pressure, gap and contact the files add.
+    const Bed *interface = nullptr;
     /// The fields of the state, the foundation, the moments and the cells
     /// in `plane`, with its patches built (the postprocessors and cell
     /// vectors it reads live here until then).
