@@ -78,12 +78,13 @@ namespace liftoff
         + quantity("text"));
     prm.declare_entry("Interface stiffness",
                       "0",
-                      Patterns::Double(0.0, 1e300),
+                      Patterns::Double(0.0, 1e12),
                       "k_i of tensionless: the pressure between slab and "
                       "base per unit of w_slab - w_base where they touch "
                       "(Pa/m in an SI scene; in units of D / L^4, as "
                       "Foundation/Stiffness, in a dimensionless one); > 0 "
-                      "with Interface = tensionless. A stiff interface "
+                      "with Interface = tensionless, and at most 1e12 D / "
+                      "L^4 for the reason Foundation/Stiffness is. A stiff interface "
                       "(k_i large against the base's k_b = E_b / H_b) "
                       "approaches unbonded without separation where the "
                       "slab is pressed."
