@@ -244,7 +244,7 @@ namespace liftoff
   {
     if (!with_faces)
       return n_fields_by_default;
-    return plate.base.is_composite() ? names.size() : n_fields_of_slab;
+    return plate.base.present() ? names.size() : n_fields_of_slab;
   }
 
 
@@ -364,6 +364,37 @@ namespace liftoff
                            out);
         else
           set_face_stresses(section, nullptr, 0, out);
+      }
+    if (plate.base.n_layers() == 2)
+      add_own_base_faces(gradient, computed);
+  }
+
+
+  void
+  StressResultants::add_own_base_faces(
+    const std::vector<std::vector<Tensor<1, 2>>> &gradient,
+    std::vector<Vector<double>>                  &computed) const
+  {
+    // A base of its own bends about its own mid-plane by its own psi.
+    const SectionCoefficients base =
+      plate.base.own_section(plate.poisson_ratio,
+                             plate.shear_correction,
+                             plate.thickness_ratio);
+    for (unsigned int q = 0; q < computed.size(); ++q)
+      {
+        const PlaneMoments m(-base.bending,
+                             plate.base.poisson_ratio,
+                             gradient[q][PlateFields::rotation(0, 1)],
+                             gradient[q][PlateFields::rotation(1, 1)]);
+        const double       top    = at_face(base.top, m.first, m.second, 0);
+        const double       bottom = at_face(base.bottom, m.first, m.second, 0);
+        Vector<double>    &out    = computed[q];
+        out[11]                   = std::max({out[11], top, bottom});
+        if (out.size() > n_fields_of_slab)
+          {
+            out[14] = top;
+            out[15] = bottom;
+          }
       }
   }
 

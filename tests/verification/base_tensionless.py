@@ -7,8 +7,9 @@ pull), each case against a scene that does not have that interface:
   a thin slab pressed everywhere (a uniform pressure and a square load) is
   the unbonded base without separation (D = D_slab + D_base, w shared): w
   at the load, the slab's M_xx there against its share D_slab / D of the
-  section's, and the interface in contact everywhere (k_i 100 times
-  softer leaves 5.5e-3 in the moment);
+  section's, the base's face stresses (of its own moments) against the
+  section's law for them (7.8e-4), and the interface in contact
+  everywhere (k_i 100 times softer leaves 5.5e-3 in the moment);
 - a very thin and soft base (H_b = H / 100, E_b = E / 1000, nearly
   weightless) under a stiff interface is the slab alone on the bed;
 - a slab lifting off a rigid base (a base 100 times as stiff as the slab on
@@ -49,7 +50,8 @@ PROBES = ["M_xx(0; 0)"]
 POINTS = "0, 0; 0.25, 0.25; 0, 0.45"
 
 
-def slab(stiffness, model, cells=8, loads=None, output=None, delta=DELTA):
+def slab(stiffness, model, cells=8, loads=None, output=None, delta=DELTA,
+         probes=PROBES):
     sections = {
         "Analysis": {"Type": "static"},
         "Plate": {"Thickness ratio": delta, "Poisson ratio": NU},
@@ -58,7 +60,7 @@ def slab(stiffness, model, cells=8, loads=None, output=None, delta=DELTA):
                            "Cells along y": cells},
         "Loads": loads or {},
         "Output": {"Write energies": "false",
-                   "Probe quantities": ", ".join(PROBES)}}
+                   "Probe quantities": ", ".join(probes)}}
     sections["Output"].update(output or {})
     return sections
 
@@ -97,7 +99,9 @@ def stiff_interface(work, cells=8):
     # plate's units (E / (1 - nu^2) = 12 / delta^3, D = 1).
     k_b = e_b * 12 / delta ** 3 / h_b
     d_b = e_b * (h_b / delta) ** 3
-    scene = slab(0.4, "bilateral", cells, loads=PRESSED, delta=delta)
+    faces = ["sigma_1_base_top(0; 0)", "sigma_1_base_bottom(0; 0)"]
+    scene = slab(0.4, "bilateral", cells, loads=PRESSED, delta=delta,
+                 probes=PROBES + faces)
     separate = run(work, "stiff", scene,
                    base("tensionless", h_b, e_b, k_i=1e-2 * k_b))
     shared = run(work, "unbonded", scene, base("unbonded", h_b, e_b))
@@ -108,6 +112,12 @@ def stiff_interface(work, cells=8):
     compare("stiff interface: the slab's M_xx(0, 0) against its share of "
             "unbonded's", separate["M_xx(0;0)"],
             shared["M_xx(0;0)"] / (1 + d_b), 1e-3)
+    # The base's faces by its own bending against the unbonded section's
+    # law for them.
+    for face in ("base_top", "base_bottom"):
+        compare(f"stiff interface: sigma_1_{face}(0, 0) of the base's own "
+                "moments against unbonded's", separate[f"sigma_1_{face}(0;0)"],
+                shared[f"sigma_1_{face}(0;0)"], 1e-3)
     check(separate["interface_contact_fraction"] == 1,
           "stiff interface: pressed everywhere, in contact everywhere "
           f"({separate['interface_contact_fraction']})")

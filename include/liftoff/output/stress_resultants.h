@@ -149,6 +149,11 @@ namespace liftoff
     /// where there is one).
     unsigned int
     n_fields(const bool with_faces) const;
+    /// The faces' stresses of a base of its own (BaseLayer, tensionless),
+    /// from its own moments, into `computed` at every point.
+    void
+    add_own_base_faces(const std::vector<std::vector<Tensor<1, 2>>> &gradient,
+                       std::vector<Vector<double>> &computed) const;
 
     const MindlinPlate                    &plate;
     const Mapping<2>                      &mapping;
