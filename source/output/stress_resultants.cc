@@ -365,8 +365,7 @@ namespace liftoff
         else
           set_face_stresses(section, nullptr, 0, out);
       }
-    if (plate.base.n_layers() == 2)
-      add_own_base_faces(gradient, computed);
+    add_own_base_faces(gradient, computed);
   }
 
 
@@ -375,6 +374,8 @@ namespace liftoff
     const std::vector<std::vector<Tensor<1, 2>>> &gradient,
     std::vector<Vector<double>>                  &computed) const
   {
+    if (plate.base.n_layers() == 1)
+      return;
     // A base of its own bends about its own mid-plane by its own psi.
     const SectionCoefficients base =
       plate.base.own_section(plate.poisson_ratio,

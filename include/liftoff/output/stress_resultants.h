@@ -150,7 +150,8 @@ namespace liftoff
     unsigned int
     n_fields(const bool with_faces) const;
     /// The faces' stresses of a base of its own (BaseLayer, tensionless),
-    /// from its own moments, into `computed` at every point.
+    /// from its own moments, into `computed` at every point; nothing
+    /// without one.
     void
     add_own_base_faces(const std::vector<std::vector<Tensor<1, 2>>> &gradient,
                        std::vector<Vector<double>> &computed) const;
