@@ -9,6 +9,34 @@
 
 namespace liftoff
 {
+  namespace
+  {
+    /// A base of its own (tensionless) runs on under the joints, which it
+    /// cannot do through a symmetry plane yet, and carries slabs of one
+    /// section.
+    void
+    require_base_fits(const BaseLayer     &base,
+                      const PlateGeometry &geometry,
+                      const bool           one_section)
+    {
+      if (base.n_layers() == 1)
+        return;
+      for (const auto &joint : geometry.slabs().joints())
+        AssertThrow(!joint.on_plane,
+                    ExcMessage("Base/Interface = tensionless runs the base "
+                               "on under the joints, which it cannot do "
+                               "through a symmetry plane (not yet): model "
+                               "the full plate or a half whose plane is no "
+                               "joint."));
+      AssertThrow(one_section,
+                  ExcMessage("Slabs/Thicknesses, Modulus ratios: slabs of "
+                             "their own sections on a base of their own "
+                             "(Base/Interface = tensionless) are not built "
+                             "yet; use one section, or bonded or unbonded."));
+    }
+  } // namespace
+
+
   void
   MindlinPlate::declare_parameters(ParameterHandler &prm)
   {
@@ -161,18 +189,12 @@ namespace liftoff
       per_slab("Modulus ratios", 1.0, 1e-6, 1e6);
     prm.leave_subsection();
 
-    AssertThrow(base.n_layers() == 1 || n_slabs == 1,
-                ExcMessage("Base/Interface = tensionless is built for one "
-                           "slab on its base (not yet under joints): the "
-                           "scene has "
-                           + std::to_string(n_slabs)
-                           + " slabs. Use bonded or unbonded, whose base "
-                             "is jointed with the slabs."));
     slab_sections.clear();
     for (unsigned int s = 0; s < n_slabs; ++s)
       slab_sections.push_back({thickness[s], modulus[s]});
     if (!has_slab_sections())
       slab_sections.clear();
+    require_base_fits(base, geometry, slab_sections.empty());
     const std::vector<unsigned int> axes = geometry.symmetry_axes();
     geometry.slabs().require_symmetric(slab_sections,
                                        axes,

@@ -4,6 +4,7 @@
 
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
+#include <liftoff/fem/plate_fields.h>
 #include <liftoff/fem/plate_geometry.h>
 #include <liftoff/fem/slab_layout.h>
 
@@ -536,13 +537,22 @@ namespace liftoff
                   AffineConstraints<double> &constraints) const
   {
     // A tied joint on a symmetry plane is the plane (psi . n = 0 there).
+    // A base of its own runs on under every joint (MindlinPlate refuses a
+    // joint on a plane with it): its fields are tied across the others.
+    const unsigned int layers = PlateFields::n_layers(dof_handler.get_fe());
+    std::vector<bool>  of_base(dof_handler.get_fe().n_components(), false);
+    for (unsigned int c = PlateFields::w_of(1); c < of_base.size(); ++c)
+      of_base[c] = true;
     for (const Joint &joint : joint_list)
-      if (joint.tied && !joint.on_plane)
+      if (!joint.on_plane && (joint.tied || layers == 2))
         DoFTools::make_periodicity_constraints(dof_handler,
                                                joint.lower_side,
                                                joint.upper_side,
                                                joint.normal_axis,
-                                               constraints);
+                                               constraints,
+                                               joint.tied
+                                                 ? ComponentMask()
+                                                 : ComponentMask(of_base));
   }
 
 

@@ -166,15 +166,15 @@ namespace liftoff
   std::vector<const SystemTerm *>
   SceneParts::system_terms() const
   {
-    // A base of its own is one slab on it (MindlinPlate refuses joints).
+    std::vector<const SystemTerm *> terms = {&plate_term, &foundation};
     if (plate.base.n_layers() == 2)
-      return {&plate_term, &foundation, &interface_springs};
+      terms.push_back(&interface_springs);
     // Only a plate of several slabs has joints to pass forces.
-    if (!joint_dowels.sites().empty())
-      return {&plate_term, &foundation, &joint_springs, &joint_dowels};
     if (discretization.geometry().slabs().is_jointed())
-      return {&plate_term, &foundation, &joint_springs};
-    return {&plate_term, &foundation};
+      terms.push_back(&joint_springs);
+    if (!joint_dowels.sites().empty())
+      terms.push_back(&joint_dowels);
+    return terms;
   }
 
 

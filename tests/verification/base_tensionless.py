@@ -16,6 +16,10 @@ pull), each case against a scene that does not have that interface:
   a bed 1e8 times the interface's modulus) is the slab alone on a
   tensionless bed of modulus k_i: w at three points, the interface's
   contact fraction that slab's contact fraction, its resultant the load;
+- two slabs with a free joint on a rigid base against the two slabs on a
+  tensionless bed of k_i (w on both sides of the joint and far off it),
+  and in the field file the base continuous across the joint where the
+  slabs jump;
 - equilibrium under a load and both weights (static): the bed carries the
   load and the weights of slab and base, the interface the load and the
   slab's weight;
@@ -158,6 +162,48 @@ def rigid_base(work):
           "in contact)")
 
 
+def jointed(work):
+    """Two slabs with a free joint at x = 0, one loaded, both weighing, on a
+    rigid base that runs on under the joint, against the two slabs on a
+    tensionless bed of k_i."""
+    k_i = 400.0
+    loads = {"Self weight": 2,
+             "Pressure 1": {"Magnitude": 64,
+                            "Region": f"{-2 * B}, 0, {-B}, {B}"}}
+    parts = [{"Discretization": {"Symmetry": "full", "Cells along x": 16,
+                                 "Cells along y": 16},
+              "Slabs": {"Slabs along x": 2},
+              "Output": {"Probe points": "-0.05, 0; 0.05, 0; 0.4, 0.3",
+                         "VTU interval": 1}}]
+    layered_folder = run_scene_or_fail(
+        LIFTOFF, work, "jointed_rigid",
+        scene_text(slab(1e8 * k_i, "bilateral", loads=loads), *parts,
+                   base("tensionless", 0.05, 100, k_i=k_i)))
+    layered = {k: v[-1] for k, v in read_history(layered_folder).items()}
+    alone = run(work, "jointed_on_k_i",
+                slab(k_i, "tensionless", loads=loads), *parts)
+    for point in ("-0.05;0", "0.05;0", "0.4;0.3"):
+        compare(f"jointed, rigid base: w({point}) against the slabs on a "
+                f"tensionless bed of k_i", layered[f"w({point})"],
+                alone[f"w({point})"], 1e-3)
+    # The base is one plate under the joint, the slabs are two.
+    fields = meshio.read(os.path.join(layered_folder,
+                                      "solution_00000.0000.vtu"))
+    x, y = fields.points[:, 0], fields.points[:, 1]
+    on_joint = np.abs(x) < 1e-9
+    jump = {}
+    for name in ("w", "w_base"):
+        values = {}
+        for yy, v in zip(y[on_joint], fields.point_data[name][on_joint]):
+            values.setdefault(round(float(yy), 9), []).append(float(v))
+        jump[name] = max(max(v) - min(v) for v in values.values()) / max(
+            abs(fields.point_data[name]).max(), 1e-300)
+    check(jump["w_base"] < 1e-6 and jump["w"] > 1e-2,
+          f"jointed: across the free joint the base is continuous (jump "
+          f"{jump['w_base']:.1e} of its largest w), the slabs are not "
+          f"({jump['w']:.1e})")
+
+
 def equilibrium(work):
     h_b, rho_b, weight, load = 0.04, 0.9, 2.0, 8.0
     scene = slab(400, "tensionless", loads={
@@ -247,6 +293,7 @@ with tempfile.TemporaryDirectory() as work:
     stiff_interface(work)
     thin_soft_base(work)
     rigid_base(work)
+    jointed(work)
     equilibrium(work)
     dynamic(work)
 finish()
