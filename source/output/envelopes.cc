@@ -96,7 +96,7 @@ namespace liftoff
                            "envelopes = true."));
     const unsigned int n_kinds =
       n_kinds_without_faces
-      + (stress ? FaceStresses::count(scene.plate.base.is_composite()) : 0);
+      + (stress ? FaceStresses::count(scene.plate.base.present()) : 0);
     envelopes.clear();
     for (unsigned int e = 0; e < n_kinds; ++e)
       envelopes.push_back({kinds[e].name, {}, {}});

@@ -17,18 +17,18 @@ namespace liftoff
                     points,
                     update_values | update_gradients | update_quadrature_points)
   {
-    for (auto &sum : sums)
-      sum.resize(points.size());
     AssertThrow(system.n_base_elements() == 1
                   && system.n_components() % PlateFields::per_layer == 0,
                 ExcInternalError());
-    // The slab's fields: a base of its own has its components after them.
+    shape_functions.resize(system.n_components());
+    sums.assign(3 * system.n_components(), std::vector<double>(points.size()));
+    if (system.n_components() > PlateFields::n_components)
+      grad_psi_base.resize(points.size());
     for (unsigned int i = 0; i < system.n_dofs_per_cell(); ++i)
       {
         const auto [component, base_index] =
           system.system_to_component_index(i);
-        if (component < PlateFields::n_components)
-          shape_functions[component].emplace_back(i, base_index);
+        shape_functions[component].emplace_back(i, base_index);
       }
   }
 
@@ -52,7 +52,7 @@ namespace liftoff
         }
     // As FEValues' get_function_values and get_function_gradients: shape
     // function after shape function, a zero dof value skipped.
-    for (unsigned int c = 0; c < 3; ++c)
+    for (unsigned int c = 0; c < shape_functions.size(); ++c)
       {
         double *value = sums[3 * c].data(), *dx = sums[3 * c + 1].data(),
                *dy = sums[3 * c + 2].data();
@@ -74,8 +74,6 @@ namespace liftoff
               }
           }
       }
-    // sums[3 c + k]: the value (k = 0), d/dx (1) and d/dy (2) of
-    // component c.
     const auto sum = [&](const unsigned int c, const unsigned int k) {
       return sums[3 * c + k].data();
     };
@@ -89,6 +87,11 @@ namespace liftoff
         grad_psi[q] = Tensor<2, 2>(
           {{sum(x, 1)[q], sum(x, 2)[q]}, {sum(y, 1)[q], sum(y, 2)[q]}});
       }
+    const unsigned int bx = PlateFields::rotation(0, 1),
+                       by = PlateFields::rotation(1, 1);
+    for (unsigned int q = 0; q < grad_psi_base.size(); ++q)
+      grad_psi_base[q] = Tensor<2, 2>(
+        {{sum(bx, 1)[q], sum(bx, 2)[q]}, {sum(by, 1)[q], sum(by, 2)[q]}});
   }
 
 

@@ -86,7 +86,7 @@ namespace liftoff
   {
     writes_summary = prm.get_bool("Write stress extremes");
     writes_history = prm.get_bool("Write stress history");
-    n_faces        = FaceStresses::count(scene.plate.base.is_composite());
+    n_faces        = FaceStresses::count(scene.plate.base.present());
     run_maxima.assign(n_faces, {});
   }
 

@@ -383,20 +383,53 @@ namespace liftoff
                              plate.thickness_ratio);
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
-        const PlaneMoments m(-base.bending,
-                             plate.base.poisson_ratio,
-                             gradient[q][PlateFields::rotation(0, 1)],
-                             gradient[q][PlateFields::rotation(1, 1)]);
-        const double       top    = at_face(base.top, m.first, m.second, 0);
-        const double       bottom = at_face(base.bottom, m.first, m.second, 0);
-        Vector<double>    &out    = computed[q];
-        out[11]                   = std::max({out[11], top, bottom});
+        FaceStresses faces;
+        own_base_faces(base,
+                       gradient[q][PlateFields::rotation(0, 1)],
+                       gradient[q][PlateFields::rotation(1, 1)],
+                       faces);
+        Vector<double> &out = computed[q];
+        out[11] = std::max({out[11], faces.base_top, faces.base_bottom});
         if (out.size() > n_fields_of_slab)
           {
-            out[14] = top;
-            out[15] = bottom;
+            out[14] = faces.base_top;
+            out[15] = faces.base_bottom;
           }
       }
+  }
+
+
+  void
+  StressResultants::add_own_base_faces(const PlateFieldAtPoints &fields,
+                                       PrincipalValues          &out) const
+  {
+    // A base of its own: its faces by its own moments.
+    if (!out.with_faces || fields.grad_psi_base.empty())
+      return;
+    const SectionCoefficients base =
+      plate.base.own_section(plate.poisson_ratio,
+                             plate.shear_correction,
+                             plate.thickness_ratio);
+    for (unsigned int q = 0; q < fields.n_points(); ++q)
+      own_base_faces(base,
+                     fields.grad_psi_base[q][0],
+                     fields.grad_psi_base[q][1],
+                     out.faces[q]);
+  }
+
+
+  void
+  StressResultants::own_base_faces(const SectionCoefficients &base,
+                                   const Tensor<1, 2>        &grad_psi_x,
+                                   const Tensor<1, 2>        &grad_psi_y,
+                                   FaceStresses              &faces) const
+  {
+    const PlaneMoments m(-base.bending,
+                         plate.base.poisson_ratio,
+                         grad_psi_x,
+                         grad_psi_y);
+    faces.base_top    = at_face(base.top, m.first, m.second, 0);
+    faces.base_bottom = at_face(base.bottom, m.first, m.second, 0);
   }
 
 
@@ -450,6 +483,7 @@ namespace liftoff
                                        free_bending ? &thermal : nullptr,
                                        free);
       }
+    add_own_base_faces(fields, out);
   }
 
 

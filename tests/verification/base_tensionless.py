@@ -34,6 +34,7 @@ pull), each case against a scene that does not have that interface:
 """
 
 import filecmp
+import json
 import glob
 import os
 import sys
@@ -44,8 +45,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
-from scenes import (read_history, run_scene, run_scene_or_fail,  # noqa: E402
-                    scene_text)
+from scenes import (merged, read_history, run_scene,  # noqa: E402
+                    run_scene_or_fail, scene_text)
 
 LIFTOFF = os.path.abspath(sys.argv[1])
 DELTA, NU = 0.05, 0.3
@@ -106,8 +107,20 @@ def stiff_interface(work, cells=8):
     faces = ["sigma_1_base_top(0; 0)", "sigma_1_base_bottom(0; 0)"]
     scene = slab(0.4, "bilateral", cells, loads=PRESSED, delta=delta,
                  probes=PROBES + faces)
-    separate = run(work, "stiff", scene,
+    separate = run(work, "stiff", merged(scene, {"Output": {
+        "Write stress extremes": "true", "Write stress history": "true"}}),
                    base("tensionless", h_b, e_b, k_i=1e-2 * k_b))
+    # The design outputs sweep the base's own faces too: under the square
+    # load the base's bottom face is in its largest tension at the centre.
+    with open(os.path.join(work, "stiff", "summary.json")) as f:
+        largest = json.load(f)["largest tension, base bottom face"]
+    probe = separate["sigma_1_base_bottom(0;0)"]
+    check(abs(largest["sigma_1"] / probe - 1) < 1e-10
+          and abs(separate["max_sigma_1_base_bottom"] / probe - 1) < 1e-10
+          and largest["x"] == 0 and largest["y"] == 0,
+          f"stiff interface: the summary's and history's largest tension of "
+          f"the base's bottom face {largest['sigma_1']:.6e} is the probe's "
+          f"at the load")
     shared = run(work, "unbonded", scene, base("unbonded", h_b, e_b))
     compare("stiff interface: w(0, 0) against unbonded", separate["w(0;0)"],
             shared["w(0;0)"], 1e-3)

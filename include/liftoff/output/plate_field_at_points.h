@@ -49,18 +49,23 @@ namespace liftoff
     /// psi and its gradient: grad_psi[q][d] is grad psi_d.
     std::vector<Tensor<1, 2>> psi;
     std::vector<Tensor<2, 2>> grad_psi;
+    /// The same of a base of its own (BaseLayer, tensionless); empty
+    /// without one.
+    std::vector<Tensor<2, 2>> grad_psi_base;
 
   private:
     FEValues<2> base_values;
     /// Per component, the system's shape functions in their order: (index
     /// in the system, index in the base element).
-    std::array<std::vector<std::pair<unsigned int, unsigned int>>, 3>
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
       shape_functions;
     /// The base's shape values and gradients on the cell, point after point
     /// for each function (phi[b * n + q]), and the sums, point after point
     /// for each of w, dw/dx, dw/dy, psi_x, ...: loops over the points that
     /// the compiler vectorises, each sum still formed in FEValues' order.
-    std::vector<double>                phi, dphi_x, dphi_y;
-    std::array<std::vector<double>, 9> sums;
+    std::vector<double> phi, dphi_x, dphi_y;
+    /// sums[3 c + k]: the value (k = 0), d/dx (1) and d/dy (2) of
+    /// component c.
+    std::vector<std::vector<double>> sums;
   };
 } // namespace liftoff

@@ -155,6 +155,17 @@ namespace liftoff
     void
     add_own_base_faces(const std::vector<std::vector<Tensor<1, 2>>> &gradient,
                        std::vector<Vector<double>> &computed) const;
+    /// The same at the points of `fields`, into `out.faces`.
+    void
+    add_own_base_faces(const PlateFieldAtPoints &fields,
+                       PrincipalValues          &out) const;
+    /// The base's faces of `faces` from the gradients of its own psi_x and
+    /// psi_y, with its own section `base`.
+    void
+    own_base_faces(const SectionCoefficients &base,
+                   const Tensor<1, 2>        &grad_psi_x,
+                   const Tensor<1, 2>        &grad_psi_y,
+                   FaceStresses              &faces) const;
 
     const MindlinPlate                    &plate;
     const Mapping<2>                      &mapping;
