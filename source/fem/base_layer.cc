@@ -55,6 +55,26 @@ namespace liftoff
         return {per_moment, alone - per_moment};
       }
     };
+
+    /// The base as a layer whose top lies at `top`, bending about its own
+    /// mid-plane (a composite moves the axis), in the plate's units:
+    /// E / (1 - nu^2) = 12 / delta^3, rho = 1 / delta.
+    Layer
+    layer_of(const BaseLayer &base,
+             const double     top,
+             const double     nu,
+             const double     delta)
+    {
+      const double nu_b = base.poisson_ratio;
+      const double e    = 12.0 / (delta * delta * delta) * base.modulus_ratio
+                       * (1 - nu * nu) / (1 - nu_b * nu_b);
+      return {top,
+              base.thickness,
+              e,
+              0.5 * e * (1 - nu_b),
+              base.density_ratio / delta,
+              top + 0.5 * base.thickness};
+    }
   } // namespace
 
 
@@ -76,19 +96,20 @@ namespace liftoff
       "slab lifts off the base where it curls or rebounds. Slip and "
       "friction between the layers are not modelled."
         + quantity("text"));
-    prm.declare_entry("Interface stiffness",
-                      "0",
-                      Patterns::Double(0.0, 1e12),
-                      "k_i of tensionless: the pressure between slab and "
-                      "base per unit of w_slab - w_base where they touch "
-                      "(Pa/m in an SI scene; in units of D / L^4, as "
-                      "Foundation/Stiffness, in a dimensionless one); > 0 "
-                      "with Interface = tensionless, and at most 1e12 D / "
-                      "L^4 for the reason Foundation/Stiffness is. A stiff interface "
-                      "(k_i large against the base's k_b = E_b / H_b) "
-                      "approaches unbonded without separation where the "
-                      "slab is pressed."
-                        + quantity("pressure per length"));
+    prm.declare_entry(
+      "Interface stiffness",
+      "0",
+      Patterns::Double(0.0, 1e12),
+      "k_i of tensionless: the pressure between slab and "
+      "base per unit of w_slab - w_base where they touch "
+      "(Pa/m in an SI scene; in units of D / L^4, as "
+      "Foundation/Stiffness, in a dimensionless one); > 0 "
+      "with Interface = tensionless, and at most 1e12 D / "
+      "L^4 for the reason Foundation/Stiffness is. A stiff interface "
+      "(k_i large against the base's k_b = E_b / H_b) "
+      "approaches unbonded without separation where the "
+      "slab is pressed."
+        + quantity("pressure per length"));
     prm.declare_entry("Thickness",
                       "0",
                       Patterns::Double(0.0, 1.0),
@@ -114,8 +135,7 @@ namespace liftoff
     prm.declare_entry("Density ratio",
                       "1",
                       Patterns::Double(0.0, 1e3),
-                      "rho_b / rho, the base's density over the plate's; "
-                      "its weight is part of Loads' self-weight."
+                      "rho_b / rho; the base weighs in Loads' self-weight."
                         + quantity("number"));
     prm.leave_subsection();
   }
@@ -158,12 +178,8 @@ namespace liftoff
                          const double chi,
                          const double delta) const
   {
-    const double plate_modulus = 12.0 / (delta * delta * delta);
-    const double h             = thickness;
-    const double e             = plate_modulus * modulus_ratio * (1 - nu * nu)
-                     / (1 - poisson_ratio * poisson_ratio);
-    const Layer layer{
-      0, h, e, 0.5 * e * (1 - poisson_ratio), density_ratio / delta, 0.5 * h};
+    const double        h     = thickness;
+    const Layer         layer = layer_of(*this, 0, nu, delta);
     SectionCoefficients own;
     own.bending         = layer.bending();
     own.shear           = chi * layer.shear_modulus * h;
@@ -190,23 +206,15 @@ namespace liftoff
     const double h_s           = slab.thickness_ratio;
     const double h_b           = thickness;
     const double e_s           = plate_modulus * slab.modulus;
-    const double e_b           = plate_modulus * modulus_ratio * (1 - nu * nu)
-                       / (1 - poisson_ratio * poisson_ratio);
     Layer slab_layer{-0.5 * h_s, h_s, e_s, 0.5 * e_s * (1 - nu), 1 / delta, 0};
-    Layer base_layer{0.5 * h_s,
-                     h_b,
-                     e_b,
-                     0.5 * e_b * (1 - poisson_ratio),
-                     density_ratio / delta,
-                     0};
+    Layer base_layer = layer_of(*this, 0.5 * h_s, nu, delta);
+    const double e_b = base_layer.plane_modulus;
     if (interface == Interface::bonded)
       {
         const double axis =
           e_b * h_b * base_layer.middle() / (e_s * h_s + e_b * h_b);
         slab_layer.axis = base_layer.axis = axis;
       }
-    else
-      base_layer.axis = base_layer.middle();
 
     SectionCoefficients composite = slab;
     const double        D         = slab_layer.bending() + base_layer.bending();
