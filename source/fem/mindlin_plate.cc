@@ -243,6 +243,21 @@ namespace liftoff
   }
 
 
+  SectionCoefficients
+  MindlinPlate::base_section() const
+  {
+    return base.own_section(poisson_ratio, shear_correction, thickness_ratio);
+  }
+
+
+  SectionCoefficients
+  MindlinPlate::layer_section(const unsigned int slab,
+                              const unsigned int layer) const
+  {
+    return layer == 0 ? section(slab) : base_section();
+  }
+
+
   double
   MindlinPlate::shear_stiffness() const
   {

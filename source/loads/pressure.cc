@@ -75,11 +75,7 @@ namespace liftoff
     // The base's weight over the slab's (of a uniform plate, whose slab
     // weighs 1).
     if (plate.base.n_layers() == 2)
-      base_weight = plate.base
-                      .own_section(plate.poisson_ratio,
-                                   plate.shear_correction,
-                                   plate.thickness_ratio)
-                      .mass;
+      base_weight = plate.base_section().mass;
     // Slabs alike (slab_sections empty) share the first's section; a base
     // adds its weight to it.
     const std::size_t n_sections =

@@ -91,7 +91,7 @@ def compare(what, value, reference, tolerance):
           f"{error:.1e} < {tolerance:.0e}")
 
 
-PRESSED = {"Pressure 1": {"Magnitude": 1, "Region": "whole plate"},
+PRESSED = {"Pressure 1": {"Magnitude": 100, "Region": "whole plate"},
            "Pressure 2": {"Magnitude": 64,
                           "Region": f"{-B}, {B}, {-B}, {B}"}}
 
@@ -138,6 +138,72 @@ def stiff_interface(work, cells=8):
     check(separate["interface_contact_fraction"] == 1,
           "stiff interface: pressed everywhere, in contact everywhere "
           f"({separate['interface_contact_fraction']})")
+
+
+def stiff_interface_heated(work):
+    """The same pair curled by the slab's and the base's own temperature
+    differences (the base's at twice the slab's alpha), still pressed
+    everywhere: tensionless against unbonded, whose section takes both free
+    moments."""
+    delta, h_b, e_b = 0.005, 0.004, 0.5
+    k_b = e_b * 12 / delta ** 3 / h_b
+    faces = [f"sigma_1_{face}(0; 0)"
+             for face in ("top", "bottom", "base_top", "base_bottom")]
+    # A uniform pressure bends neither layer: what bends them is the heat.
+    loads = {"Pressure 1": {"Magnitude": 100, "Region": "whole plate"},
+             "Temperature load 1": {
+                 "Magnitude": -1, "Expansion coefficient": 1e-4,
+                 "Base profile": "0.5, 0", "Base expansion coefficient": 2e-4}}
+    scene = slab(0.4, "bilateral", loads=loads, delta=delta, probes=faces)
+    separate = run(work, "stiff_heated", scene,
+                   base("tensionless", h_b, e_b, k_i=1e-2 * k_b))
+    shared = run(work, "unbonded_heated", scene, base("unbonded", h_b, e_b))
+    compare("heated, stiff interface: w(0, 0) against unbonded",
+            separate["w(0;0)"], shared["w(0;0)"], 1e-3)
+    for face in faces:
+        name = face.replace(" ", "")
+        compare(f"heated, stiff interface: {name} against unbonded's",
+                separate[name], shared[name], 1e-3)
+    check(separate["interface_contact_fraction"] == 1,
+          "heated, stiff interface: pressed everywhere, in contact everywhere "
+          f"({separate['interface_contact_fraction']})")
+
+
+def held_base_heated(work):
+    """A base warmed by a nonlinear profile of its own, held flat by a very
+    stiff bilateral bed, under a slab pressed onto it that has no
+    temperature: each of the base's faces has the fully restrained stress
+    -E_b / (1 - nu_b) alpha_b (T_face - T_mean), and the slab, resting on a
+    flat base, none."""
+    h_b, e_b, alpha_b = 0.05, 0.5, 1e-3
+    values = [1.0, 0.2, 0.0]
+    mean = 0.5 * (0.5 * (values[0] + values[1]) + 0.5 * (values[1] + values[2]))
+    plane = e_b * 12 * (1 + NU) / DELTA ** 3
+    exact = {"base_top": -plane * alpha_b * (values[0] - mean),
+             "base_bottom": -plane * alpha_b * (values[-1] - mean)}
+    faces = ["top", "bottom", "base_top", "base_bottom"]
+    loads = {"Pressure 1": {"Magnitude": 1, "Region": "whole plate"},
+             "Temperature load 1": {
+                 "Magnitude": 1, "Expansion coefficient": 1e-3,
+                 "Profile": "0, 0",
+                 "Base profile": ", ".join(str(v) for v in values),
+                 "Base expansion coefficient": alpha_b}}
+    held = run(work, "held_heated", slab(
+        1e8, "bilateral", loads=loads,
+        probes=[f"sigma_1_{face}(0; 0)" for face in faces]),
+        base("tensionless", h_b, e_b, k_i=1e3))
+    scale = max(abs(v) for v in exact.values())
+    for face in ("base_top", "base_bottom"):
+        value = held[f"sigma_1_{face}(0;0)"]
+        error = abs(value - exact[face]) / scale
+        check(error < 1e-6, f"heated base held flat: sigma_1_{face}(0, 0) "
+              f"{value:.8e} against the restrained {exact[face]:.8e}: "
+              f"{error:.1e} < 1e-6 of the largest")
+    for face in ("top", "bottom"):
+        value = held[f"sigma_1_{face}(0;0)"]
+        check(abs(value) < 1e-5 * scale, f"heated base held flat: the "
+              f"slab's sigma_1_{face}(0, 0) {value:.1e} is 0 to 1e-5 of the "
+              "base's")
 
 
 def thin_soft_base(work):
@@ -304,6 +370,8 @@ def dynamic(work):
 
 with tempfile.TemporaryDirectory() as work:
     stiff_interface(work)
+    stiff_interface_heated(work)
+    held_base_heated(work)
     thin_soft_base(work)
     rigid_base(work)
     jointed(work)
