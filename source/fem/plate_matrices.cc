@@ -120,11 +120,8 @@ namespace liftoff
                                        disc.element().shear_integration());
 
     // A base of its own (tensionless) is a second layer of the same kind.
-    const unsigned int        layers = PlateFields::n_layers(fe);
-    const SectionCoefficients base =
-      plate.base.own_section(plate.poisson_ratio,
-                             plate.shear_correction,
-                             plate.thickness_ratio);
+    const unsigned int                   layers = PlateFields::n_layers(fe);
+    const SectionCoefficients            base   = plate.base_section();
     FullMatrix<double>                   cell_stiffness(n_dofs, n_dofs);
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);

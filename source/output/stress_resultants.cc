@@ -377,10 +377,7 @@ namespace liftoff
     if (plate.base.n_layers() == 1)
       return;
     // A base of its own bends about its own mid-plane by its own psi.
-    const SectionCoefficients base =
-      plate.base.own_section(plate.poisson_ratio,
-                             plate.shear_correction,
-                             plate.thickness_ratio);
+    const SectionCoefficients base = plate.base_section();
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
         FaceStresses faces;
@@ -406,10 +403,7 @@ namespace liftoff
     // A base of its own: its faces by its own moments.
     if (!out.with_faces || fields.grad_psi_base.empty())
       return;
-    const SectionCoefficients base =
-      plate.base.own_section(plate.poisson_ratio,
-                             plate.shear_correction,
-                             plate.thickness_ratio);
+    const SectionCoefficients base = plate.base_section();
     for (unsigned int q = 0; q < fields.n_points(); ++q)
       own_base_faces(base,
                      fields.grad_psi_base[q][0],

@@ -72,6 +72,10 @@ namespace liftoff
     /// with the base under it where there is one.
     SectionCoefficients
     section(const unsigned int slab) const;
+    /// The coefficients of a base of its own (tensionless), the same
+    /// under every slab.
+    SectionCoefficients
+    base_section() const;
     /// The slabs' sections (Slabs/Thicknesses, Modulus ratios) for the
     /// slabs of `geometry`, parsed after it; refused where the count is
     /// wrong, or where mirror slabs of a symmetric model differ.
