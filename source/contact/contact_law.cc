@@ -90,10 +90,11 @@ namespace liftoff
         Patterns::Double(0.0, 1e3),
         "zeta, the dashpots as a share of their critical value (instead of "
         "Damping or Units/Dashpot coefficient, which then stay 0): c = zeta "
-        "2 sqrt(Gamma), in SI C = zeta 2 sqrt(k rho H) per unit area. "
-        "Critical is the dashpot at which the plate (of the Plate's "
-        "thickness) moving as a rigid body on the springs, all in contact, "
-        "no longer oscillates (doc/model.md)."
+        "2 sqrt(Gamma m), in SI C = zeta 2 sqrt(k m) per unit area, m the "
+        "mass per area on the bed (rho H of the Plate's thickness, plus "
+        "rho_b H_b under a Base). Critical is the dashpot at which that "
+        "mass moving as a rigid body on the springs, all in contact, no "
+        "longer oscillates (doc/model.md)."
           + quantity("number"));
       prm.declare_entry(
         "Shear modulus",
@@ -145,7 +146,7 @@ namespace liftoff
     contact_tolerance = prm.get_double("Contact tolerance");
     gap_expression    = prm.get("Initial gap");
     c                 = prm.get_double("Damping");
-    const double zeta = prm.get_double("Damping ratio");
+    zeta              = prm.get_double("Damping ratio");
     g_p               = prm.get_double("Shear modulus");
     prm.leave_subsection();
     // A broken expression is refused now, before any mesh is built.
@@ -159,9 +160,17 @@ namespace liftoff
                            + " and Foundation/Damping (or Units/Dashpot "
                              "coefficient) are both set: give the dashpots "
                              "one way."));
-    // Critical: a rigid plate of unit mass per area on springs Gamma.
+    carry(1.0);
+  }
+
+
+  void
+  ContactLaw::carry(const double mass_per_area)
+  {
+    mass = mass_per_area;
+    // Critical: a rigid body of that mass per area on springs Gamma.
     if (zeta > 0)
-      c = zeta * 2 * std::sqrt(gamma);
+      c = zeta * 2 * std::sqrt(gamma * mass);
   }
 
 
@@ -306,7 +315,7 @@ namespace liftoff
   double
   ContactLaw::rigid_body_frequency() const
   {
-    return model_type == Model::none ? 0.0 : std::sqrt(gamma);
+    return model_type == Model::none ? 0.0 : std::sqrt(gamma / mass);
   }
 
 

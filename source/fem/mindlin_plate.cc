@@ -221,6 +221,15 @@ namespace liftoff
   }
 
 
+  double
+  MindlinPlate::mass_on_bed() const
+  {
+    return base.present()
+             ? 1 + base.density_ratio * base.thickness / thickness_ratio
+             : 1.0;
+  }
+
+
   SectionCoefficients
   MindlinPlate::layer_section(const unsigned int slab,
                               const unsigned int layer) const

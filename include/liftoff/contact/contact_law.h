@@ -97,10 +97,15 @@ namespace liftoff
     has_damping() const;
     bool
     has_layer() const;
-    /// sqrt(Gamma): the angular frequency of the plate (unit mass per
-    /// area) moving as a rigid body on the springs.
+    /// sqrt(Gamma / m): the angular frequency of the mass per area on the
+    /// bed (carry()) moving as a rigid body on the springs.
     double
     rigid_body_frequency() const;
+    /// The bed carries `mass_per_area` (in units of the plate's rho H: 1
+    /// without a base), which sets the critical damping of Damping ratio
+    /// and the rigid body's frequency.
+    void
+    carry(const double mass_per_area);
 
     /// Gamma + c kappa: the stiffness of a system matrix whose unknown's
     /// velocity is kappa w + ... (kappa = 0 at a given state).
@@ -145,6 +150,8 @@ namespace liftoff
     std::string gap_expression = "0";
     double      c              = 0;
     double      g_p            = 0;
+    /// Damping ratio, and the mass per area the bed carries (carry()).
+    double zeta = 0, mass = 1;
 
     const FoundationPoints *points = nullptr;
     /// g at the points, if is_gapped: some point on some rank has g != 0.

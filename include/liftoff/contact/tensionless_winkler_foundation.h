@@ -102,6 +102,12 @@ namespace liftoff
     /// calls below take for the plate's velocity.
     const ContactLaw &
     law() const override;
+    /// The mass per area it carries (ContactLaw::carry()).
+    void
+    carry(const double mass_per_area)
+    {
+      contact_law.carry(mass_per_area);
+    }
     /// Resultant, pressure range, contact area, energies of the current
     /// status.
     const FoundationDiagnostics &

@@ -76,6 +76,10 @@ namespace liftoff
     /// tensionless).
     SectionCoefficients
     base_section() const;
+    /// The mass per area on the bed in units of rho H: the plate's, with
+    /// the base's rho_b H_b under it where there is one.
+    double
+    mass_on_bed() const;
     /// The section of `layer` (0: the slab's, 1: a base of its own) over
     /// the cells of slab `slab`.
     SectionCoefficients
