@@ -138,7 +138,8 @@ namespace liftoff
 
 
   void
-  ContactLaw::parse_parameters(ParameterHandler &prm)
+  ContactLaw::parse_parameters(ParameterHandler &prm,
+                               const double      mass_per_area)
   {
     prm.enter_subsection("Foundation");
     model_type        = model_names.parse(prm.get("Model"), "Foundation/Model");
@@ -146,7 +147,7 @@ namespace liftoff
     contact_tolerance = prm.get_double("Contact tolerance");
     gap_expression    = prm.get("Initial gap");
     c                 = prm.get_double("Damping");
-    zeta              = prm.get_double("Damping ratio");
+    const double zeta = prm.get_double("Damping ratio");
     g_p               = prm.get_double("Shear modulus");
     prm.leave_subsection();
     // A broken expression is refused now, before any mesh is built.
@@ -160,15 +161,8 @@ namespace liftoff
                            + " and Foundation/Damping (or Units/Dashpot "
                              "coefficient) are both set: give the dashpots "
                              "one way."));
-    carry(1.0);
-  }
-
-
-  void
-  ContactLaw::carry(const double mass_per_area)
-  {
-    mass = mass_per_area;
     // Critical: a rigid body of that mass per area on springs Gamma.
+    mass = mass_per_area;
     if (zeta > 0)
       c = zeta * 2 * std::sqrt(gamma * mass);
   }

@@ -22,9 +22,10 @@ namespace liftoff
 
 
   void
-  TensionlessWinklerFoundation::parse_parameters(ParameterHandler &prm)
+  TensionlessWinklerFoundation::parse_parameters(ParameterHandler &prm,
+                                                 const double mass_per_area)
   {
-    contact_law.parse_parameters(prm);
+    contact_law.parse_parameters(prm, mass_per_area);
   }
 
 

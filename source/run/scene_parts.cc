@@ -68,8 +68,7 @@ namespace liftoff
     plate.parse_slab_sections(prm, discretization.geometry());
     interface_springs.use_base(plate.base);
     mesh_refinement.parse_parameters(prm);
-    foundation.parse_parameters(prm);
-    foundation.carry(plate.mass_on_bed());
+    foundation.parse_parameters(prm, plate.mass_on_bed());
     joint_springs.parse_parameters(prm);
     joint_dowels.parse_parameters(prm);
     joint_dowels.place_on(discretization.geometry());

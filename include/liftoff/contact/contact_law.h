@@ -55,7 +55,10 @@ namespace liftoff
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    /// `mass_per_area`: what the bed carries, in units of the plate's rho
+    /// H (1 without a base): it sets the critical damping of Damping
+    /// ratio and the rigid body's frequency.
+    parse_parameters(ParameterHandler &prm, const double mass_per_area = 1.0);
     /// A bed in the scene as written requires Units/Subgrade modulus.
     static void
     describe_for_units(ParameterHandler            &scene,
@@ -98,14 +101,9 @@ namespace liftoff
     bool
     has_layer() const;
     /// sqrt(Gamma / m): the angular frequency of the mass per area on the
-    /// bed (carry()) moving as a rigid body on the springs.
+    /// bed (parse_parameters()) moving as a rigid body on the springs.
     double
     rigid_body_frequency() const;
-    /// The bed carries `mass_per_area` (in units of the plate's rho H: 1
-    /// without a base), which sets the critical damping of Damping ratio
-    /// and the rigid body's frequency.
-    void
-    carry(const double mass_per_area);
 
     /// Gamma + c kappa: the stiffness of a system matrix whose unknown's
     /// velocity is kappa w + ... (kappa = 0 at a given state).
@@ -150,8 +148,8 @@ namespace liftoff
     std::string gap_expression = "0";
     double      c              = 0;
     double      g_p            = 0;
-    /// Damping ratio, and the mass per area the bed carries (carry()).
-    double zeta = 0, mass = 1;
+    /// The mass per area the bed carries (parse_parameters()).
+    double mass = 1;
 
     const FoundationPoints *points = nullptr;
     /// g at the points, if is_gapped: some point on some rank has g != 0.

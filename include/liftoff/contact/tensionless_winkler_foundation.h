@@ -75,8 +75,9 @@ namespace liftoff
 
     static void
     declare_parameters(ParameterHandler &prm);
+    /// `mass_per_area`: what it carries (ContactLaw::parse_parameters()).
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const double mass_per_area = 1.0);
 
     /// The Gauss points of the mesh, every one in contact (none without a
     /// foundation), and a matrix taken to hold that status.
@@ -102,12 +103,6 @@ namespace liftoff
     /// calls below take for the plate's velocity.
     const ContactLaw &
     law() const override;
-    /// The mass per area it carries (ContactLaw::carry()).
-    void
-    carry(const double mass_per_area)
-    {
-      contact_law.carry(mass_per_area);
-    }
     /// Resultant, pressure range, contact area, energies of the current
     /// status.
     const FoundationDiagnostics &
