@@ -62,7 +62,8 @@ namespace liftoff
       Patterns::Anything(),
       "With Base modulus of rupture: the base's law, log10 N as a muParser "
       "expression in sigma (the cycle's peak tension) and MR (the base's), "
-      "as (0.972-sigma/MR)/0.0825 for a cement-treated base."
+      "as (0.972-sigma/MR)/0.0825, the MEPDG's cement-treated base as "
+      "usually quoted (not confirmed here: doc/model.md)."
         + quantity("text"));
     prm.leave_subsection();
   }
@@ -81,6 +82,15 @@ namespace liftoff
       law.parse_parameters(prm, damage_section, scale);
     else
       FatigueLaw::parsed_expression(prm, damage_section);
+    // Read also where it is not used, so that a typo shows.
+    const bool has_base_expression = bool(FatigueLaw::parsed_expression(
+      prm, damage_section, base_entries.expression));
+    AssertThrow(!enabled || counts_base || !has_base_expression,
+                ExcMessage(damage_section
+                           + "/Base expression is the base's law: it needs "
+                           + damage_section
+                           + "/Base modulus of rupture > 0 (the base's faces "
+                             "are counted only with it)."));
     if (counts_base)
       {
         AssertThrow(scene.plate.base.present(),
@@ -91,16 +101,6 @@ namespace liftoff
                                  "or give the scene a base."));
         base_law.parse_parameters(prm, damage_section, scale, base_entries);
       }
-    else
-      AssertThrow(!enabled
-                    || !FatigueLaw::parsed_expression(prm,
-                                                      damage_section,
-                                                      base_entries.expression),
-                  ExcMessage(damage_section
-                             + "/Base expression is the base's law: it needs "
-                             + damage_section
-                             + "/Base modulus of rupture > 0 (the base's "
-                               "faces are counted only with it)."));
     prm.leave_subsection();
   }
 

@@ -61,10 +61,11 @@ namespace liftoff
     /// The subsection `Output/Fatigue damage` and its entries.
     static void
     declare_parameters(ParameterHandler &prm);
+    /// Refuses the base's law in a scene without a base, and half of it
+    /// (a modulus without an expression, or the reverse), naming the entry.
     void
     parse_parameters(ParameterHandler &prm, const SceneView &scene) override;
-    /// Refuses a mesh that adapts, a static run and a base's law without a
-    /// base, naming the entries.
+    /// Refuses a mesh that adapts and a static run, naming the entries.
     void
     check(const SceneView &scene) const override;
     void
