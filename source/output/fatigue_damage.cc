@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <liftoff/base/archives.h>
+#include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
 #include <liftoff/fem/discretization.h>
 #include <liftoff/fem/mesh_refinement.h>
@@ -16,8 +17,16 @@ namespace liftoff
 {
   namespace
   {
-    const std::string                 damage_section = "Output/Fatigue damage";
-    const std::array<const char *, 2> damage_face_names = {{"top", "bottom"}};
+    const std::string damage_section = "Output/Fatigue damage";
+
+    /// The base's law is an expression only: the MEPDG's law of a
+    /// chemically stabilised layer could not be checked against the guide
+    /// (doc/model.md, "Fatigue damage").
+    const FatigueLaw::Entries base_entries = {"",
+                                              "",
+                                              "",
+                                              "Base modulus of rupture",
+                                              "Base expression"};
   } // namespace
 
 
@@ -39,6 +48,23 @@ namespace liftoff
       "half cycles count at the end. Dynamic runs on a mesh that does not "
       "adapt (costs the face stresses at every output point per step).");
     FatigueLaw::declare_parameters(prm);
+    prm.declare_entry(
+      "Base modulus of rupture",
+      "0",
+      Patterns::Double(),
+      "MR_b > 0 counts the base's faces too (a scene with a Base), by the "
+      "Base expression (damage_base_top, damage_base_bottom); 0: not "
+      "counted. Pa in an SI scene."
+        + quantity("pressure"));
+    prm.declare_entry(
+      "Base expression",
+      "",
+      Patterns::Anything(),
+      "With Base modulus of rupture: the base's law, log10 N as a muParser "
+      "expression in sigma (the cycle's peak tension) and MR (the base's), "
+      "as (0.972-sigma/MR)/0.0825, the MEPDG's cement-treated base as "
+      "usually quoted (not confirmed here: doc/model.md)."
+        + quantity("text"));
     prm.leave_subsection();
   }
 
@@ -47,14 +73,34 @@ namespace liftoff
   FatigueDamage::parse_parameters(ParameterHandler &prm, const SceneView &scene)
   {
     prm.enter_subsection("Fatigue damage");
-    enabled = prm.get_bool("Enable");
+    enabled            = prm.get_bool("Enable");
+    const double scale = scene.units.scale(PhysicalUnits::Quantity::pressure);
+    // Base modulus of rupture = 0, its default, is "not given": the scene
+    // counts the slab's faces only, as before the base's law existed.
+    counts_base = enabled && prm.get_double("Base modulus of rupture") != 0;
     if (enabled)
-      law.parse_parameters(prm,
-                           damage_section,
-                           scene.units.scale(
-                             PhysicalUnits::Quantity::pressure));
+      law.parse_parameters(prm, damage_section, scale);
     else
       FatigueLaw::parsed_expression(prm, damage_section);
+    // Read also where it is not used, so that a typo shows.
+    const bool has_base_expression = bool(FatigueLaw::parsed_expression(
+      prm, damage_section, base_entries.expression));
+    AssertThrow(!enabled || counts_base || !has_base_expression,
+                ExcMessage(damage_section
+                           + "/Base expression is the base's law: it needs "
+                           + damage_section
+                           + "/Base modulus of rupture > 0 (the base's faces "
+                             "are counted only with it)."));
+    if (counts_base)
+      {
+        AssertThrow(scene.plate.base.present(),
+                    ExcMessage(damage_section + "/Base modulus of rupture = "
+                               + prm.get("Base modulus of rupture")
+                               + " counts a base's faces: the scene has no "
+                                 "base (Base/Interface = none). Leave it out "
+                                 "or give the scene a base."));
+        base_law.parse_parameters(prm, damage_section, scale, base_entries);
+      }
     prm.leave_subsection();
   }
 
@@ -73,6 +119,20 @@ namespace liftoff
                            + "/Enable = true counts the stress cycles of a "
                              "time integration: a static analysis (Analysis/"
                              "Type = static) has none. Switch it off."));
+  }
+
+
+  unsigned int
+  FatigueDamage::n_faces() const
+  {
+    return counts_base ? 4 : 2;
+  }
+
+
+  const FatigueLaw &
+  FatigueDamage::law_of(const Face face) const
+  {
+    return face < base_top ? law : base_law;
   }
 
 
@@ -118,22 +178,20 @@ namespace liftoff
         slabs.resize(values.size());
         for (unsigned int i = 0; i < values.size(); ++i)
           slabs[i] = values[i].slab;
-        for (auto &of_face : counters)
-          of_face.assign(values.size(), {});
+        for (unsigned int face = 0; face < n_faces(); ++face)
+          counters[face].assign(values.size(), {});
       }
     // One counter per output point of this mesh: the run refuses a
     // changing mesh with them (check()).
     AssertThrow(values.size() == counters[top].size(), ExcInternalError());
     for (unsigned int i = 0; i < values.size(); ++i)
-      for (const Face face : {top, bottom})
+      for (unsigned int face = 0; face < n_faces(); ++face)
         {
           Counter &counter = counters[face][i];
           closed.clear();
-          counter.cycles.add(face == top ? values[i].faces.top
-                                         : values[i].faces.bottom,
-                             closed);
+          counter.cycles.add(values[i].faces.of(face), closed);
           for (const Rainflow::Cycle &cycle : closed)
-            counter.counted += law.damage(cycle);
+            counter.counted += law_of(Face(face)).damage(cycle);
         }
     ++n_steps_seen;
     last_time = step.state.clock.tau();
@@ -141,11 +199,11 @@ namespace liftoff
 
 
   double
-  FatigueDamage::damage_of(const Counter &counter) const
+  FatigueDamage::damage_of(const Face face, const Counter &counter) const
   {
     double damage = counter.counted;
     for (const Rainflow::Cycle &cycle : counter.cycles.residue())
-      damage += law.damage(cycle);
+      damage += law_of(face).damage(cycle);
     return damage;
   }
 
@@ -156,7 +214,7 @@ namespace liftoff
     std::vector<double> field;
     field.reserve(counters[face].size());
     for (const Counter &counter : counters[face])
-      field.push_back(damage_of(counter));
+      field.push_back(damage_of(face, counter));
     return field;
   }
 
@@ -166,16 +224,24 @@ namespace liftoff
   {
     if (!enabled || directory.empty() || n_steps_seen == 0)
       return;
-    using Quantity = PhysicalUnits::Quantity;
+    std::vector<PointField> fields;
+    for (unsigned int face = 0; face < n_faces(); ++face)
+      fields.push_back({std::string("damage_") + FaceStresses::name(face),
+                        PhysicalUnits::Quantity::number,
+                        local_field(Face(face))});
     write_point_fields(
-      directory,
-      *discretization,
-      {{"damage_top", Quantity::number, local_field(top)},
-       {"damage_bottom", Quantity::number, local_field(bottom)}},
-      units,
-      last_time,
-      "damage",
-      false);
+      directory, *discretization, fields, units, last_time, "damage", false);
+  }
+
+
+  StressExtremes::Extreme
+  FatigueDamage::largest(const Face face) const
+  {
+    std::vector<LocatedMaximum> of_slab(n_slabs);
+    const std::vector<double>   damage = local_field(face);
+    for (unsigned int i = 0; i < damage.size(); ++i)
+      of_slab[slabs[i]].consider(damage[i], points[i]);
+    return StressExtremes::reduce(of_slab, discretization->mpi_communicator);
   }
 
 
@@ -186,31 +252,30 @@ namespace liftoff
     if (!enabled || n_steps_seen == 0)
       return;
     using Quantity = PhysicalUnits::Quantity;
-    std::array<StressExtremes::Extreme, 2> faces;
-    for (const Face face : {top, bottom})
+    std::vector<StressExtremes::Extreme> faces;
+    unsigned int                         larger = top;
+    for (unsigned int face = 0; face < n_faces(); ++face)
       {
-        std::vector<LocatedMaximum> of_slab(n_slabs);
-        const std::vector<double>   damage = local_field(face);
-        for (unsigned int i = 0; i < damage.size(); ++i)
-          of_slab[slabs[i]].consider(damage[i], points[i]);
-        faces[face] =
-          StressExtremes::reduce(of_slab, discretization->mpi_communicator);
+        faces.push_back(largest(Face(face)));
+        // A tie goes to the later face, the bed-side one of the slab.
+        if (faces[face].where.value >= faces[larger].where.value)
+          larger = face;
       }
-    const Face larger =
-      faces[bottom].where.value >= faces[top].where.value ? bottom : top;
     const double                   length = units.scale(Quantity::length);
     const StressExtremes::Extreme &e      = faces[larger];
-    summary.add("fatigue law",
-                law.describe(units.unit_symbol(Quantity::pressure)));
+    const std::string pressure = units.unit_symbol(Quantity::pressure);
+    summary.add("fatigue law", law.describe(pressure));
+    if (counts_base)
+      summary.add("base fatigue law", base_law.describe(pressure));
     summary.add("largest fatigue damage",
-                format_number(e.where.value) + ", " + damage_face_names[larger]
+                format_number(e.where.value) + ", " + FaceStresses::text(larger)
                   + " face, slab " + std::to_string(e.slab + 1) + ", at ("
                   + format_number(length * e.where.point[0]) + ", "
                   + format_number(length * e.where.point[1]) + ")"
                   + (units.is_physical() ? " m" : ""));
-    for (const Face face : {top, bottom})
-      summary.add(std::string("largest fatigue damage, ")
-                    + damage_face_names[face] + " face",
+    for (unsigned int face = 0; face < n_faces(); ++face)
+      summary.add("largest fatigue damage, " + FaceStresses::text(face)
+                    + " face",
                   RunSummary::Section{{"damage", faces[face].where.value},
                                       {"x" + units.unit(Quantity::length),
                                        length * faces[face].where.point[0]},
@@ -226,8 +291,10 @@ namespace liftoff
     archive << n_steps_seen << last_time << slabs << counters[top].size();
     for (const Point<2> &p : points)
       archive << p[0] << p[1];
-    for (const auto &of_face : counters)
-      for (const Counter &counter : of_face)
+    // Only the faces counted: a scene without the base's law writes the
+    // checkpoint of a run before the base's faces could be counted.
+    for (unsigned int face = 0; face < n_faces(); ++face)
+      for (const Counter &counter : counters[face])
         {
           counter.cycles.save(archive);
           archive << counter.counted;
@@ -243,10 +310,10 @@ namespace liftoff
     points.resize(n_points);
     for (Point<2> &p : points)
       archive >> p[0] >> p[1];
-    for (auto &of_face : counters)
+    for (unsigned int face = 0; face < n_faces(); ++face)
       {
-        of_face.resize(n_points);
-        for (Counter &counter : of_face)
+        counters[face].resize(n_points);
+        for (Counter &counter : counters[face])
           {
             counter.cycles.load(archive);
             archive >> counter.counted;

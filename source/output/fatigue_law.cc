@@ -36,6 +36,13 @@ namespace liftoff
   } // namespace
 
 
+  const FatigueLaw::Entries FatigueLaw::concrete = {"Law",
+                                                    "C1",
+                                                    "C2",
+                                                    "Modulus of rupture",
+                                                    "Expression"};
+
+
   void
   FatigueLaw::declare_parameters(ParameterHandler &prm)
   {
@@ -76,29 +83,43 @@ namespace liftoff
   void
   FatigueLaw::parse_parameters(ParameterHandler  &prm,
                                const std::string &section_name,
-                               const double       stress_scale)
+                               const double       stress_scale,
+                               const Entries     &entries)
   {
-    section            = section_name;
-    scale              = stress_scale;
-    c1                 = positive_entry(prm, section, "C1");
-    c2                 = positive_entry(prm, section, "C2");
-    modulus_of_rupture = positive_entry(prm, section, "Modulus of rupture");
-    parsed             = parsed_expression(prm, section);
-    expression         = prm.get("Expression");
-    if (law_kinds.parse(prm.get("Law"), section + "/Law") == LawKind::mepdg)
+    section              = section_name;
+    scale                = stress_scale;
+    expression_entry     = entries.expression;
+    const bool has_mepdg = !entries.law.empty();
+    if (has_mepdg)
+      {
+        c1 = positive_entry(prm, section, entries.c1);
+        c2 = positive_entry(prm, section, entries.c2);
+      }
+    modulus_of_rupture =
+      positive_entry(prm, section, entries.modulus_of_rupture);
+    parsed     = parsed_expression(prm, section, entries.expression);
+    expression = prm.get(entries.expression);
+    if (has_mepdg
+        && law_kinds.parse(prm.get(entries.law), section + "/" + entries.law)
+             == LawKind::mepdg)
       {
         parsed.reset();
         expression.clear();
         return;
       }
+    const std::string needs =
+      has_mepdg ? section + "/" + entries.law + " = expression"
+                : section + "/" + entries.modulus_of_rupture + " given";
     AssertThrow(parsed,
-                ExcMessage(section + "/Law = expression needs " + section
-                           + "/Expression: log10 N in sigma and MR."));
+                ExcMessage(needs + " needs " + section + "/"
+                           + entries.expression
+                           + ": log10 N in sigma and MR."));
     // A law that gives no number at the modulus of rupture itself gives
     // none at the stresses a run meets.
     const double at_mr = log10_cycles(modulus_of_rupture);
     AssertThrow(std::isfinite(at_mr),
-                ExcMessage(section + "/Expression = <" + abbreviated(expression)
+                ExcMessage(section + "/" + expression_entry + " = <"
+                           + abbreviated(expression)
                            + "> gives log10 N = " + format_number(at_mr)
                            + " at sigma = MR: it must be a finite number."));
   }
@@ -106,13 +127,14 @@ namespace liftoff
 
   std::shared_ptr<FunctionParser<2>>
   FatigueLaw::parsed_expression(ParameterHandler  &prm,
-                                const std::string &section)
+                                const std::string &section,
+                                const std::string &entry)
   {
-    const std::string text = prm.get("Expression");
+    const std::string text = prm.get(entry);
     if (text.find_first_not_of(" \t") == std::string::npos)
       return {};
     return parse_expression<2>(
-      section + "/Expression", text, 1, "sigma,MR", false);
+      section + "/" + entry, text, 1, "sigma,MR", false);
   }
 
 
@@ -147,7 +169,8 @@ namespace liftoff
     if (log_n == std::numeric_limits<double>::infinity())
       return 0;
     AssertThrow(std::isfinite(log_n),
-                ExcMessage(section + "/Expression = <" + abbreviated(expression)
+                ExcMessage(section + "/" + expression_entry + " = <"
+                           + abbreviated(expression)
                            + "> gives no finite log10 N at sigma = "
                            + format_number(scale * sigma) + "."));
     // 10^-log10 N underflows to 0 for a small stress, where N overflows.

@@ -20,15 +20,6 @@ namespace liftoff
 {
   namespace
   {
-    /// A face's name in the summary: "top", "base top".
-    std::string
-    face_text(const unsigned int face)
-    {
-      std::string name = FaceStresses::name(face);
-      std::replace(name.begin(), name.end(), '_', ' ');
-      return name;
-    }
-
     /// A number with 3 significant digits and no exponent between 1e-3
     /// and 1e6, for the summary's line: 1.19, 1509, 0.004.
     std::string
@@ -231,8 +222,8 @@ namespace liftoff
       }
     const Extreme &e    = faces[larger];
     std::string    line = short_number(stress_scale * e.where.value) + " "
-                       + stress_unit + ", " + face_text(larger) + " face, slab "
-                       + std::to_string(e.slab + 1) + ", at ("
+                       + stress_unit + ", " + FaceStresses::text(larger)
+                       + " face, slab " + std::to_string(e.slab + 1) + ", at ("
                        + short_number(length * e.where.point[0]) + ", "
                        + short_number(length * e.where.point[1]) + ")";
     if (si)
@@ -244,7 +235,7 @@ namespace liftoff
       {
         const Extreme &f = faces[face];
         summary.add(
-          "largest tension, " + face_text(face) + " face",
+          "largest tension, " + FaceStresses::text(face) + " face",
           RunSummary::Section{
             {"sigma_1" + (si ? std::string(" [MPa]") : std::string()),
              stress_scale * f.where.value},

@@ -13,11 +13,19 @@ liftoff's own stress history, and across a resume and two ranks:
   the law as the expression 2.0*(MR/sigma)^1.22;
 - the summary's largest damage (a double) is the largest value of the
   field to its 32 bits, at its point;
-- the run stopped at a checkpoint after step 10 and resumed writes the
-  damage field and summary entries of the run without a stop, to the bit;
-- two ranks give the same largest damage's point, face and slab, its
-  value within 1e-12, and the field (its pieces joined, sorted by point)
-  to its 32 bits.
+- the same scene on a bonded cement-treated base (0.15 m, E_b / E = 0.3)
+  with the base's own law, the expression (0.972-sigma/MR)/0.0825 of
+  MR_b = 0.8 MPa: the damage at the base's faces (damage_base_top,
+  damage_base_bottom) equals the count of the probes sigma_1_base_top,
+  sigma_1_base_bottom under that law, and the slab's faces the count under
+  the slab's, within 2e-7; the summary's largest over the four faces is
+  the field's, at its point;
+- that run stopped at a checkpoint after step 10 and resumed writes the
+  damage field (four faces) and summary entries of the run without a
+  stop, to the bit;
+- two ranks give the same largest damage's point, face and slab at each
+  of the four faces, its value within 1e-12, and the field (its pieces
+  joined, sorted by point) to its 32 bits.
 
     fatigue_damage.py LIFTOFF
 """
@@ -42,6 +50,9 @@ MR = 2e6
 # Centres of cells of 0.5 m (8 x 6 cells on 4 m x 3 m, centred at 0).
 PROBES = [(0.75, 0.25), (1.25, 1.25), (-0.25, -0.75)]
 FACES = ("top", "bottom")
+BASE_FACES = FACES + ("base_top", "base_bottom")
+MR_BASE = 0.8e6
+BASE_LAW = "(0.972-sigma/MR)/0.0825"
 
 SCENE = {
     "Units": {"System": "SI", "Length": 4, "Width": 3, "Thickness": 0.2,
@@ -62,6 +73,15 @@ SCENE = {
                "Fatigue damage": {"Enable": "true",
                                   "Modulus of rupture": MR}}}
 
+BASE_SCENE = {
+    "Base": {"Interface": "bonded", "Thickness": 0.15, "Modulus ratio": 0.3,
+             "Poisson ratio": 0.2, "Density ratio": 0.9},
+    "Output": {"Probe quantities": ", ".join(
+                   f"sigma_1_{face}({x}; {y})" for x, y in PROBES
+                   for face in BASE_FACES),
+               "Fatigue damage": {"Base modulus of rupture": MR_BASE,
+                                  "Base expression": BASE_LAW}}}
+
 
 def summary(folder):
     with open(os.path.join(folder, "summary.json")) as f:
@@ -72,29 +92,30 @@ def damage_entries(folder):
     return {k: v for k, v in summary(folder).items() if "fatigue" in k}
 
 
-def field(folder, pieces=1):
+def field(folder, pieces=1, faces=FACES):
     """The damage field's points and values per face, the pieces joined."""
-    points, values = [], {face: [] for face in FACES}
+    points, values = [], {face: [] for face in faces}
     for piece in range(pieces):
         mesh = meshio.read(os.path.join(folder, f"damage.{piece:04d}.vtu"))
         points.append(mesh.points[:, :2])
-        for face in FACES:
+        for face in faces:
             values[face].append(mesh.point_data[f"damage_{face}"])
     return (np.concatenate(points),
             {face: np.concatenate(v) for face, v in values.items()})
 
 
-def at_probes(folder, law):
+def at_probes(folder, laws):
     """Worst relative difference between the field at each probe and the
-    count of the probe's history here, and the largest damage compared."""
-    points, values = field(folder)
+    count of the probe's history here (under laws[face]), and the largest
+    damage compared."""
+    points, values = field(folder, faces=tuple(laws))
     history = read_history(folder)
     worst, largest = 0.0, 0.0
     for x, y in PROBES:
         at = np.flatnonzero(np.hypot(points[:, 0] - x, points[:, 1] - y)
                             < 1e-9)
         assert at.size == 1, f"{at.size} output points at ({x}, {y})"
-        for face in FACES:
+        for face, law in laws.items():
             column = next(v for k, v in history.items()
                           if k.startswith(f"sigma_1_{face}({x:g};{y:g})"))
             cycles = fatigue.rainflow(column)
@@ -108,42 +129,71 @@ def at_probes(folder, law):
 
 def against_history(work):
     folder = run_scene_or_fail(LIFTOFF, work, "mepdg", scene_text(SCENE))
-    worst, largest = at_probes(folder, fatigue.Law(MR))
+    worst, largest = at_probes(folder, slab_laws())
     check(worst < 2e-7 and largest > 1e-4,
           f"MEPDG law: the damage at {len(PROBES)} probes x 2 faces equals "
           "liftoff_fatigue.py's rainflow and Miner's sum of the probe's "
           f"history within {worst:.1e} (< 2e-7; largest {largest:.3g})")
-    points, values = field(folder)
+    summary_is_field(folder, FACES)
+    expression = run_scene_or_fail(LIFTOFF, work, "expression", scene_text(
+        SCENE, {"Output": {"Fatigue damage": {
+            "Law": "expression", "Expression": "2.0*(MR/sigma)^1.22"}}}))
+    worst, _ = at_probes(expression, slab_laws())
+    check(worst < 2e-7, "the law as the expression 2.0*(MR/sigma)^1.22: "
+          f"the same damage at the probes within {worst:.1e}")
+
+
+def slab_laws():
+    return {face: fatigue.Law(MR) for face in FACES}
+
+
+def summary_is_field(folder, faces):
+    """The summary's largest damage over `faces` is the field's, at its
+    point."""
+    points, values = field(folder, faces=faces)
     entries = summary(folder)
-    face = max(FACES, key=lambda f: values[f].max())
-    best = entries[f"largest fatigue damage, {face} face"]
+    face = max(faces, key=lambda f: values[f].max())
+    words = face.replace("_", " ")
+    best = entries[f"largest fatigue damage, {words} face"]
     k = int(np.argmax(values[face]))
     check(abs(best["damage"] / values[face].max() - 1) < 1e-7
           and abs(best["x [m]"] - points[k, 0]) < 1e-12
           and abs(best["y [m]"] - points[k, 1]) < 1e-12
           and entries["largest fatigue damage"].split(", ")[1]
-          == f"{face} face",
-          f"the summary's largest damage {best['damage']:.6g} ({face} face) "
-          "is the field's largest, at its point")
-    expression = run_scene_or_fail(LIFTOFF, work, "expression", scene_text(
-        SCENE, {"Output": {"Fatigue damage": {
-            "Law": "expression", "Expression": "2.0*(MR/sigma)^1.22"}}}))
-    worst, _ = at_probes(expression, fatigue.Law(MR))
-    check(worst < 2e-7, "the law as the expression 2.0*(MR/sigma)^1.22: "
-          f"the same damage at the probes within {worst:.1e}")
+          == f"{words} face",
+          f"the summary's largest damage {best['damage']:.6g} ({words} face) "
+          f"is the field's largest over {len(faces)} faces, at its point")
+
+
+def with_base(work):
+    """The base's faces counted by the base's law; the slab's by its own."""
+    folder = run_scene_or_fail(LIFTOFF, work, "base",
+                               scene_text(SCENE, BASE_SCENE))
+    laws = slab_laws()
+    for face in ("base_top", "base_bottom"):
+        laws[face] = fatigue.Law(MR_BASE, expression=BASE_LAW)
+    worst, largest = at_probes(folder, laws)
+    _, base_largest = at_probes(folder, {"base_bottom": laws["base_bottom"]})
+    check(worst < 2e-7 and base_largest > 1e-4,
+          "a bonded base with its own law: the damage at the probes x 4 "
+          "faces equals liftoff_fatigue.py's count of the probes' "
+          f"histories (the base's under {BASE_LAW}) within {worst:.1e} "
+          f"(< 2e-7; largest at the base's bottom {base_largest:.3g})")
+    summary_is_field(folder, BASE_FACES)
     return folder
 
 
 def resumed_and_two_ranks(work, whole):
-    scene = scene_text(SCENE)
+    scene = scene_text(SCENE, BASE_SCENE)
     stop = scene + "subsection Time integration\n  set End time = 0.005\n" \
         "end\nsubsection Checkpoint\n  set Interval = 10\nend\n"
     run_scene(LIFTOFF, work, "resumed", stop)
     folder, second = run_scene(LIFTOFF, work, "resumed", scene, ["--resume"])
     same = (second.returncode == 0
             and damage_entries(folder) == damage_entries(whole)
-            and all(np.array_equal(field(folder)[1][f], field(whole)[1][f])
-                    for f in FACES))
+            and all(np.array_equal(field(folder, faces=BASE_FACES)[1][f],
+                                   field(whole, faces=BASE_FACES)[1][f])
+                    for f in BASE_FACES))
     check(same, "stopped after step 10 and resumed: the damage field and the "
           "summary's damage entries of the run without a stop, to the bit")
     folder, two = run_scene(LIFTOFF, work, "two_ranks", scene, ranks=2)
@@ -159,23 +209,24 @@ def resumed_and_two_ranks(work, whole):
                  == {k: v for k, v in two_entries[key].items()
                      if k != "damage"}
                  for key in one_entries if isinstance(one_entries[key], dict))
-    one_points, one_values = field(whole)
-    two_points, two_values = field(folder, pieces=2)
+    one_points, one_values = field(whole, faces=BASE_FACES)
+    two_points, two_values = field(folder, pieces=2, faces=BASE_FACES)
     worst = 0.0
-    for face in FACES:
+    for face in BASE_FACES:
         a = np.lexsort((one_values[face], one_points[:, 1], one_points[:, 0]))
         b = np.lexsort((two_values[face], two_points[:, 1], two_points[:, 0]))
-        scale = np.abs(one_values[face]).max()
+        scale = max(np.abs(one_values[face]).max(), 1e-300)
         worst = max(worst, np.abs(one_values[face][a]
                                   - two_values[face][b]).max() / scale)
     check(places and value < 1e-12 and len(one_points) == len(two_points)
-          and worst < 1e-7,
+          and worst < 1e-7
+          and sum(isinstance(v, dict) for v in one_entries.values()) == 4,
           "two ranks: the largest damage of each face at the same point and "
           f"slab, within {value:.1e} (< 1e-12); the field within {worst:.1e} "
           "of its largest (32 bits)")
 
 
 with tempfile.TemporaryDirectory() as work:
-    whole = against_history(work)
-    resumed_and_two_ranks(work, whole)
+    against_history(work)
+    resumed_and_two_ranks(work, with_base(work))
 finish()

@@ -13,6 +13,7 @@
 #include <liftoff/loads/free_bending.h>
 #include <liftoff/output/plate_field_at_points.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <string>
@@ -50,6 +51,14 @@ namespace liftoff
     {
       const char *names[] = {"top", "bottom", "base_top", "base_bottom"};
       return names[face];
+    }
+    /// A face's name in the summary: "top", "base top".
+    static std::string
+    text(const unsigned int face)
+    {
+      std::string words = name(face);
+      std::replace(words.begin(), words.end(), '_', ' ');
+      return words;
     }
     /// How many faces a section has: the slab's two, and the base's.
     static unsigned int
