@@ -54,8 +54,12 @@ namespace liftoff
 
     static void
     declare_parameters(ParameterHandler &prm);
+    /// `gap_entry`: the entry that gives the text of Foundation/Initial
+    /// gap, as its errors name it (the interface's springs take theirs
+    /// from Base/Interface gap).
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler  &prm,
+                     const std::string &gap_entry = "Foundation/Initial gap");
     /// A bed in the scene as written requires Units/Subgrade modulus.
     static void
     describe_for_units(ParameterHandler            &scene,
@@ -143,8 +147,10 @@ namespace liftoff
     double contact_tolerance = 1e-9;
     /// g(x, y) in full plate coordinates.
     std::string gap_expression = "0";
-    double      c              = 0;
-    double      g_p            = 0;
+    /// The entry the gap's errors name.
+    std::string gap_entry = "Foundation/Initial gap";
+    double      c         = 0;
+    double      g_p       = 0;
 
     const FoundationPoints *points = nullptr;
     /// g at the points, if is_gapped: some point on some rank has g != 0.
