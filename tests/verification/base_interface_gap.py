@@ -14,6 +14,9 @@ where g_i < 0), each case against what does not have that interface:
   (w - w_base - g_i)^+ >= 0, interface_gap = (g_i - (w - w_base))^+, and
   their product 0, g_i evaluated here from its expression; and so in an
   SI scene (g_i in m of x, y in m; the field file in m and Pa);
+- both weights on a pre-compressed interface: the slab stands off the
+  base by |g_i| less its weight over k_i, above the bed's surface, as a
+  rigid body; the history's max_uplift the base's (0), not the slab's;
 - a pulse on the gapped pair (dynamic, quarter model): the energy balance
   holds with the interface's gap work.
 
@@ -165,6 +168,28 @@ def si_scene(work):
                 "SI field file")
 
 
+def pre_compressed(work):
+    """Both weights alone on a pre-compressed interface (g_i = -0.02
+    everywhere): the pair sinks into the bed by the weights over k, and
+    the slab stands off the base by |g_i| less its weight over k_i, above
+    the bed's surface, each as a rigid body; the history's max_uplift is
+    the base's (0), not the slab's rise."""
+    h_b, weight, g_i = 0.04, 2.0, -0.02
+    folder = run_scene_or_fail(LIFTOFF, work, "pre", scene_text(
+        slab(K_I, "tensionless", {"Self weight": weight}, "quarter",
+             {"VTU interval": 1}),
+        base(h_b, 0.5, k_i=1e4, interface_gap=g_i)))
+    row = last_row(folder)
+    w = weight * (1 + h_b / DELTA) / K_I + g_i + weight / 1e4
+    compare("pre-compressed: w(0, 0) against (q_s + q_b) / k + g_i + q_s / "
+            "k_i", row["w(0;0)"], w, 1e-9)
+    uplift = meshio.read(os.path.join(
+        folder, "solution_00000.0000.vtu")).point_data["uplift"]
+    check(w < 0 and row["max_uplift"] == 0 and float(np.max(uplift)) == 0,
+          f"pre-compressed: max_uplift {row['max_uplift']} the base's (the "
+          f"field's {float(np.max(uplift))}), not the slab's rise {-w:.2e}")
+
+
 def dynamic(work):
     folder = run_scene_or_fail(LIFTOFF, work, "pulse", scene_text(
         {"Plate": {"Thickness ratio": DELTA, "Poisson ratio": NU},
@@ -193,5 +218,6 @@ with tempfile.TemporaryDirectory() as work:
     rigid_base(work)
     equilibrium_and_fields(work)
     si_scene(work)
+    pre_compressed(work)
     dynamic(work)
 finish()
