@@ -47,13 +47,17 @@ namespace liftoff
                   + thickness * offset * offset);
       }
       /// The stress law at depth z of the layer in a section of stiffness
-      /// D; `alone`: the stress per moment of the slab's own section at z
-      /// (0 in the base, which has no temperature).
+      /// D; `slab_alone`, `base_alone`: the stress per moment at z of the
+      /// slab's own section and of the base's (0 in the other layer): a
+      /// layer's own free moment stresses it as its section alone would.
       FaceStressLaw
-      face(const double z, const double D, const double alone) const
+      face(const double z,
+           const double D,
+           const double slab_alone,
+           const double base_alone) const
       {
         const double per_moment = plane_modulus * (z - axis) / D;
-        return {per_moment, alone - per_moment};
+        return {per_moment, slab_alone - per_moment, base_alone - per_moment};
       }
     };
 
@@ -109,6 +113,19 @@ namespace liftoff
         "in), g_i < 0 a pre-compression. Must be finite on the plate, and "
         "symmetric on a half or quarter model; 0 with another Interface."
           + quantity("deflection"));
+    }
+
+
+    /// The base's free moment D_b (1 + nu_b) per unit of its free
+    /// curvature, over the plate's D (1 + nu): SectionCoefficients::
+    /// base_thermal_moment.
+    double
+    base_thermal_moment(const BaseLayer &base,
+                        const double     nu,
+                        const double     delta)
+    {
+      return layer_of(base, 0, nu, delta).bending() * (1 + base.poisson_ratio)
+             / (1 + nu);
     }
   } // namespace
 
@@ -211,15 +228,16 @@ namespace liftoff
     const double        h     = thickness;
     const Layer         layer = layer_of(*this, 0, nu, delta);
     SectionCoefficients own;
-    own.bending         = layer.bending();
-    own.shear           = chi * layer.shear_modulus * h;
-    own.mass            = density_ratio * h / delta;
-    own.rotary          = layer.rotary();
-    own.thickness_ratio = h;
-    own.thermal_moment  = 0;
-    own.modulus         = modulus_ratio;
-    own.top             = {-6.0 / (h * h), 0};
-    own.bottom          = {6.0 / (h * h), 0};
+    own.bending             = layer.bending();
+    own.shear               = chi * layer.shear_modulus * h;
+    own.mass                = density_ratio * h / delta;
+    own.rotary              = layer.rotary();
+    own.thickness_ratio     = h;
+    own.thermal_moment      = 0;
+    own.base_thermal_moment = base_thermal_moment(*this, nu, delta);
+    own.modulus             = modulus_ratio;
+    own.top                 = {-6.0 / (h * h), 0, 0};
+    own.bottom              = {6.0 / (h * h), 0, 0};
     return own;
   }
 
@@ -251,13 +269,15 @@ namespace liftoff
     composite.bending             = D;
     composite.shear =
       chi * (slab_layer.shear_modulus * h_s + base_layer.shear_modulus * h_b);
-    composite.mass        = (h_s + density_ratio * h_b) / delta;
-    composite.rotary      = slab_layer.rotary() + base_layer.rotary();
-    const double alone    = 6.0 / (h_s * h_s);
-    composite.top         = slab_layer.face(-0.5 * h_s, D, -alone);
-    composite.bottom      = slab_layer.face(0.5 * h_s, D, alone);
-    composite.base_top    = base_layer.face(0.5 * h_s, D, 0);
-    composite.base_bottom = base_layer.face(0.5 * h_s + h_b, D, 0);
+    composite.mass                = (h_s + density_ratio * h_b) / delta;
+    composite.rotary              = slab_layer.rotary() + base_layer.rotary();
+    composite.base_thermal_moment = base_thermal_moment(*this, nu, delta);
+    const double alone            = 6.0 / (h_s * h_s);
+    const double base_alone       = 6.0 / (h_b * h_b);
+    composite.top                 = slab_layer.face(-0.5 * h_s, D, -alone, 0);
+    composite.bottom              = slab_layer.face(0.5 * h_s, D, alone, 0);
+    composite.base_top    = base_layer.face(0.5 * h_s, D, 0, -base_alone);
+    composite.base_bottom = base_layer.face(0.5 * h_s + h_b, D, 0, base_alone);
     composite.has_base    = true;
     return composite;
   }

@@ -236,20 +236,11 @@ namespace liftoff
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     plate_geometry.slabs().tie(dof_handler, constraints);
 
-    const unsigned int layers = PlateFields::n_layers(dof_handler.get_fe());
     const Functions::ZeroFunction<2> zero(dof_handler.get_fe().n_components());
-    // A support or a symmetry plane holds every layer alike.
-    for (const auto &[id, mask] : plate_geometry.held_components())
+    for (const auto &[id, mask] : plate_geometry.held_components(
+           PlateFields::n_layers(dof_handler.get_fe())))
       VectorTools::interpolate_boundary_values(
-        mapping(),
-        dof_handler,
-        id,
-        zero,
-        constraints,
-        PlateFields::mask(mask[PlateFields::w],
-                          mask[PlateFields::psi_x],
-                          mask[PlateFields::psi_y],
-                          layers));
+        mapping(), dof_handler, id, zero, constraints, mask);
     hold_projected_rotations();
     constraints.close();
     // Collective: what depends on it (PlateMatrices::quadratic_form's

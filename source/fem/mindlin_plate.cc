@@ -9,34 +9,6 @@
 
 namespace liftoff
 {
-  namespace
-  {
-    /// A base of its own (tensionless) runs on under the joints, which it
-    /// cannot do through a symmetry plane yet, and carries slabs of one
-    /// section.
-    void
-    require_base_fits(const BaseLayer     &base,
-                      const PlateGeometry &geometry,
-                      const bool           one_section)
-    {
-      if (base.n_layers() == 1)
-        return;
-      for (const auto &joint : geometry.slabs().joints())
-        AssertThrow(!joint.on_plane,
-                    ExcMessage("Base/Interface = tensionless runs the base "
-                               "on under the joints, which it cannot do "
-                               "through a symmetry plane (not yet): model "
-                               "the full plate or a half whose plane is no "
-                               "joint."));
-      AssertThrow(one_section,
-                  ExcMessage("Slabs/Thicknesses, Modulus ratios: slabs of "
-                             "their own sections on a base of their own "
-                             "(Base/Interface = tensionless) are not built "
-                             "yet; use one section, or bonded or unbonded."));
-    }
-  } // namespace
-
-
   void
   MindlinPlate::declare_parameters(ParameterHandler &prm)
   {
@@ -194,7 +166,6 @@ namespace liftoff
       slab_sections.push_back({thickness[s], modulus[s]});
     if (!has_slab_sections())
       slab_sections.clear();
-    require_base_fits(base, geometry, slab_sections.empty());
     const std::vector<unsigned int> axes = geometry.symmetry_axes();
     geometry.slabs().require_symmetric(slab_sections,
                                        axes,
@@ -240,6 +211,21 @@ namespace liftoff
     if (!base.is_composite())
       return alone;
     return base.under(alone, poisson_ratio, shear_correction, thickness_ratio);
+  }
+
+
+  SectionCoefficients
+  MindlinPlate::base_section() const
+  {
+    return base.own_section(poisson_ratio, shear_correction, thickness_ratio);
+  }
+
+
+  SectionCoefficients
+  MindlinPlate::layer_section(const unsigned int slab,
+                              const unsigned int layer) const
+  {
+    return layer == 0 ? section(slab) : base_section();
   }
 
 

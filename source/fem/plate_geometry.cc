@@ -626,16 +626,34 @@ namespace liftoff
 
 
   std::vector<std::pair<types::boundary_id, ComponentMask>>
-  PlateGeometry::held_components() const
+  PlateGeometry::held_components(const unsigned int layers) const
   {
     std::vector<std::pair<types::boundary_id, ComponentMask>> held;
+    const auto hold = [&](const types::boundary_id id,
+                          const ComponentMask     &of_layer,
+                          const unsigned int       first_layer) {
+      const ComponentMask mask = PlateFields::mask(of_layer[PlateFields::w],
+                                                   of_layer[PlateFields::psi_x],
+                                                   of_layer[PlateFields::psi_y],
+                                                   layers,
+                                                   first_layer);
+      if (mask.n_selected_components() > 0)
+        held.emplace_back(id, mask);
+    };
     for (const HeldBoundary &boundary : held_boundaries())
-      {
-        const ComponentMask mask =
-          held_on_edge(boundary.condition, boundary.direction);
-        if (mask.n_selected_components() > 0)
-          held.emplace_back(boundary.id, mask);
-      }
+      hold(boundary.id,
+           held_on_edge(boundary.condition, boundary.direction),
+           0);
+    // The slab's edge on such a joint acts against its mirror image
+    // (JointSprings), so the slab is free there; a base of its own runs on
+    // through the plane and keeps the plane's condition.
+    for (const Joint &joint : slab_layout.joints())
+      if (joint.on_plane && !joint.tied)
+        for (const types::boundary_id id : {joint.lower_side, joint.upper_side})
+          hold(id,
+               held_on_edge(EdgeCondition::symmetry_plane,
+                            1 - joint.normal_axis),
+               1);
     return held;
   }
 

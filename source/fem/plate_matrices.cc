@@ -120,11 +120,7 @@ namespace liftoff
                                        disc.element().shear_integration());
 
     // A base of its own (tensionless) is a second layer of the same kind.
-    const unsigned int        layers = PlateFields::n_layers(fe);
-    const SectionCoefficients base =
-      plate.base.own_section(plate.poisson_ratio,
-                             plate.shear_correction,
-                             plate.thickness_ratio);
+    const unsigned int                   layers = PlateFields::n_layers(fe);
     FullMatrix<double>                   cell_stiffness(n_dofs, n_dofs);
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
@@ -137,7 +133,7 @@ namespace liftoff
         for (unsigned int layer = 0; layer < layers; ++layer)
           {
             const SectionCoefficients section =
-              layer == 0 ? plate.section(cell->material_id()) : base;
+              plate.layer_section(cell->material_id(), layer);
             add_bending_and_inertia(fe_values,
                                     layer,
                                     layer == 0 ? plate.poisson_ratio

@@ -537,8 +537,9 @@ namespace liftoff
                   AffineConstraints<double> &constraints) const
   {
     // A tied joint on a symmetry plane is the plane (psi . n = 0 there).
-    // A base of its own runs on under every joint (MindlinPlate refuses a
-    // joint on a plane with it): its fields are tied across the others.
+    // A base of its own runs on under every joint: its fields are tied
+    // across the others, and on a plane it has no other side but the
+    // plane's condition (PlateGeometry::held_components).
     const unsigned int layers = PlateFields::n_layers(dof_handler.get_fe());
     std::vector<bool>  of_base(dof_handler.get_fe().n_components(), false);
     for (unsigned int c = PlateFields::w_of(1); c < of_base.size(); ++c)

@@ -414,12 +414,7 @@ namespace liftoff
     return [bending, tau](const Point<2> &x) {
       FreeBending sum;
       for (const auto &[load, h] : bending)
-        {
-          const FreeBending one = load->free_bending_at(x, tau);
-          sum.curvature += h * one.curvature;
-          sum.bottom_stress += h * one.bottom_stress;
-          sum.top_stress += h * one.top_stress;
-        }
+        sum.add(load->free_bending_at(x, tau), h);
       return sum;
     };
   }

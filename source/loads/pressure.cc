@@ -75,11 +75,7 @@ namespace liftoff
     // The base's weight over the slab's (of a uniform plate, whose slab
     // weighs 1).
     if (plate.base.n_layers() == 2)
-      base_weight = plate.base
-                      .own_section(plate.poisson_ratio,
-                                   plate.shear_correction,
-                                   plate.thickness_ratio)
-                      .mass;
+      base_weight = plate.base_section().mass;
     // Slabs alike (slab_sections empty) share the first's section; a base
     // adds its weight to it.
     const std::size_t n_sections =
@@ -180,15 +176,16 @@ namespace liftoff
       integrator.add(density, vector);
     else
       integrator.add(density, region_in(plate), vector);
-    // A base of its own (tensionless) carries its own weight: the slab's
-    // density scaled to the base's, on the base's w.
+    // A base of its own (tensionless) carries its own weight, on the
+    // base's w: the density without the slab's section under x (slabs of
+    // their own weigh differently; the base is one layer under all).
     if (base_weight > 0)
       PatchIntegrator(integrator)
         .on_layer(1)
         .add(
           [&](const Point<2> &x) {
             std::array<double, 3> f = density(x);
-            f[0] *= base_weight;
+            f[0] *= base_weight / density_factor(integrator.mesh(), x);
             return f;
           },
           vector);

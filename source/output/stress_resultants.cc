@@ -36,59 +36,88 @@ namespace liftoff
     constexpr unsigned int n_fields_by_default = 12;
     constexpr unsigned int n_fields_of_slab    = 14;
 
-    // The moments measured from the free curvature kappa_T: M_xx, M_yy and
-    // the principal moments gain D (1 + nu) kappa_T; a nonlinear profile's
-    // self-equilibrating stress is isotropic in the plane and differs
-    // between the faces. (Added only with a temperature: + 0 would turn a
-    // -0 into 0 in the files.)
-    double
-    free_moment(const FreeBending &thermal, const double nu)
+    /// The free moments of a section, in units of D: the slab's D_s (1 +
+    /// nu) kappa_T and the base's D_b (1 + nu_b) kappa_Tb, measured as the
+    /// moments the section carries.
+    struct FreeMoments
     {
-      return (1 + nu) * thermal.curvature;
-    }
+      double slab = 0, base = 0;
+
+      /// What M_xx, M_yy and the principal moments gain. (A base without a
+      /// temperature adds nothing: + 0 would turn a -0 into 0 in the
+      /// files.)
+      double
+      total() const
+      {
+        return base == 0 ? slab : slab + base;
+      }
+    };
 
 
     /// The free bending of the plate's section (FreeBendingField) in a
-    /// slab's: the curvature alpha dT / H_s, with the moment D_s (1 + nu)
-    /// of it, as the curvature whose moment at the plate's D is the same,
-    /// and the stresses of E_s.
+    /// section: each layer's curvature as the curvature whose moment at
+    /// the plate's D is the same, the slab's stresses of E_s (the base's
+    /// are of its own modulus already).
     FreeBending
     in_section(const FreeBending &thermal, const SectionCoefficients &section)
     {
-      return {thermal.curvature * section.thermal_moment,
-              thermal.bottom_stress * section.modulus,
-              thermal.top_stress * section.modulus};
+      FreeBending in = thermal;
+      in.curvature   = thermal.curvature * section.thermal_moment;
+      in.bottom_stress *= section.modulus;
+      in.top_stress *= section.modulus;
+      in.base_curvature = thermal.base_curvature * section.base_thermal_moment;
+      return in;
+    }
+
+
+    /// The free moments of `thermal` in its section (in_section()).
+    FreeMoments
+    free_moments(const FreeBending &thermal, const double nu)
+    {
+      return {(1 + nu) * thermal.curvature, (1 + nu) * thermal.base_curvature};
     }
 
 
     /// The largest principal stress at a face by its law, from the
-    /// principal moments M_1 >= M_2 and the free moment of the slab's
-    /// temperature (both measured from the free curvature).
+    /// principal moments M_1 >= M_2 and the free moments of the layers'
+    /// temperatures (all measured from the free curvature).
     double
     at_face(const FaceStressLaw &law,
             const double         m_1,
             const double         m_2,
-            const double         free)
+            const FreeMoments   &free)
     {
       double s = std::max(law.per_moment * m_1, law.per_moment * m_2);
       // Only a base changes it (a slab alone: + 0 would turn -0 into 0).
       if (law.per_free_moment != 0)
-        s += law.per_free_moment * free;
+        s += law.per_free_moment * free.slab;
+      if (free.base != 0)
+        s += law.per_base_free_moment * free.base;
       return s;
+    }
+
+
+    /// Adds `stress` to `face` where it is not 0 (+ 0 would turn a -0 into
+    /// 0 in the files).
+    void
+    add_stress(const double stress, double &face)
+    {
+      if (stress != 0)
+        face += stress;
     }
 
 
     /// The largest principal stress at each face of the section: at the
     /// top face (z = -H/2) and the bed-side face (z = +H/2) of a slab alone
     /// -6 M_2 / H^2 and 6 M_1 / H^2, plus a nonlinear profile's
-    /// self-equilibrating stress of each face (`thermal`, in the slab's
-    /// section, with its free moment `free`; none: nullptr).
+    /// self-equilibrating stress of each face (`thermal`, in the section,
+    /// with its free moments `free`; none: nullptr).
     FaceStresses
     face_stresses(const double               m_1,
                   const double               m_2,
                   const SectionCoefficients &section,
                   const FreeBending         *thermal,
-                  const double               free)
+                  const FreeMoments         &free)
     {
       FaceStresses s{at_face(section.top, m_1, m_2, free),
                      at_face(section.bottom, m_1, m_2, free)};
@@ -102,6 +131,8 @@ namespace liftoff
         {
           s.top += thermal->top_stress;
           s.bottom += thermal->bottom_stress;
+          add_stress(thermal->base_top_stress, s.base_top);
+          add_stress(thermal->base_bottom_stress, s.base_bottom);
         }
       return s;
     }
@@ -112,7 +143,7 @@ namespace liftoff
     void
     set_face_stresses(const SectionCoefficients &section,
                       const FreeBending         *thermal,
-                      const double               free,
+                      const FreeMoments         &free,
                       Vector<double>            &out)
     {
       const FaceStresses s =
@@ -133,7 +164,7 @@ namespace liftoff
     }
 
 
-    /// The moments shifted by the free moment, the stresses at the
+    /// The moments shifted by the free moments, the stresses at the
     /// bed-side face (sigma_xx, sigma_yy) by its law.
     void
     add_free_bending(const FreeBending         &thermal,
@@ -141,15 +172,18 @@ namespace liftoff
                      const SectionCoefficients &section,
                      Vector<double>            &out)
     {
-      const double m = free_moment(thermal, nu);
+      const FreeMoments free = free_moments(thermal, nu);
+      const double      m    = free.total();
       for (const unsigned int k : {0, 1, 5, 6})
         out[k] += m;
       double shift = section.bottom.per_moment * m;
       if (section.bottom.per_free_moment != 0)
-        shift += section.bottom.per_free_moment * m;
+        shift += section.bottom.per_free_moment * free.slab;
+      if (free.base != 0)
+        shift += section.bottom.per_base_free_moment * free.base;
       out[8] += shift + thermal.bottom_stress;
       out[9] += shift + thermal.bottom_stress;
-      set_face_stresses(section, &thermal, m, out);
+      set_face_stresses(section, &thermal, free, out);
     }
 
 
@@ -363,30 +397,29 @@ namespace liftoff
                            section,
                            out);
         else
-          set_face_stresses(section, nullptr, 0, out);
+          set_face_stresses(section, nullptr, FreeMoments(), out);
       }
-    add_own_base_faces(gradient, computed);
+    add_own_base_faces(points, gradient, computed);
   }
 
 
   void
   StressResultants::add_own_base_faces(
+    const std::vector<Point<2>>                  &points,
     const std::vector<std::vector<Tensor<1, 2>>> &gradient,
     std::vector<Vector<double>>                  &computed) const
   {
     if (plate.base.n_layers() == 1)
       return;
     // A base of its own bends about its own mid-plane by its own psi.
-    const SectionCoefficients base =
-      plate.base.own_section(plate.poisson_ratio,
-                             plate.shear_correction,
-                             plate.thickness_ratio);
+    const SectionCoefficients base = plate.base_section();
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
         FaceStresses faces;
         own_base_faces(base,
                        gradient[q][PlateFields::rotation(0, 1)],
                        gradient[q][PlateFields::rotation(1, 1)],
+                       points[q],
                        faces);
         Vector<double> &out = computed[q];
         out[11] = std::max({out[11], faces.base_top, faces.base_bottom});
@@ -406,14 +439,12 @@ namespace liftoff
     // A base of its own: its faces by its own moments.
     if (!out.with_faces || fields.grad_psi_base.empty())
       return;
-    const SectionCoefficients base =
-      plate.base.own_section(plate.poisson_ratio,
-                             plate.shear_correction,
-                             plate.thickness_ratio);
+    const SectionCoefficients base = plate.base_section();
     for (unsigned int q = 0; q < fields.n_points(); ++q)
       own_base_faces(base,
                      fields.grad_psi_base[q][0],
                      fields.grad_psi_base[q][1],
+                     fields.points()[q],
                      out.faces[q]);
   }
 
@@ -422,14 +453,27 @@ namespace liftoff
   StressResultants::own_base_faces(const SectionCoefficients &base,
                                    const Tensor<1, 2>        &grad_psi_x,
                                    const Tensor<1, 2>        &grad_psi_y,
+                                   const Point<2>            &point,
                                    FaceStresses              &faces) const
   {
-    const PlaneMoments m(-base.bending,
-                         plate.base.poisson_ratio,
-                         grad_psi_x,
-                         grad_psi_y);
-    faces.base_top    = at_face(base.top, m.first, m.second, 0);
-    faces.base_bottom = at_face(base.bottom, m.first, m.second, 0);
+    PlaneMoments m(-base.bending,
+                   plate.base.poisson_ratio,
+                   grad_psi_x,
+                   grad_psi_y);
+    // Its own moments measured from its own free curvature, which stresses
+    // it as a section alone: its faces by those moments.
+    FreeBending thermal;
+    if (free_bending)
+      {
+        thermal           = in_section(free_bending(point), base);
+        const double free = free_moments(thermal, plate.poisson_ratio).total();
+        m.first += free;
+        m.second += free;
+      }
+    faces.base_top    = at_face(base.top, m.first, m.second, FreeMoments());
+    faces.base_bottom = at_face(base.bottom, m.first, m.second, FreeMoments());
+    add_stress(thermal.base_top_stress, faces.base_top);
+    add_stress(thermal.base_bottom_stress, faces.base_bottom);
   }
 
 
@@ -468,13 +512,13 @@ namespace liftoff
         // The thermal stress of a face is wanted with the faces only; its
         // curvature always.
         FreeBending thermal;
-        double      free = 0;
+        FreeMoments free;
         if (free_bending)
           {
             thermal = in_section(free_bending(fields.points()[q]), section);
-            free    = free_moment(thermal, nu);
-            out.m_1[q] += free;
-            out.m_2[q] += free;
+            free    = free_moments(thermal, nu);
+            out.m_1[q] += free.total();
+            out.m_2[q] += free.total();
           }
         if (out.with_faces)
           out.faces[q] = face_stresses(out.m_1[q],

@@ -154,14 +154,20 @@ def thick_slab(work, interface):
               f" = D times the twin's: {error:.1e}")
 
 
-def restrained_curl(work, interface):
+def restrained_curl(work, interface, base_heat=0.0):
+    """`base_heat`: the base's own linear difference per unit of the
+    slab's (Base profile = base_heat, 0), at twice the slab's alpha."""
     delta, h_b, e_b, alpha, dt = 0.02, 0.03, 0.5, 1e-3, -1.0
+    alpha_b, dt_b = 2 * alpha, base_heat * dt
     D, _, _, _ = section(interface, delta, h_b, e_b, NU)
     e_s = 12 / delta ** 3
     e_base = e_s * e_b
-    # The slab's thermal strain -alpha dT z / H (the top, z = -H/2, at
-    # dT / 2 above the middle); the curvature that leaves no moment.
-    kappa = -e_s * alpha * dt * delta ** 2 / (12 * D)
+    # Each layer's thermal strain -alpha dT z' / H (z' from its middle: the
+    # top at dT / 2 above it); the curvature that leaves no moment. Zero
+    # mean strains have no axial force, so each layer's moment is its own
+    # about any axis.
+    kappa = -(e_s * alpha * dt * delta ** 2
+              + e_base * alpha_b * dt_b * h_b ** 2) / (12 * D)
     if interface == "bonded":
         axis_s = axis_b = (e_base * h_b * 0.5 * (delta + h_b)
                            / (e_s * delta + e_base * h_b))
@@ -173,17 +179,24 @@ def restrained_curl(work, interface):
                                  - alpha * dt / 2),
         "bottom": e_s * (1 + NU) * (kappa * (delta / 2 - axis_s)
                                     + alpha * dt / 2),
-        "base_top": e_base * (1 + NU) * kappa * (delta / 2 - axis_b),
-        "base_bottom": e_base * (1 + NU) * kappa * (delta / 2 + h_b - axis_b)}
+        "base_top": e_base * (1 + NU) * (kappa * (delta / 2 - axis_b)
+                                         - alpha_b * dt_b / 2),
+        "base_bottom": e_base * (1 + NU) * (kappa * (delta / 2 + h_b - axis_b)
+                                            + alpha_b * dt_b / 2)}
+    heat = {"Magnitude": dt, "Expansion coefficient": alpha}
+    if base_heat:
+        heat.update({"Base profile": f"{base_heat}, 0",
+                     "Base expansion coefficient": alpha_b})
+    name = f"curl_{interface}" + ("_base" if base_heat else "")
+    what = f"{interface}, restrained curl" + (" with the base's own difference"
+                                        if base_heat else "")
     probes = [f"sigma_1_{f}(0; 0)" for f in FACES]
-    row = first_row(run_scene_or_fail(LIFTOFF, work, f"curl_{interface}",
-                                      scene_text(
+    row = first_row(run_scene_or_fail(LIFTOFF, work, name, scene_text(
         {"Analysis": {"Type": "static"},
          "Plate": {"Thickness ratio": delta, "Poisson ratio": NU},
          "Foundation": {"Model": "bilateral", "Stiffness": 1e-3},
          "Discretization": {"Cells along x": 8, "Cells along y": 8},
-         "Loads": {"Temperature load 1": {"Magnitude": dt,
-                                          "Expansion coefficient": alpha}},
+         "Loads": {"Temperature load 1": heat},
          "Output": {"Write energies": "false",
                     "Probe quantities": ", ".join(probes)}},
         base(interface, h_b, e_b, NU))))
@@ -191,7 +204,7 @@ def restrained_curl(work, interface):
     for face in FACES:
         value = row[f"sigma_1_{face}(0;0)"]
         error = abs(value - exact[face]) / scale
-        check(error < 1e-3, f"{interface}, restrained curl: sigma_1_{face} "
+        check(error < 1e-3, f"{what}: sigma_1_{face} "
               f"{value:.6e} against the layered closed form "
               f"{exact[face]:.6e}: {error:.1e} of the largest")
 
@@ -295,6 +308,7 @@ with tempfile.TemporaryDirectory() as work:
         kirchhoff_limit(work, interface)
         thick_slab(work, interface)
         restrained_curl(work, interface)
+        restrained_curl(work, interface, base_heat=0.6)
     design_outputs(work)
     weights(work)
     bounce(work)

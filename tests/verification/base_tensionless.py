@@ -20,6 +20,15 @@ pull), each case against a scene that does not have that interface:
   tensionless bed of k_i (w on both sides of the joint and far off it),
   and in the field file the base continuous across the joint where the
   slabs jump;
+- two slabs of their own sections (thickness and modulus), each loaded,
+  on a rigid base against the same slabs on a tensionless bed of k_i (w
+  on both slabs, the contact fraction), and the bed carrying every
+  layer's weight, each slab's by its thickness, the base's its own;
+- a joint on a symmetry plane (2 x 2 slabs with rotational springs, a
+  base of its own, a symmetric load): the half model (x1 on its plane)
+  and the quarter (x1 and y1 on planes) against the full plate, every
+  history column, and the base's psi . n held on the plane where the
+  slab's is not;
 - equilibrium under a load and both weights (static): the bed carries the
   load and the weights of slab and base, the interface the load and the
   slab's weight;
@@ -86,7 +95,7 @@ def run(work, name, *parts):
     return {k: v[-1] for k, v in history.items()}
 
 
-PRESSED = {"Pressure 1": {"Magnitude": 1, "Region": "whole plate"},
+PRESSED = {"Pressure 1": {"Magnitude": 100, "Region": "whole plate"},
            "Pressure 2": {"Magnitude": 64,
                           "Region": f"{-B}, {B}, {-B}, {B}"}}
 
@@ -135,6 +144,72 @@ def stiff_interface(work, cells=8):
           f"({separate['interface_contact_fraction']})")
 
 
+def stiff_interface_heated(work):
+    """The same pair curled by the slab's and the base's own temperature
+    differences (the base's at twice the slab's alpha), still pressed
+    everywhere: tensionless against unbonded, whose section takes both free
+    moments."""
+    delta, h_b, e_b = 0.005, 0.004, 0.5
+    k_b = e_b * 12 / delta ** 3 / h_b
+    faces = [f"sigma_1_{face}(0; 0)"
+             for face in ("top", "bottom", "base_top", "base_bottom")]
+    # A uniform pressure bends neither layer: what bends them is the heat.
+    loads = {"Pressure 1": {"Magnitude": 100, "Region": "whole plate"},
+             "Temperature load 1": {
+                 "Magnitude": -1, "Expansion coefficient": 1e-4,
+                 "Base profile": "0.5, 0", "Base expansion coefficient": 2e-4}}
+    scene = slab(0.4, "bilateral", loads=loads, delta=delta, probes=faces)
+    separate = run(work, "stiff_heated", scene,
+                   base("tensionless", h_b, e_b, k_i=1e-2 * k_b))
+    shared = run(work, "unbonded_heated", scene, base("unbonded", h_b, e_b))
+    compare("heated, stiff interface: w(0, 0) against unbonded",
+            separate["w(0;0)"], shared["w(0;0)"], 1e-3)
+    for face in faces:
+        name = face.replace(" ", "")
+        compare(f"heated, stiff interface: {name} against unbonded's",
+                separate[name], shared[name], 1e-3)
+    check(separate["interface_contact_fraction"] == 1,
+          "heated, stiff interface: pressed everywhere, in contact everywhere "
+          f"({separate['interface_contact_fraction']})")
+
+
+def held_base_heated(work):
+    """A base warmed by a nonlinear profile of its own, held flat by a very
+    stiff bilateral bed, under a slab pressed onto it that has no
+    temperature: each of the base's faces has the fully restrained stress
+    -E_b / (1 - nu_b) alpha_b (T_face - T_mean), and the slab, resting on a
+    flat base, none."""
+    h_b, e_b, alpha_b = 0.05, 0.5, 1e-3
+    values = [1.0, 0.2, 0.0]
+    mean = 0.5 * (0.5 * (values[0] + values[1]) + 0.5 * (values[1] + values[2]))
+    plane = e_b * 12 * (1 + NU) / DELTA ** 3
+    exact = {"base_top": -plane * alpha_b * (values[0] - mean),
+             "base_bottom": -plane * alpha_b * (values[-1] - mean)}
+    faces = ["top", "bottom", "base_top", "base_bottom"]
+    loads = {"Pressure 1": {"Magnitude": 1, "Region": "whole plate"},
+             "Temperature load 1": {
+                 "Magnitude": 1, "Expansion coefficient": 1e-3,
+                 "Profile": "0, 0",
+                 "Base profile": ", ".join(str(v) for v in values),
+                 "Base expansion coefficient": alpha_b}}
+    held = run(work, "held_heated", slab(
+        1e8, "bilateral", loads=loads,
+        probes=[f"sigma_1_{face}(0; 0)" for face in faces]),
+        base("tensionless", h_b, e_b, k_i=1e3))
+    scale = max(abs(v) for v in exact.values())
+    for face in ("base_top", "base_bottom"):
+        value = held[f"sigma_1_{face}(0;0)"]
+        error = abs(value - exact[face]) / scale
+        check(error < 1e-6, f"heated base held flat: sigma_1_{face}(0, 0) "
+              f"{value:.8e} against the restrained {exact[face]:.8e}: "
+              f"{error:.1e} < 1e-6 of the largest")
+    for face in ("top", "bottom"):
+        value = held[f"sigma_1_{face}(0;0)"]
+        check(abs(value) < 1e-5 * scale, f"heated base held flat: the "
+              f"slab's sigma_1_{face}(0, 0) {value:.1e} is 0 to 1e-5 of the "
+              "base's")
+
+
 def thin_soft_base(work):
     scene = slab(400, "tensionless", loads=PRESSED)
     layered = run(work, "thin", scene,
@@ -144,6 +219,22 @@ def thin_soft_base(work):
             layered["w(0;0)"], alone["w(0;0)"], 1e-3)
     compare("thin soft base: M_xx(0, 0) against the slab alone",
             layered["M_xx(0;0)"], alone["M_xx(0;0)"], 1e-3)
+
+
+def on_k_i(what, layered, alone, points):
+    """The slabs on a rigid base (`layered`) against the slabs on a
+    tensionless bed of k_i (`alone`): w at `points`, the interface's
+    contact fraction the bed's, which lets go somewhere."""
+    for point in points:
+        compare(f"{what}: w({point}) against the slabs on a tensionless "
+                f"bed of k_i", layered[f"w({point})"], alone[f"w({point})"],
+                1e-3)
+    compare(f"{what}: the interface's contact fraction against the slabs' "
+            "on k_i", layered["interface_contact_fraction"],
+            alone["contact_fraction"], 2e-2)
+    check(alone["contact_fraction"] < 0.9,
+          f"{what}: the slabs lift off ({alone['contact_fraction']:.3f} in "
+          "contact)")
 
 
 def rigid_base(work):
@@ -158,16 +249,7 @@ def rigid_base(work):
     alone = run(work, "on_k_i", slab(k_i, "tensionless", loads=loads,
                                      output=output),
                 {"Discretization": {"Symmetry": "half"}})
-    for point in ("0;0", "0.25;0.25", "0;0.45"):
-        compare(f"rigid base: w({point}) against the slab on a tensionless "
-                f"bed of k_i", layered[f"w({point})"], alone[f"w({point})"],
-                1e-3)
-    compare("rigid base: the interface's contact fraction against the "
-            "slab's on k_i", layered["interface_contact_fraction"],
-            alone["contact_fraction"], 2e-2)
-    check(alone["contact_fraction"] < 0.9,
-          f"rigid base: the slab lifts off ({alone['contact_fraction']:.3f} "
-          "in contact)")
+    on_k_i("rigid base", layered, alone, ("0;0", "0.25;0.25", "0;0.45"))
 
 
 def jointed(work):
@@ -210,6 +292,120 @@ def jointed(work):
           f"jointed: across the free joint the base is continuous (jump "
           f"{jump['w_base']:.1e} of its largest w), the slabs are not "
           f"({jump['w']:.1e})")
+
+
+def slab_sections(work):
+    """Two slabs of their own sections (thickness and modulus) with a free
+    joint at x = 0 on a rigid base, against the same slabs on a
+    tensionless bed of k_i; the bed carries the load and every layer's
+    weight, each slab's by its own thickness."""
+    k_i, weight, h_b, rho_b = 400.0, 2.0, 0.05, 0.9
+    thickness, modulus = (0.04, 0.07), (1.5, 0.7)
+    # A load on each slab, beside the joint and at the far edge.
+    loads = {"Self weight": weight,
+             "Pressure 1": {"Magnitude": 256,
+                            "Region": f"{-2 * B}, 0, {-B}, {B}"},
+             "Pressure 2": {"Magnitude": 256,
+                            "Region": f"{0.5 - 2 * B}, 0.5, {-B}, {B}"}}
+    parts = [{"Discretization": {"Symmetry": "full", "Cells along x": 16,
+                                 "Cells along y": 16},
+              "Slabs": {"Slabs along x": 2,
+                        "Thicknesses": ", ".join(map(str, thickness)),
+                        "Modulus ratios": ", ".join(map(str, modulus))},
+              "Output": {"Probe points": "-0.05, 0; 0.05, 0; -0.4, -0.3; "
+                         "0.45, 0; 0.3, 0.3",
+                         "Write foundation resultant": "true"}}]
+    layered = run(work, "sections_rigid",
+                  slab(1e8 * k_i, "bilateral", loads=loads), *parts,
+                  base("tensionless", h_b, 100, rho_b, k_i=k_i))
+    alone = run(work, "sections_on_k_i",
+                slab(k_i, "tensionless", loads=loads), *parts)
+    on_k_i("slab sections, rigid base", layered, alone,
+           ("-0.05;0", "0.05;0", "-0.4;-0.3", "0.45;0", "0.3;0.3"))
+    # Each slab (half the plate) weighs by its own thickness; the base by
+    # its own, the same under both.
+    load = 2 * 256 * (2 * B) ** 2
+    slabs = weight * sum(0.5 * t / DELTA for t in thickness)
+    compare("slab sections: the bed's resultant against the load and every "
+            "layer's weight", layered["resultant"],
+            load + slabs + weight * rho_b * h_b / DELTA, 1e-9)
+    compare("slab sections: the interface's resultant against the load and "
+            "the slabs' weights", layered["interface_resultant"],
+            load + slabs, 1e-9)
+
+
+PLANE_PROBES = {
+    "Probe points": "0.02, 0.02; 0.1, 0.05; 0.3, 0.2; 0.45, 0.45",
+    "Probe quantities": "M_xx(0.02; 0.1), M_yy(0.1; 0.02), "
+    "sigma_1_base_bottom(0; 0.1), sigma_1_base_bottom(0.02; 0.02), "
+    "sigma_1_base_top(0.3; 0.2)",
+    "Write foundation resultant": "true", "VTU interval": 1}
+
+
+def on_planes(symmetry):
+    """2 x 2 slabs with rotational springs at the joints on a base of its
+    own, under a symmetric load: on a half model the joint x1 lies on the
+    plane x = 0, on a quarter both joints lie on planes."""
+    cells = {"full": (16, 16), "half": (8, 16), "quarter": (8, 8)}[symmetry]
+    return scene_text(
+        slab(400, "tensionless", loads={
+            "Self weight": 2,
+            "Pressure 1": {"Magnitude": 400,
+                           "Region": f"{-B}, {B}, {-B}, {B}"}},
+            output=PLANE_PROBES),
+        {"Discretization": {"Symmetry": symmetry, "Cells along x": cells[0],
+                            "Cells along y": cells[1]},
+         "Slabs": {"Slabs along x": 2, "Slabs along y": 2,
+                   "Rotational stiffness": 1}},
+        base("tensionless", 0.04, 0.5, k_i=1e4))
+
+
+def joint_on_plane(work):
+    """A joint on a symmetry plane: the slab's edge acts against its mirror
+    image, the base runs on through the plane (the plane's condition on
+    its own fields): the half and quarter models against the full
+    plate."""
+    full = run_scene_or_fail(LIFTOFF, work, "planes_full", on_planes("full"))
+    history = {k: v[-1] for k, v in read_history(full).items()}
+    check(history["interface_contact_fraction"] < 0.99
+          and history["contact_fraction"] < 0.99,
+          "joint on a plane: the slabs lift off the base "
+          f"({history['interface_contact_fraction']:.3f} in contact) and "
+          f"the base off the bed ({history['contact_fraction']:.3f})")
+    # The base is one plate across the joints (tied: the same values).
+    fields = meshio.read(os.path.join(full, "solution_00000.0000.vtu"))
+    values = {}
+    for p, v in zip(fields.points, fields.point_data["w_base"]):
+        if abs(p[0]) < 1e-12:
+            values.setdefault(round(float(p[1]), 9), []).append(float(v))
+    jump = max(max(v) - min(v) for v in values.values())
+    check(jump == 0, f"joint on a plane: the full plate's w_base continuous "
+          f"across x1 (jump {jump})")
+    for symmetry in ("half", "quarter"):
+        folder = run_scene_or_fail(LIFTOFF, work, f"planes_{symmetry}",
+                                   on_planes(symmetry))
+        part = {k: v[-1] for k, v in read_history(folder).items()}
+        # Every column but the mesh's, the iteration's and the points
+        # (whose coordinates are 0 or the same).
+        columns = [c for c in history if c not in (
+            "tau", "cells", "dofs", "active_set_iterations",
+            "active_set_cycle") and not c.startswith(("resultant_",
+                                                      "max_pressure_"))]
+        worst, where = max((abs(part[c] - history[c]) / max(
+            abs(history[c]), 1e-300), c) for c in columns)
+        check(worst < 1e-10, f"joint on a plane: the {symmetry} model's "
+              f"{len(columns)} columns the full plate's within {worst:.1e} "
+              f"(at most in {where})")
+        # On the plane the base's rotation across it is held, the slab's is
+        # not (its edge springs act against the mirror's).
+        fields = meshio.read(os.path.join(folder, "solution_00000.0000.vtu"))
+        on_plane = np.abs(fields.points[:, 0]) < 1e-12
+        base_psi = np.abs(fields.point_data["psi_x_base"][on_plane]).max()
+        slab_psi = np.abs(fields.point_data["psi_x"][on_plane]).max()
+        check(base_psi == 0 and slab_psi > 1e-2 * np.abs(
+            fields.point_data["psi_x"]).max(),
+              f"joint on a plane, {symmetry}: psi_x_base = 0 on the plane, "
+              f"psi_x up to {slab_psi:.2e}")
 
 
 def equilibrium(work):
@@ -294,9 +490,13 @@ def dynamic(work):
 
 with tempfile.TemporaryDirectory() as work:
     stiff_interface(work)
+    stiff_interface_heated(work)
+    held_base_heated(work)
     thin_soft_base(work)
     rigid_base(work)
     jointed(work)
+    slab_sections(work)
+    joint_on_plane(work)
     equilibrium(work)
     dynamic(work)
 finish()

@@ -12,12 +12,14 @@ namespace liftoff
   /// F0 / L^2: `per_moment` times the principal moment that puts the face in
   /// the more tension (M_1 where it is positive, M_2 where negative), plus
   /// `per_free_moment` times the free moment D_s (1 + nu) alpha dT / H_s of
-  /// the slab's temperature, both measured as the moments M the section
-  /// carries (doc/model.md, "A base layer").
+  /// the slab's temperature and `per_base_free_moment` times the base's
+  /// D_b (1 + nu_b) alpha_b dT_b / H_b, all measured as the moments M the
+  /// section carries (doc/model.md, "A base layer").
   struct FaceStressLaw
   {
-    double per_moment      = 0;
-    double per_free_moment = 0;
+    double per_moment           = 0;
+    double per_free_moment      = 0;
+    double per_base_free_moment = 0;
   };
 
 
@@ -42,6 +44,10 @@ namespace liftoff
     /// has no axial force, so its moment is the same about any axis: the
     /// base does not change it.
     double thermal_moment;
+    /// The base's temperature moment D_b (1 + nu_b) alpha_b dT_b / H_b
+    /// over the plate's D (1 + nu) alpha_b dT_b / H_b, where the section
+    /// holds the base (a composite, or the base's own); 0 else.
+    double base_thermal_moment = 0;
     /// E_s / E, the factor of a temperature's stresses.
     double modulus;
     /// The slab's faces (top: away from the bed) and, with a base, the

@@ -72,6 +72,14 @@ namespace liftoff
     /// with the base under it where there is one.
     SectionCoefficients
     section(const unsigned int slab) const;
+    /// The base's own section, where it is a layer of its own (BaseLayer,
+    /// tensionless).
+    SectionCoefficients
+    base_section() const;
+    /// The section of `layer` (0: the slab's, 1: a base of its own) over
+    /// the cells of slab `slab`.
+    SectionCoefficients
+    layer_section(const unsigned int slab, const unsigned int layer) const;
     /// The slabs' sections (Slabs/Thicknesses, Modulus ratios) for the
     /// slabs of `geometry`, parsed after it; refused where the count is
     /// wrong, or where mirror slabs of a symmetric model differ.

@@ -125,6 +125,12 @@ namespace liftoff
     /// (PlateFields: 0 the slab, the default; 1 a base).
     PatchIntegrator &
     on_layer(const unsigned int layer);
+    /// The mesh it integrates on.
+    const Discretization &
+    mesh() const
+    {
+      return discretization;
+    }
 
   private:
     const Discretization &discretization;

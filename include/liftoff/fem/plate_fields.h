@@ -97,16 +97,19 @@ namespace liftoff
               rotation_extractor(1, layer)};
     }
 
-    /// The mask of the fields named true (w, psi_x, psi_y) in every one of
-    /// `layers` layers: a support or a symmetry plane holds both layers.
+    /// The mask of the fields named true (w, psi_x, psi_y) in the layers
+    /// from `first_layer` on of an element of `layers` layers: a support or
+    /// a symmetry plane holds both layers, a symmetry plane that is a
+    /// slab's joint the base's alone.
     static ComponentMask
     mask(const bool         of_w,
          const bool         of_psi_x,
          const bool         of_psi_y,
-         const unsigned int layers = 1)
+         const unsigned int layers      = 1,
+         const unsigned int first_layer = 0)
     {
       std::vector<bool> selected(n_components_of(layers), false);
-      for (unsigned int layer = 0; layer < layers; ++layer)
+      for (unsigned int layer = first_layer; layer < layers; ++layer)
         {
           selected[w_of(layer)]        = of_w;
           selected[rotation(0, layer)] = of_psi_x;

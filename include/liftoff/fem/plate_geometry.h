@@ -121,10 +121,12 @@ namespace liftoff
     double
     largest_cell_aspect_ratio() const;
 
-    /// The components of (w, psi_x, psi_y) held at zero on each boundary
-    /// that holds any: the supported edges, then the symmetry planes.
+    /// The components of an element of `layers` layers held at zero on
+    /// each boundary that holds any: the supported edges, then the
+    /// symmetry planes (every layer), then the joints on a symmetry plane
+    /// (a base of its own alone).
     std::vector<std::pair<types::boundary_id, ComponentMask>>
-    held_components() const;
+    held_components(const unsigned int layers) const;
     /// The boundaries that hold a rotation, and those along no axis.
     HeldRotations
     held_rotations() const;

@@ -68,6 +68,19 @@ namespace liftoff
                      const std::vector<double> &times) const override;
 
   private:
+    /// The free moments of the layers that `section` holds, over the
+    /// plate's D: D_i (1 + nu_i) kappa_T,i summed.
+    double
+    moment_in(const SectionCoefficients &section,
+              const FreeBending         &bending) const;
+    /// `moment` against div psi_i of `layer` at point q, into `cell_rhs`.
+    static void
+    add_moment(const FEValues<2> &values,
+               const unsigned int q,
+               const unsigned int layer,
+               const double       moment,
+               Vector<double>    &cell_rhs);
+
     TemperatureLoad(const std::string        &name,
                     const double              magnitude,
                     LoadHistory             &&history,
@@ -78,6 +91,10 @@ namespace liftoff
     /// alpha (the solver's: alpha D / (F0 L), alpha itself with F0 = D/L).
     double             expansion;
     TemperatureProfile profile;
+    /// The base's own profile and alpha_b (solver's units; 0: no
+    /// temperature of the base's own).
+    TemperatureProfile base_profile   = TemperatureProfile({0.0, 0.0}, "");
+    double             base_expansion = 0;
     /// (1 + nu) and Delta = H / L of the plate (use_plate()).
     double one_plus_nu = 1, thickness_ratio = 1;
     /// The plate, whose slabs' sections scale the thermal moment.

@@ -153,18 +153,20 @@ namespace liftoff
     /// from its own moments, into `computed` at every point; nothing
     /// without one.
     void
-    add_own_base_faces(const std::vector<std::vector<Tensor<1, 2>>> &gradient,
+    add_own_base_faces(const std::vector<Point<2>>                  &points,
+                       const std::vector<std::vector<Tensor<1, 2>>> &gradient,
                        std::vector<Vector<double>> &computed) const;
     /// The same at the points of `fields`, into `out.faces`.
     void
     add_own_base_faces(const PlateFieldAtPoints &fields,
                        PrincipalValues          &out) const;
     /// The base's faces of `faces` from the gradients of its own psi_x and
-    /// psi_y, with its own section `base`.
+    /// psi_y, with its own section `base`, at `point` (its temperature).
     void
     own_base_faces(const SectionCoefficients &base,
                    const Tensor<1, 2>        &grad_psi_x,
                    const Tensor<1, 2>        &grad_psi_y,
+                   const Point<2>            &point,
                    FaceStresses              &faces) const;
 
     const MindlinPlate                    &plate;
