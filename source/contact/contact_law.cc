@@ -138,9 +138,11 @@ namespace liftoff
 
 
   void
-  ContactLaw::parse_parameters(ParameterHandler &prm,
-                               const double      mass_per_area)
+  ContactLaw::parse_parameters(ParameterHandler  &prm,
+                               const double       mass_per_area,
+                               const std::string &gap_entry_name)
   {
+    gap_entry = gap_entry_name;
     prm.enter_subsection("Foundation");
     model_type        = model_names.parse(prm.get("Model"), "Foundation/Model");
     gamma             = prm.get_double("Stiffness");
@@ -151,8 +153,7 @@ namespace liftoff
     g_p               = prm.get_double("Shear modulus");
     prm.leave_subsection();
     // A broken expression is refused now, before any mesh is built.
-    parse_expression<2>(
-      "Foundation/Initial gap", gap_expression, 1, "x,y", false);
+    parse_expression<2>(gap_entry, gap_expression, 1, "x,y", false);
     AssertThrow(model_type == Model::none || gamma > 0,
                 ExcMessage("Foundation/Stiffness (Gamma) must be > 0, or set "
                            "Foundation/Model = none."));
@@ -177,8 +178,8 @@ namespace liftoff
     is_precompressed = false;
     if (model_type == Model::none)
       return;
-    const std::string name = "Foundation/Initial gap";
-    const auto        g_of_x =
+    const std::string &name = gap_entry;
+    const auto         g_of_x =
       parse_expression<2>(name, gap_expression, 1, "x,y", false);
     // A half or quarter model is right only if the bed is symmetric too:
     // compare g at each point with its images in the symmetry planes.

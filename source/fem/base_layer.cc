@@ -1,5 +1,6 @@
 #include <liftoff/base/entry_quantity.h>
 #include <liftoff/base/number_text.h>
+#include <liftoff/base/scene_input.h>
 #include <liftoff/base/selection.h>
 #include <liftoff/fem/base_layer.h>
 
@@ -81,6 +82,40 @@ namespace liftoff
     }
 
 
+    /// The springs of Interface = tensionless: their modulus and gap.
+    void
+    declare_interface_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Interface stiffness",
+        "0",
+        Patterns::Double(0.0, 1e12),
+        "k_i of tensionless: the pressure between slab and "
+        "base per unit of w_slab - w_base where they touch "
+        "(Pa/m in an SI scene; in units of D / L^4, as "
+        "Foundation/Stiffness, in a dimensionless one); > 0 "
+        "with Interface = tensionless, and at most 1e12 D / "
+        "L^4 for the reason Foundation/Stiffness is. A stiff interface "
+        "(k_i large against the base's k_b = E_b / H_b) "
+        "approaches unbonded without separation where the "
+        "slab is pressed."
+          + quantity("pressure per length"));
+      prm.declare_entry(
+        "Interface gap",
+        "0",
+        Patterns::Anything(),
+        "g_i(x, y) of tensionless, muParser in x, y of the full plate: the "
+        "distance between the unloaded slab and the base, in the unit of w, "
+        "F0 L^2 / D, as Foundation/Initial gap (m in an SI scene). The "
+        "springs act where "
+        "w_slab - w_base > g_i with the pressure k_i (w_slab - w_base - "
+        "g_i): g_i > 0 is a void under the slab (an eroded base, a curl set "
+        "in), g_i < 0 a pre-compression. Must be finite on the plate, and "
+        "symmetric on a half or quarter model; 0 with another Interface."
+          + quantity("deflection"));
+    }
+
+
     /// The base's free moment D_b (1 + nu_b) per unit of its free
     /// curvature, over the plate's D (1 + nu): SectionCoefficients::
     /// base_thermal_moment.
@@ -113,20 +148,7 @@ namespace liftoff
       "slab lifts off the base where it curls or rebounds. Slip and "
       "friction between the layers are not modelled."
         + quantity("text"));
-    prm.declare_entry(
-      "Interface stiffness",
-      "0",
-      Patterns::Double(0.0, 1e12),
-      "k_i of tensionless: the pressure between slab and "
-      "base per unit of w_slab - w_base where they touch "
-      "(Pa/m in an SI scene; in units of D / L^4, as "
-      "Foundation/Stiffness, in a dimensionless one); > 0 "
-      "with Interface = tensionless, and at most 1e12 D / "
-      "L^4 for the reason Foundation/Stiffness is. A stiff interface "
-      "(k_i large against the base's k_b = E_b / H_b) "
-      "approaches unbonded without separation where the "
-      "slab is pressed."
-        + quantity("pressure per length"));
+    declare_interface_parameters(prm);
     prm.declare_entry("Thickness",
                       "0",
                       Patterns::Double(0.0, 1.0),
@@ -168,6 +190,7 @@ namespace liftoff
     poisson_ratio = prm.get_double("Poisson ratio");
     density_ratio = prm.get_double("Density ratio");
     interface_stiffness              = prm.get_double("Interface stiffness");
+    interface_gap                    = prm.get("Interface gap");
     const std::string thickness_text = prm.get("Thickness");
     prm.leave_subsection();
 
@@ -185,6 +208,13 @@ namespace liftoff
                            "Base/Interface = tensionless: give it (> 0) "
                            "with that interface and leave it at 0 with "
                            "another."));
+    // Any expression but 0 is refused: the gap of a shared w is the bed's.
+    AssertThrow(interface == Interface::tensionless || interface_gap == "0",
+                ExcMessage("Base/Interface gap = <" + abbreviated(interface_gap)
+                           + "> is the gap of the springs of Base/Interface "
+                             "= tensionless: leave it at 0 with another "
+                             "interface (a void under a slab that shares "
+                             "the base's w is Foundation/Initial gap)."));
     AssertThrow(poisson_ratio > -1.0 && poisson_ratio < 0.5,
                 ExcMessage("Base/Poisson ratio must lie in (-1, 0.5)."));
   }

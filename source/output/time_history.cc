@@ -32,6 +32,16 @@ namespace liftoff
 {
   namespace
   {
+    /// The w the bed's springs act on (the base's under a base of its
+    /// own), whose uplift max_uplift is.
+    ComponentMask
+    bed_w_mask(const Discretization &disc)
+    {
+      const FiniteElement<2> &fe = disc.dof_handler.get_fe();
+      return PlateFields::component_mask(fe, PlateFields::bed_component(fe));
+    }
+
+
     std::vector<Point<2>>
     parse_points(const std::string &text)
     {
@@ -730,9 +740,7 @@ namespace liftoff
         // the sign the reflection gives the field.
         probe.sign = mirror_sign(probe.quantity, probe.point, image);
       }
-    w_dofs =
-      DoFTools::extract_dofs(disc.dof_handler,
-                             PlateFields::w_mask(disc.dof_handler.get_fe()));
+    w_dofs = DoFTools::extract_dofs(disc.dof_handler, bed_w_mask(disc));
     gap_at_w_dofs.clear();
     if (write_resultant)
       disc.reinit_ghosted_vector(ghosted_velocity);
@@ -749,8 +757,7 @@ namespace liftoff
     DoFTools::map_dofs_to_support_points(disc.mapping(),
                                          disc.dof_handler,
                                          points,
-                                         PlateFields::w_mask(
-                                           disc.dof_handler.get_fe()));
+                                         bed_w_mask(disc));
     for (const auto i : w_dofs)
       gap_at_w_dofs.push_back(step.scene.bed.law().gap_at(points.at(i)));
   }

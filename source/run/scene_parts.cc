@@ -130,7 +130,12 @@ namespace liftoff
   {
     // Nothing to compute: most likely a load whose Magnitude was left at its
     // default 0.
-    if (loads.is_empty() && !foundation.law().is_pressing_plate())
+    const bool has_interface = plate.base.n_layers() == 2;
+    // A pre-compressed interface pushes slab and base apart unloaded.
+    const bool is_pressed =
+      foundation.law().is_pressing_plate()
+      || (has_interface && interface_springs.law().is_pressing_plate());
+    if (loads.is_empty() && !is_pressed)
       AssertThrow(dynamic && !initial_conditions.is_at_rest(discretization),
                   ExcMessage(
                     "The scene has no load (every Loads/.../Magnitude is 0)"
@@ -138,7 +143,9 @@ namespace liftoff
                                             "conditions are 0)"
                                           : "")
                     + " on a bed that presses nowhere (Foundation/Initial "
-                      "gap >= 0), so its solution is u = 0. Give a load a "
+                      "gap >= 0"
+                    + (has_interface ? ", Base/Interface gap >= 0" : "")
+                    + "), so its solution is u = 0. Give a load a "
                       "Magnitude"
                     + (dynamic ? ", or the plate an initial displacement or "
                                  "velocity."

@@ -54,6 +54,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "common"))
 from checks import check, finish  # noqa: E402
+from layers import check_equilibrium, compare  # noqa: E402
 from scenes import (merged, read_history, run_scene,  # noqa: E402
                     run_scene_or_fail, scene_text)
 
@@ -92,12 +93,6 @@ def run(work, name, *parts):
     history = read_history(run_scene_or_fail(LIFTOFF, work, name,
                                              scene_text(*parts)))
     return {k: v[-1] for k, v in history.items()}
-
-
-def compare(what, value, reference, tolerance):
-    error = abs(value / reference - 1)
-    check(error < tolerance, f"{what}: {value:.8e} against {reference:.8e}: "
-          f"{error:.1e} < {tolerance:.0e}")
 
 
 PRESSED = {"Pressure 1": {"Magnitude": 100, "Region": "whole plate"},
@@ -425,12 +420,7 @@ def equilibrium(work):
               base("tensionless", h_b, 0.5, rho_b, k_i=1e6))
     slab_weight = weight * 1.0
     base_weight = weight * rho_b * h_b / DELTA
-    compare("equilibrium: the bed's resultant against the load and both "
-            "weights", row["resultant"], load + slab_weight + base_weight,
-            1e-9)
-    compare("equilibrium: the interface's resultant against the load and "
-            "the slab's weight", row["interface_resultant"],
-            load + slab_weight, 1e-9)
+    check_equilibrium(row, load, slab_weight, base_weight)
 
 
 def pulse(symmetry, end_time=0.08):

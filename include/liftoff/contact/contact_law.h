@@ -54,11 +54,15 @@ namespace liftoff
 
     static void
     declare_parameters(ParameterHandler &prm);
-    void
     /// `mass_per_area`: what the bed carries, in units of the plate's rho
     /// H (1 without a base): it sets the critical damping of Damping
-    /// ratio and the rigid body's frequency.
-    parse_parameters(ParameterHandler &prm, const double mass_per_area = 1.0);
+    /// ratio and the rigid body's frequency. `gap_entry`: the entry that
+    /// gives the text of Foundation/Initial gap, as its errors name it (the
+    /// interface's springs take theirs from Base/Interface gap).
+    void
+    parse_parameters(ParameterHandler  &prm,
+                     const double       mass_per_area = 1.0,
+                     const std::string &gap_entry = "Foundation/Initial gap");
     /// A bed in the scene as written requires Units/Subgrade modulus.
     static void
     describe_for_units(ParameterHandler            &scene,
@@ -146,8 +150,10 @@ namespace liftoff
     double contact_tolerance = 1e-9;
     /// g(x, y) in full plate coordinates.
     std::string gap_expression = "0";
-    double      c              = 0;
-    double      g_p            = 0;
+    /// The entry the gap's errors name.
+    std::string gap_entry = "Foundation/Initial gap";
+    double      c         = 0;
+    double      g_p       = 0;
     /// The mass per area the bed carries (parse_parameters()).
     double mass = 1;
 

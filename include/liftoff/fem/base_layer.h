@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <string>
+
 namespace liftoff
 {
   using namespace dealii;
@@ -126,5 +128,8 @@ namespace liftoff
     /// k_i, the interface springs' modulus (per unit area, per unit of
     /// w_slab - w_base), in the plate's units D / L^4 (tensionless).
     double interface_stiffness = 0;
+    /// g_i(x, y), the interface springs' gap (muParser in x, y of the full
+    /// plate, in the unit of w; tensionless).
+    std::string interface_gap = "0";
   };
 } // namespace liftoff

@@ -207,7 +207,7 @@ namespace liftoff
     /// The joints that are not tied, by their index in the layout.
     std::vector<std::pair<unsigned int, std::string>> joints;
     std::function<std::vector<double>(const double)>  moving_load_positions;
-    /// This rank's degrees of freedom of w.
+    /// This rank's degrees of freedom of the w the bed acts on.
     IndexSet w_dofs;
     /// The initial gap at them, in the order of w_dofs (filled at the first
     /// step on a mesh, only on a gap).
