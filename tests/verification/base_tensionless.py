@@ -441,6 +441,36 @@ def pulse(symmetry, end_time=0.08):
         base("tensionless", 0.04, 0.5, k_i=1e4))
 
 
+def every_bed_law(work):
+    """The base on a bed with all its laws at once (tensionless springs on a
+    symmetric initial gap, a Pasternak layer and dashpots), the base warmed
+    by a profile of its own, under a pulse: the quarter model gives the full
+    plate's history and the energy balance holds."""
+    bed = {"Foundation": {"Shear modulus": 2, "Damping": 3,
+                          "Initial gap": "0.002 * (x^2 + y^2)"},
+           "Loads": {"Temperature load 1": {
+               "Magnitude": -1, "Expansion coefficient": 1e-3,
+               "Base profile": "1, 0.3, 0", "Base expansion coefficient": 2e-3,
+               "Time history": "sin(20 * tau)"}},
+           "Output": {"VTU interval": 0}}
+    histories = {}
+    for symmetry in ("full", "quarter"):
+        folder = run_scene_or_fail(LIFTOFF, work, f"bed_laws_{symmetry}",
+                                   pulse(symmetry, 0.04) + scene_text(bed))
+        histories[symmetry] = read_history(folder)
+        with open(os.path.join(folder, "summary.json")) as f:
+            balance = json.load(f)[
+                "energy balance error, largest share of the energy scale"]
+        check(balance < 1e-2, f"every bed law, {symmetry}: energy balance "
+              f"{balance:.1e} of the energy scale < 1e-2")
+    full, quarter = histories["full"], histories["quarter"]
+    worst = max(np.max(np.abs(full[c] - quarter[c]))
+                / max(np.max(np.abs(full[c])), 1e-300)
+                for c in full if c not in ("cells", "dofs", "balance_error"))
+    check(worst < 1e-9, f"every bed law: the quarter model's history is the "
+          f"full plate's within {worst:.1e} < 1e-9")
+
+
 def dynamic(work):
     full = run_scene_or_fail(LIFTOFF, work, "pulse_full", pulse("full"))
     h = read_history(full)
@@ -499,4 +529,5 @@ with tempfile.TemporaryDirectory() as work:
     joint_on_plane(work)
     equilibrium(work)
     dynamic(work)
+    every_bed_law(work)
 finish()
