@@ -10,7 +10,7 @@ their last bits, issue 67).
 Prints "largest D in COLUMN" and exits 0 if every column differs by at
 most TOLERANCE times its largest magnitude, 1 otherwise (also if the
 headers or the numbers of rows differ, or a value is not a number in one
-file only).
+file only; an empty cell counts as not a number).
 """
 
 import csv
@@ -18,10 +18,17 @@ import math
 import sys
 
 
+def number(text):
+    """A cell's value; an empty cell (a quantity not defined at that step,
+    as a joint's LTE with no load near it) as NaN, so that two files empty
+    at the same cells agree there."""
+    return float(text) if text != "" else math.nan
+
+
 def read(path):
     with open(path) as f:
         rows = list(csv.reader(f))
-    return rows[0], [[float(v) for v in row] for row in rows[1:]]
+    return rows[0], [[number(v) for v in row] for row in rows[1:]]
 
 
 def main():
