@@ -349,8 +349,7 @@ namespace liftoff
     const std::vector<std::vector<Tensor<1, 2>>> &gradient,
     std::vector<Vector<double>>                  &computed) const
   {
-    // Full and reduced integration use grad w - psi itself: only the
-    // assumed strain needs the element's tying points.
+    // Only the assumed strain needs the element's tying points.
     std::vector<Tensor<1, 2>> gamma(unit_points.size());
     if (treatment == TransverseShearStrain::Treatment::mitc)
       {
@@ -371,8 +370,9 @@ namespace liftoff
     const SectionCoefficients section   = plate.section(cell->material_id());
     const double              to_stress = section.bottom.per_moment;
     const double              shear     = section.shear;
-    // D_s / D; the minus sign: z along w.
-    const double bending = -section.bending;
+    const double              bending = -section.bending; // D_s / D, z along w
+    // The temperature at each point, evaluated once for both layers.
+    std::vector<FreeBending> thermal(free_bending ? unit_points.size() : 0);
     for (unsigned int q = 0; q < unit_points.size(); ++q)
       {
         const PlaneMoments m(bending,
@@ -392,20 +392,20 @@ namespace liftoff
         out[9]  = to_stress * m.yy;
         out[10] = to_stress * m.xy;
         if (free_bending)
-          add_free_bending(in_section(free_bending(points[q]), section),
-                           nu,
-                           section,
-                           out);
+          {
+            thermal[q] = free_bending(points[q]);
+            add_free_bending(in_section(thermal[q], section), nu, section, out);
+          }
         else
           set_face_stresses(section, nullptr, FreeMoments(), out);
       }
-    add_own_base_faces(points, gradient, computed);
+    add_own_base_faces(thermal, gradient, computed);
   }
 
 
   void
   StressResultants::add_own_base_faces(
-    const std::vector<Point<2>>                  &points,
+    const std::vector<FreeBending>               &thermal,
     const std::vector<std::vector<Tensor<1, 2>>> &gradient,
     std::vector<Vector<double>>                  &computed) const
   {
@@ -419,7 +419,7 @@ namespace liftoff
         own_base_faces(base,
                        gradient[q][PlateFields::rotation(0, 1)],
                        gradient[q][PlateFields::rotation(1, 1)],
-                       points[q],
+                       thermal.empty() ? nullptr : &thermal[q],
                        faces);
         Vector<double> &out = computed[q];
         out[11] = std::max({out[11], faces.base_top, faces.base_bottom});
@@ -433,8 +433,9 @@ namespace liftoff
 
 
   void
-  StressResultants::add_own_base_faces(const PlateFieldAtPoints &fields,
-                                       PrincipalValues          &out) const
+  StressResultants::add_own_base_faces(const PlateFieldAtPoints       &fields,
+                                       const std::vector<FreeBending> &thermal,
+                                       PrincipalValues &out) const
   {
     // A base of its own: its faces by its own moments.
     if (!out.with_faces || fields.grad_psi_base.empty())
@@ -444,7 +445,7 @@ namespace liftoff
       own_base_faces(base,
                      fields.grad_psi_base[q][0],
                      fields.grad_psi_base[q][1],
-                     fields.points()[q],
+                     thermal.empty() ? nullptr : &thermal[q],
                      out.faces[q]);
   }
 
@@ -453,7 +454,7 @@ namespace liftoff
   StressResultants::own_base_faces(const SectionCoefficients &base,
                                    const Tensor<1, 2>        &grad_psi_x,
                                    const Tensor<1, 2>        &grad_psi_y,
-                                   const Point<2>            &point,
+                                   const FreeBending         *temperature,
                                    FaceStresses              &faces) const
   {
     PlaneMoments m(-base.bending,
@@ -463,9 +464,9 @@ namespace liftoff
     // Its own moments measured from its own free curvature, which stresses
     // it as a section alone: its faces by those moments.
     FreeBending thermal;
-    if (free_bending)
+    if (temperature != nullptr)
       {
-        thermal           = in_section(free_bending(point), base);
+        thermal           = in_section(*temperature, base);
         const double free = free_moments(thermal, plate.poisson_ratio).total();
         m.first += free;
         m.second += free;
@@ -499,6 +500,10 @@ namespace liftoff
     const double              nu      = plate.poisson_ratio;
     const SectionCoefficients section = plate.section(cell->material_id());
     const double              bending = -section.bending;
+    // The temperature at each point, evaluated once for both layers (kept
+    // for a base of its own only).
+    const bool own_base = free_bending && plate.base.n_layers() == 2;
+    std::vector<FreeBending> temperature(own_base ? n : 0);
     for (unsigned int q = 0; q < n; ++q)
       {
         const PlaneMoments m(bending,
@@ -515,7 +520,10 @@ namespace liftoff
         FreeMoments free;
         if (free_bending)
           {
-            thermal = in_section(free_bending(fields.points()[q]), section);
+            const FreeBending here = free_bending(fields.points()[q]);
+            if (own_base)
+              temperature[q] = here;
+            thermal = in_section(here, section);
             free    = free_moments(thermal, nu);
             out.m_1[q] += free.total();
             out.m_2[q] += free.total();
@@ -527,7 +535,7 @@ namespace liftoff
                                        free_bending ? &thermal : nullptr,
                                        free);
       }
-    add_own_base_faces(fields, out);
+    add_own_base_faces(fields, temperature, out);
   }
 
 

@@ -159,23 +159,26 @@ namespace liftoff
     unsigned int
     n_fields(const bool with_faces) const;
     /// The faces' stresses of a base of its own (BaseLayer, tensionless),
-    /// from its own moments, into `computed` at every point; nothing
+    /// from its own moments and the temperature at each point (`thermal`,
+    /// empty: none), into `computed` at every point; nothing
     /// without one.
     void
-    add_own_base_faces(const std::vector<Point<2>>                  &points,
+    add_own_base_faces(const std::vector<FreeBending>               &thermal,
                        const std::vector<std::vector<Tensor<1, 2>>> &gradient,
                        std::vector<Vector<double>> &computed) const;
     /// The same at the points of `fields`, into `out.faces`.
     void
-    add_own_base_faces(const PlateFieldAtPoints &fields,
-                       PrincipalValues          &out) const;
+    add_own_base_faces(const PlateFieldAtPoints       &fields,
+                       const std::vector<FreeBending> &thermal,
+                       PrincipalValues                &out) const;
     /// The base's faces of `faces` from the gradients of its own psi_x and
-    /// psi_y, with its own section `base`, at `point` (its temperature).
+    /// psi_y, with its own section `base`, and the temperature there (the
+    /// plate's FreeBending; none: nullptr).
     void
     own_base_faces(const SectionCoefficients &base,
                    const Tensor<1, 2>        &grad_psi_x,
                    const Tensor<1, 2>        &grad_psi_y,
-                   const Point<2>            &point,
+                   const FreeBending         *temperature,
                    FaceStresses              &faces) const;
 
     const MindlinPlate                    &plate;
